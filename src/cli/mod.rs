@@ -1,0 +1,1 @@
+//! Headless subcommands over the model layer.

@@ -1,0 +1,91 @@
+//! Typed errors of the model layer. Every message names the field or the domain it is about.
+
+use thiserror::Error;
+
+/// Everything the quasistatic model layer can refuse.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ModelError {
+    /// A parameter is non-finite or outside its physical range.
+    #[error("{field} must be {requirement}, got {value}")]
+    InvalidParameter {
+        field: String,
+        requirement: &'static str,
+        value: f64,
+    },
+    /// A pair of shapes the model has no contact law for.
+    #[error(
+        "{0} contact is not supported (supported: sphere–sphere, sphere–plane, cylinder–cylinder, cylinder–plane)"
+    )]
+    UnsupportedPair(String),
+    /// A formula was asked for a value outside the domain where it holds.
+    #[error("{formula}: {detail}")]
+    OutOfDomain {
+        formula: &'static str,
+        detail: String,
+    },
+    /// The power-law fit of a cylinder force law did not converge.
+    #[error("power-law fit F = a·xⁿ + c failed: {0}")]
+    FitFailed(String),
+}
+
+impl ModelError {
+    /// Prefixes the field name with its location, e.g. `youngs_modulus` → `body1.material.youngs_modulus`.
+    pub fn within(self, prefix: &str) -> Self {
+        match self {
+            ModelError::InvalidParameter {
+                field,
+                requirement,
+                value,
+            } => ModelError::InvalidParameter {
+                field: format!("{prefix}.{field}"),
+                requirement,
+                value,
+            },
+            other => other,
+        }
+    }
+}
+
+/// Checks that `value` is finite and satisfies `ok`; `requirement` says what `ok` demands.
+pub fn require(
+    field: &str,
+    value: f64,
+    requirement: &'static str,
+    ok: impl Fn(f64) -> bool,
+) -> Result<f64, ModelError> {
+    if value.is_finite() && ok(value) {
+        Ok(value)
+    } else {
+        Err(ModelError::InvalidParameter {
+            field: field.to_string(),
+            requirement,
+            value,
+        })
+    }
+}
+
+/// Checks that `value` is finite and strictly positive.
+pub fn require_positive(field: &str, value: f64) -> Result<f64, ModelError> {
+    require(field, value, "a finite number > 0", |v| v > 0.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn invalid_parameter_message_names_the_field() {
+        let err = require_positive("radius", 0.0).unwrap_err().within("body1");
+        assert_eq!(
+            err.to_string(),
+            "body1.radius must be a finite number > 0, got 0"
+        );
+    }
+
+    #[test]
+    fn nan_and_infinity_are_rejected() {
+        assert!(require_positive("mass", f64::NAN).is_err());
+        assert!(require_positive("mass", f64::INFINITY).is_err());
+        assert_eq!(require_positive("mass", 2.0), Ok(2.0));
+    }
+}

@@ -1,0 +1,94 @@
+//! The five contact-force laws of the paper (eqs 1, 15–20) behind one interface.
+
+use std::fmt;
+use std::str::FromStr;
+
+use serde::Serialize;
+
+use super::power_law::PowerLaw;
+
+/// Inputs every force law draws its parameters from (the scene plus the quasistatic law).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ImpactParams {
+    /// Reduced mass m, kg (eq 4).
+    pub mass: f64,
+    /// Elastic law F = k·xⁿ (eq 1).
+    pub law: PowerLaw,
+    /// Pre-impact velocity v₀ > 0, m/s.
+    pub v0: f64,
+    /// Coefficient of restitution e in (0, 1].
+    pub restitution: f64,
+    /// Plastic indentation x_pl > 0, m (eq 18).
+    pub plastic_indentation: f64,
+}
+
+/// Which force law.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ForceModel {
+    /// Elastic Hertz F = k·xⁿ (eq 1).
+    Quasistatic,
+    /// F = k·xⁿ + P·x·sign(ẋ) (eqs 15–17).
+    DryFriction,
+    /// The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18).
+    Proposed,
+    /// F = k·xⁿ·(1 + (3/2)·a·ẋ), a = (1 − e)/v₀ (eq 19).
+    HuntCrossley,
+    /// F = k·xⁿ·(1 + 3(1 − e²)/4·ẋ/v₀) (eq 20).
+    LankaraniNikravesh,
+}
+
+impl ForceModel {
+    pub const ALL: [ForceModel; 5] = [
+        ForceModel::Quasistatic,
+        ForceModel::DryFriction,
+        ForceModel::Proposed,
+        ForceModel::HuntCrossley,
+        ForceModel::LankaraniNikravesh,
+    ];
+
+    /// The kebab-case name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            ForceModel::Quasistatic => "quasistatic",
+            ForceModel::DryFriction => "dry-friction",
+            ForceModel::Proposed => "proposed",
+            ForceModel::HuntCrossley => "hunt-crossley",
+            ForceModel::LankaraniNikravesh => "lankarani-nikravesh",
+        }
+    }
+
+    /// A human label with the paper's equation number.
+    pub fn label(self) -> &'static str {
+        match self {
+            ForceModel::Quasistatic => "Hertz, elastic (eq 1)",
+            ForceModel::DryFriction => "dry friction (eq 15)",
+            ForceModel::Proposed => "proposed viscous (eq 18)",
+            ForceModel::HuntCrossley => "Hunt–Crossley (eq 19)",
+            ForceModel::LankaraniNikravesh => "Lankarani–Nikravesh (eq 20)",
+        }
+    }
+}
+
+impl fmt::Display for ForceModel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for ForceModel {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        ForceModel::ALL
+            .into_iter()
+            .find(|m| m.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<_> = ForceModel::ALL.iter().map(|m| m.name()).collect();
+                format!(
+                    "unknown model '{s}' (expected one of: {})",
+                    names.join(", ")
+                )
+            })
+    }
+}

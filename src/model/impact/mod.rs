@@ -1,0 +1,179 @@
+//! The impact solver: integrates m·ẍ = −F(x, ẋ) from x = 0, ẋ = v₀ until contact ends.
+
+use std::fmt;
+use std::str::FromStr;
+
+use serde::Serialize;
+use thiserror::Error;
+
+use super::error::ModelError;
+use super::force::{ForceModel, ImpactParams};
+use super::ode::{self, Method, OdeError};
+
+/// Which solution path the caller asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MethodChoice {
+    /// The cheapest path that meets the tolerance: exact solution, then adaptive explicit, then implicit.
+    Auto,
+    /// A specific integrator.
+    Integrator(Method),
+}
+
+impl fmt::Display for MethodChoice {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MethodChoice::Auto => f.write_str("auto"),
+            MethodChoice::Integrator(m) => m.fmt(f),
+        }
+    }
+}
+
+impl FromStr for MethodChoice {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        if s == "auto" {
+            Ok(MethodChoice::Auto)
+        } else {
+            s.parse::<Method>()
+                .map(MethodChoice::Integrator)
+                .map_err(|e| e.replace("expected one of: ", "expected one of: auto, "))
+        }
+    }
+}
+
+/// Requested accuracy and limits of one impact solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveOptions {
+    pub method: MethodChoice,
+    /// Relative tolerance of adaptive methods (also the accuracy `auto` must meet).
+    pub rtol: f64,
+    /// Absolute tolerance of adaptive methods, in the solver's scaled variables (x/x_ref, v/v₀).
+    pub atol: f64,
+    /// Step size of fixed-step methods, s; `None` picks t_c/1000 of the elastic estimate.
+    pub dt: Option<f64>,
+    /// Accepted plus rejected steps per solve before it fails.
+    pub max_steps: usize,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        SolveOptions {
+            method: MethodChoice::Auto,
+            rtol: 1e-8,
+            atol: 1e-10,
+            dt: None,
+            max_steps: 200_000,
+        }
+    }
+}
+
+/// The solution path actually used.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(into = "String")]
+pub enum MethodUsed {
+    /// A closed form or quadrature (elastic Hertz, energy integrals); the curves come from a tight-tolerance integrator.
+    Exact,
+    Integrator(Method),
+}
+
+impl fmt::Display for MethodUsed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MethodUsed::Exact => f.write_str("exact"),
+            MethodUsed::Integrator(m) => m.fmt(f),
+        }
+    }
+}
+
+impl From<MethodUsed> for String {
+    fn from(m: MethodUsed) -> String {
+        m.to_string()
+    }
+}
+
+/// Where the compressive-only rule ended contact early: the law turned tensile (F < 0) at x > 0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TensileCutoff {
+    pub t: f64,
+    pub x: f64,
+    pub v: f64,
+}
+
+/// The numbers of one impact, SI units.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ImpactSummary {
+    pub model: ForceModel,
+    pub method: MethodUsed,
+    pub x_max: f64,
+    /// Time of maximum compression (ẋ = 0), s.
+    pub t_x_max: f64,
+    pub f_max: f64,
+    /// Time of the force peak, s.
+    pub t_f_max: f64,
+    pub t_contact: f64,
+    /// Exit speed |ẋ| when contact ends, m/s.
+    pub v_out: f64,
+    /// Realized restitution v_out/v₀.
+    pub e_out: f64,
+    /// Approach left when contact ends (x_pl of the proposed model), m.
+    pub x_residual: f64,
+    /// ½m(v₀² − v_out²), J.
+    pub energy_dissipated: f64,
+    /// |½m(v₀² − v_out²) − ∮F dx| / (½m v₀²).
+    pub energy_residual: f64,
+    pub steps: usize,
+    pub rejected_steps: usize,
+    pub force_evals: usize,
+    /// Set when the compressive-only rule fired.
+    pub tensile_cutoff: Option<TensileCutoff>,
+}
+
+/// One point of a trajectory.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    pub t: f64,
+    pub x: f64,
+    pub v: f64,
+    pub f: f64,
+}
+
+/// Ways an impact solve fails. Each says what happened and when.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ImpactError {
+    #[error(transparent)]
+    InvalidInput(#[from] ModelError),
+    #[error("{method}: {source}")]
+    Integration {
+        method: Method,
+        #[source]
+        source: OdeError,
+    },
+    #[error(
+        "{method}: energy grew by {growth:.1} % at t = {t:.6e} s: the method is unstable at this step"
+    )]
+    EnergyGrowth { method: Method, t: f64, growth: f64 },
+    #[error("contact did not end within {t_limit:.3e} s")]
+    NoSeparation { t_limit: f64 },
+}
+
+mod trajectory;
+
+pub use trajectory::Trajectory;
+
+/// A solved impact: the numbers and the continuous curves.
+#[derive(Debug, Clone)]
+pub struct ImpactSolution {
+    pub summary: ImpactSummary,
+    pub trajectory: Trajectory,
+}
+
+/// Solves one impact of `model` with `params`.
+pub fn solve_impact(
+    model: ForceModel,
+    params: &ImpactParams,
+    opts: &SolveOptions,
+) -> Result<ImpactSolution, ImpactError> {
+    let _ = (model, params, opts, ode::Options::default());
+    todo!("impact helper")
+}

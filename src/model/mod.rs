@@ -1,0 +1,24 @@
+//! The model layer: contact mechanics and impact dynamics in SI units. Knows nothing of the UI.
+
+pub mod body;
+pub mod cylinder;
+pub mod error;
+pub mod force;
+pub mod impact;
+pub mod material;
+pub mod ode;
+pub mod pair;
+pub mod power_law;
+pub mod pressure;
+pub mod quasistatic;
+pub mod scene;
+pub mod sphere;
+
+pub use body::{Body, Shape};
+pub use error::ModelError;
+pub use force::{ForceModel, ImpactParams};
+pub use material::Material;
+pub use pair::{ContactPair, PairKind};
+pub use power_law::PowerLaw;
+pub use quasistatic::Quasistatic;
+pub use scene::{ImpactConditions, Scene};
