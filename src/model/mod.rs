@@ -3,15 +3,19 @@
 pub mod body;
 pub mod cylinder;
 pub mod error;
+pub mod exact;
 pub mod force;
 pub mod impact;
 pub mod material;
 pub mod ode;
+pub mod overrides;
 pub mod pair;
 pub mod power_law;
+pub mod presets;
 pub mod pressure;
 pub mod quasistatic;
 pub mod scene;
+pub mod scene_file;
 pub mod sphere;
 
 pub use body::{Body, Shape};

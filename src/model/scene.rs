@@ -13,18 +13,23 @@ pub struct ImpactConditions {
     pub v0: f64,
     /// Coefficient of restitution e in (0, 1], used by the dissipative models.
     pub restitution: f64,
-    /// Plastic indentation x_pl, m, used by the proposed viscous model (eq 18).
+    /// Plastic indentation x_pl ≥ 0, m, used by the proposed viscous model (eq 18).
     pub plastic_indentation: f64,
 }
 
 impl ImpactConditions {
-    /// Checks v₀ > 0, 0 < e ≤ 1, x_pl > 0; field names are `impact.…`.
+    /// Checks v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0 (0: no permanent deformation); field names are `impact.…`.
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("impact.v0", self.v0)?;
         require("impact.restitution", self.restitution, "in (0, 1]", |e| {
             e > 0.0 && e <= 1.0
         })?;
-        require_positive("impact.plastic_indentation", self.plastic_indentation)?;
+        require(
+            "impact.plastic_indentation",
+            self.plastic_indentation,
+            "a finite number ≥ 0",
+            |x| x >= 0.0,
+        )?;
         Ok(())
     }
 }

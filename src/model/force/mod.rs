@@ -18,7 +18,7 @@ pub struct ImpactParams {
     pub v0: f64,
     /// Coefficient of restitution e in (0, 1].
     pub restitution: f64,
-    /// Plastic indentation x_pl > 0, m (eq 18).
+    /// Plastic indentation x_pl ≥ 0, m (eq 18); 0 makes the proposed model elastic.
     pub plastic_indentation: f64,
 }
 

@@ -1,0 +1,1 @@
+//! Exact solutions of the impact ODE where mathematics allows (physics notes §3).

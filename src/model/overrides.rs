@@ -1,0 +1,1 @@
+//! `--set KEY=VALUE` overrides of scene keys by dotted path.

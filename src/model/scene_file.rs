@@ -1,0 +1,1 @@
+//! Scene files (TOML): parsing with errors that name file, line and key; writing back.
