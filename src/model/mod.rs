@@ -16,7 +16,9 @@ pub mod pressure;
 pub mod quasistatic;
 pub mod scene;
 pub mod scene_file;
+pub mod scene_key;
 pub mod sphere;
+pub mod study;
 
 pub use body::{Body, Shape};
 pub use error::ModelError;

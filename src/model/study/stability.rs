@@ -1,0 +1,240 @@
+//! Where fixed-step methods fail: theoretical critical steps and verdicts of a step size on an impact.
+
+use serde::Serialize;
+
+use crate::model::force::{ForceModel, ImpactParams};
+use crate::model::impact::{
+    ImpactError, ImpactSolution, ImpactSummary, MethodChoice, SolveOptions, solve_impact,
+};
+use crate::model::ode::{Method, OdeError};
+
+/// The fixed-step methods, in order of increasing order.
+pub const FIXED_STEP_METHODS: [Method; 4] = [
+    Method::Euler,
+    Method::SymplecticEuler,
+    Method::Verlet,
+    Method::Rk4,
+];
+
+/// Energy error (fraction of the impact energy) below which a solve counts as stable.
+pub const STABLE_DRIFT: f64 = 0.01;
+
+/// Energy error beyond which a solve counts as diverged when the largest stable step is measured.
+pub const DIVERGED_DRIFT: f64 = 0.5;
+
+/// Largest stable h·ω on the undamped oscillator ẍ = −ω²x (physics notes §4; Hairer–Wanner II §IV.2):
+/// none for explicit Euler (it gains energy at every step), 2 for symplectic Euler and Verlet,
+/// 2√2 for RK4 (its stability region meets the imaginary axis at ±2√2 i).
+pub fn stability_bound(method: Method) -> Option<f64> {
+    match method {
+        Method::SymplecticEuler | Method::Verlet => Some(2.0),
+        Method::Rk4 => Some(2.0 * std::f64::consts::SQRT_2),
+        Method::Euler | Method::Dopri5 | Method::Dop853 | Method::Radau5 => None,
+    }
+}
+
+/// ω at the elastic maximum compression, √(n·k·x_maxⁿ⁻¹/m), rad/s: the stiffest point of the impact (physics notes §4).
+pub fn peak_angular_frequency(params: &ImpactParams) -> f64 {
+    let x_max = params.law.max_approach(params.mass, params.v0);
+    params.law.angular_frequency(params.mass, x_max)
+}
+
+/// Theoretical critical step h = bound/ω_max, s; `None` where the method has no stable step (Euler) or is adaptive.
+pub fn critical_step(method: Method, params: &ImpactParams) -> Option<f64> {
+    stability_bound(method).map(|bound| bound / peak_angular_frequency(params))
+}
+
+/// What a step size does to an impact.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "verdict", rename_all = "kebab-case")]
+pub enum Verdict {
+    /// Energy error below [`STABLE_DRIFT`] of the impact energy.
+    Stable { drift: f64 },
+    /// The solve finished but its exit energy is off by `drift` (fraction of ½mv₀²; positive = gained).
+    EnergyDrift { drift: f64 },
+    /// The method blew up (energy growth, non-finite state) at time t.
+    Diverged { t: f64, reason: String },
+    /// The solve failed otherwise (step budget, no separation).
+    Failed { reason: String },
+}
+
+impl Verdict {
+    /// Judges a fixed-step solve against the reference exit energy.
+    pub fn judge(result: &Result<ImpactSolution, ImpactError>, reference: &ImpactSummary) -> Self {
+        match result {
+            Ok(solution) => {
+                let drift = solution.summary.e_out.powi(2) - reference.e_out.powi(2);
+                if drift.abs() < STABLE_DRIFT {
+                    Verdict::Stable { drift }
+                } else {
+                    Verdict::EnergyDrift { drift }
+                }
+            }
+            Err(ImpactError::EnergyGrowth { t, .. }) => Verdict::Diverged {
+                t: *t,
+                reason: "energy growth".into(),
+            },
+            Err(ImpactError::Integration {
+                source: OdeError::NonFinite { t },
+                ..
+            }) => Verdict::Diverged {
+                t: *t,
+                reason: "non-finite state".into(),
+            },
+            Err(other) => Verdict::Failed {
+                reason: other.to_string(),
+            },
+        }
+    }
+
+    /// Stable or drifting by less than [`DIVERGED_DRIFT`]: not blown up.
+    pub fn is_bounded(&self) -> bool {
+        match self {
+            Verdict::Stable { .. } => true,
+            Verdict::EnergyDrift { drift } => drift.abs() < DIVERGED_DRIFT,
+            Verdict::Diverged { .. } | Verdict::Failed { .. } => false,
+        }
+    }
+}
+
+/// One fixed-step method run at a chosen step.
+#[derive(Debug, Clone)]
+pub struct StabilityRun {
+    pub method: Method,
+    pub dt: f64,
+    pub verdict: Verdict,
+    /// The solve, for drawing over the reference; `None` when it failed.
+    pub solution: Option<ImpactSolution>,
+}
+
+fn solve_fixed(
+    model: ForceModel,
+    params: &ImpactParams,
+    method: Method,
+    dt: f64,
+) -> Result<ImpactSolution, ImpactError> {
+    let opts = SolveOptions {
+        method: MethodChoice::Integrator(method),
+        dt: Some(dt),
+        ..SolveOptions::default()
+    };
+    solve_impact(model, params, &opts)
+}
+
+/// Every fixed-step method at step `dt` on `model`, judged against `reference`.
+pub fn runs_at_step(
+    model: ForceModel,
+    params: &ImpactParams,
+    reference: &ImpactSummary,
+    dt: f64,
+) -> Vec<StabilityRun> {
+    FIXED_STEP_METHODS
+        .iter()
+        .map(|&method| {
+            let result = solve_fixed(model, params, method, dt);
+            StabilityRun {
+                method,
+                dt,
+                verdict: Verdict::judge(&result, reference),
+                solution: result.ok(),
+            }
+        })
+        .collect()
+}
+
+/// Measured largest step at which `method` stays bounded on this impact, s.
+///
+/// Scans dt upward geometrically (2^{1/8} per point) from 1/32 of ω_max⁻¹ until the first unbounded
+/// verdict, then bisects between the last bounded and the first unbounded step. A single impact lasts
+/// only a few steps near the bound, so the measured step may differ from the linear theory of
+/// [`critical_step`] — that difference is what the stability view shows.
+pub fn largest_bounded_step(
+    model: ForceModel,
+    params: &ImpactParams,
+    reference: &ImpactSummary,
+    method: Method,
+) -> Option<f64> {
+    let omega = peak_angular_frequency(params);
+    let bounded =
+        |dt: f64| Verdict::judge(&solve_fixed(model, params, method, dt), reference).is_bounded();
+    let mut lo = 1.0 / (32.0 * omega);
+    if !bounded(lo) {
+        return None;
+    }
+    let growth = 2f64.powf(0.125);
+    let mut hi = lo * growth;
+    while bounded(hi) {
+        lo = hi;
+        hi *= growth;
+        if hi * omega > 64.0 {
+            return Some(lo);
+        }
+    }
+    for _ in 0..20 {
+        let mid = (lo * hi).sqrt();
+        if bounded(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(lo)
+}
+
+/// Theory next to measurement for one fixed-step method.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StepBound {
+    pub method: Method,
+    /// Theoretical critical step bound/ω_max, s (`None`: no stable step in theory).
+    pub theoretical_dt: Option<f64>,
+    /// Measured largest bounded step on this impact, s.
+    pub measured_dt: Option<f64>,
+    /// ω_max, rad/s.
+    pub omega_max: f64,
+}
+
+/// The table of `hertz-tui bench --stability`.
+pub fn step_bounds(
+    model: ForceModel,
+    params: &ImpactParams,
+    reference: &ImpactSummary,
+) -> Vec<StepBound> {
+    let omega_max = peak_angular_frequency(params);
+    FIXED_STEP_METHODS
+        .iter()
+        .map(|&method| StepBound {
+            method,
+            theoretical_dt: critical_step(method, params),
+            measured_dt: largest_bounded_step(model, params, reference, method),
+            omega_max,
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::power_law::PowerLaw;
+
+    #[test]
+    fn bounds_follow_the_linear_theory() {
+        assert_eq!(stability_bound(Method::Euler), None);
+        assert_eq!(stability_bound(Method::Verlet), Some(2.0));
+        let rk4 = stability_bound(Method::Rk4).unwrap();
+        assert!((rk4 - 8f64.sqrt()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn critical_step_uses_the_stiffness_at_x_max() {
+        // Linear spring: ω is √(k/m) at every x, so the critical step of Verlet is 2·√(m/k).
+        let params = ImpactParams {
+            mass: 2.0,
+            law: PowerLaw { k: 8e6, n: 1.0 },
+            v0: 0.5,
+            restitution: 1.0,
+            plastic_indentation: 0.0,
+        };
+        let dt = critical_step(Method::Verlet, &params).unwrap();
+        assert!((dt - 2.0 * (2.0f64 / 8e6).sqrt()).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,213 @@
+//! Parameter sweeps: one scene key varied over a range, every point solved (the paper's Fig. 2, and more).
+
+use rayon::prelude::*;
+use serde::Serialize;
+use thiserror::Error;
+
+use crate::model::force::ForceModel;
+use crate::model::impact::{SolveOptions, solve_impact};
+use crate::model::quasistatic::ContactGeometry;
+use crate::model::scene::Scene;
+use crate::model::scene_key::{SceneKey, SceneKeyError};
+
+/// What to sweep and how.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepSpec {
+    pub key: SceneKey,
+    pub from: f64,
+    pub to: f64,
+    pub points: usize,
+    /// Geometric spacing instead of linear.
+    pub log: bool,
+    pub models: Vec<ForceModel>,
+    pub options: SolveOptions,
+}
+
+/// A sweep that cannot start.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SweepError {
+    #[error("--points must be at least 2, got {0}")]
+    TooFewPoints(usize),
+    #[error("sweep bounds must be finite, got {from} … {to}")]
+    NonFiniteBounds { from: f64, to: f64 },
+    #[error("a logarithmic sweep needs bounds of one sign, non-zero; got {from} … {to}")]
+    LogBounds { from: f64, to: f64 },
+    #[error(transparent)]
+    Key(#[from] SceneKeyError),
+}
+
+/// The quasistatic numbers of one sweep point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct QuasistaticPoint {
+    pub p_max: f64,
+    /// Radius of the contact circle (spheres), m.
+    pub contact_radius: Option<f64>,
+    /// Half-width of the contact strip (cylinders), m.
+    pub half_width: Option<f64>,
+    pub v_yield: f64,
+    pub v_plastic: f64,
+}
+
+/// One model's numbers at one sweep point; `error` set when the solve failed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ImpactPoint {
+    pub model: ForceModel,
+    pub x_max: Option<f64>,
+    pub f_max: Option<f64>,
+    pub t_contact: Option<f64>,
+    pub v_out: Option<f64>,
+    pub e_out: Option<f64>,
+    pub error: Option<String>,
+}
+
+/// One row of a sweep.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SweepRow {
+    /// The swept parameter's value, SI.
+    pub value: f64,
+    /// `None` with `error` set when the scene is invalid at this value.
+    pub quasistatic: Option<QuasistaticPoint>,
+    pub impacts: Vec<ImpactPoint>,
+    pub error: Option<String>,
+}
+
+/// The parameter values of the sweep, in order.
+pub fn sweep_values(spec: &SweepSpec) -> Result<Vec<f64>, SweepError> {
+    let (from, to, n) = (spec.from, spec.to, spec.points);
+    if n < 2 {
+        return Err(SweepError::TooFewPoints(n));
+    }
+    if !from.is_finite() || !to.is_finite() {
+        return Err(SweepError::NonFiniteBounds { from, to });
+    }
+    if spec.log && (from * to <= 0.0) {
+        return Err(SweepError::LogBounds { from, to });
+    }
+    let last = (n - 1) as f64;
+    Ok((0..n)
+        .map(|i| {
+            let s = i as f64 / last;
+            if spec.log {
+                from * (to / from).powf(s)
+            } else {
+                from + (to - from) * s
+            }
+        })
+        .collect())
+}
+
+/// Solves every point of the sweep in parallel; rows come out in parameter order.
+pub fn sweep(base: &Scene, spec: &SweepSpec) -> Result<Vec<SweepRow>, SweepError> {
+    let values = sweep_values(spec)?;
+    // Fail early on a key that does not apply to this scene's shapes.
+    spec.key.set(&mut base.clone(), values[0])?;
+    Ok(values
+        .into_par_iter()
+        .map(|value| sweep_point(base, spec, value))
+        .collect())
+}
+
+fn sweep_point(base: &Scene, spec: &SweepSpec, value: f64) -> SweepRow {
+    let mut scene = base.clone();
+    let invalid = |error: String| SweepRow {
+        value,
+        quasistatic: None,
+        impacts: Vec::new(),
+        error: Some(error),
+    };
+    if let Err(e) = spec.key.set(&mut scene, value) {
+        return invalid(e.to_string());
+    }
+    let qs = match scene.quasistatic() {
+        Ok(qs) => qs,
+        Err(e) => return invalid(e.to_string()),
+    };
+    let params = scene.impact_params(&qs);
+    let (contact_radius, half_width) = match qs.geometry {
+        ContactGeometry::Point { contact_radius } => (Some(contact_radius), None),
+        ContactGeometry::Line { half_width, .. } => (None, Some(half_width)),
+    };
+    let impacts = spec
+        .models
+        .iter()
+        .map(|&model| match solve_impact(model, &params, &spec.options) {
+            Ok(solution) => {
+                let s = solution.summary;
+                ImpactPoint {
+                    model,
+                    x_max: Some(s.x_max),
+                    f_max: Some(s.f_max),
+                    t_contact: Some(s.t_contact),
+                    v_out: Some(s.v_out),
+                    e_out: Some(s.e_out),
+                    error: None,
+                }
+            }
+            Err(e) => ImpactPoint {
+                model,
+                x_max: None,
+                f_max: None,
+                t_contact: None,
+                v_out: None,
+                e_out: None,
+                error: Some(e.to_string()),
+            },
+        })
+        .collect();
+    SweepRow {
+        value,
+        quasistatic: Some(QuasistaticPoint {
+            p_max: qs.p_max,
+            contact_radius,
+            half_width,
+            v_yield: qs.onset.v_yield,
+            v_plastic: qs.onset.v_plastic,
+        }),
+        impacts,
+        error: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(from: f64, to: f64, points: usize, log: bool) -> SweepSpec {
+        SweepSpec {
+            key: SceneKey::V0,
+            from,
+            to,
+            points,
+            log,
+            models: Vec::new(),
+            options: SolveOptions::default(),
+        }
+    }
+
+    #[test]
+    fn linear_and_log_spacing_hit_both_ends() {
+        let lin = sweep_values(&spec(0.1, 0.5, 5, false)).unwrap();
+        assert_eq!(lin.len(), 5);
+        assert!((lin[2] - 0.3).abs() < 1e-15);
+        assert_eq!(lin[4], 0.5);
+        let log = sweep_values(&spec(1e-3, 1e1, 5, true)).unwrap();
+        assert!((log[1] / 1e-2 - 1.0).abs() < 1e-12);
+        assert!((log[4] / 10.0 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bad_specs_are_refused() {
+        assert_eq!(
+            sweep_values(&spec(0.1, 0.5, 1, false)),
+            Err(SweepError::TooFewPoints(1))
+        );
+        assert!(matches!(
+            sweep_values(&spec(0.0, 1.0, 5, true)),
+            Err(SweepError::LogBounds { .. })
+        ));
+        assert!(matches!(
+            sweep_values(&spec(f64::NAN, 1.0, 5, false)),
+            Err(SweepError::NonFiniteBounds { .. })
+        ));
+    }
+}
