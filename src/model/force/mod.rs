@@ -5,7 +5,18 @@ use std::str::FromStr;
 
 use serde::Serialize;
 
+use super::error::{ModelError, require, require_positive};
 use super::power_law::PowerLaw;
+
+pub mod any;
+pub mod dry_friction;
+pub mod elastic;
+pub mod hysteresis;
+pub mod law;
+pub mod proposed;
+
+pub use any::AnyLaw;
+pub use law::{ContactEnd, ForceLaw, Phase};
 
 /// Inputs every force law draws its parameters from (the scene plus the quasistatic law).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -20,6 +31,40 @@ pub struct ImpactParams {
     pub restitution: f64,
     /// Plastic indentation x_pl ≥ 0, m (eq 18); 0 makes the proposed model elastic.
     pub plastic_indentation: f64,
+}
+
+impl ImpactParams {
+    /// Checks m > 0, a valid power law (k > 0, n ≥ 1), v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0, all finite, and
+    /// that the elastic scales x_max and t_c are finite and non-zero (they scale the solver).
+    pub fn validate(&self) -> Result<(), ModelError> {
+        require_positive("mass", self.mass)?;
+        PowerLaw::new(self.law.k, self.law.n)?;
+        require_positive("impact.v0", self.v0)?;
+        require("impact.restitution", self.restitution, "in (0, 1]", |e| {
+            e > 0.0 && e <= 1.0
+        })?;
+        require(
+            "impact.plastic_indentation",
+            self.plastic_indentation,
+            "a finite number ≥ 0",
+            |x| x >= 0.0,
+        )?;
+        let x_max = self.law.max_approach(self.mass, self.v0);
+        let t_c = self.law.contact_time(self.mass, self.v0);
+        let f_max = self.law.force(x_max);
+        if [x_max, t_c, f_max]
+            .iter()
+            .any(|q| !(q.is_finite() && q.is_normal()))
+        {
+            return Err(ModelError::OutOfDomain {
+                formula: "elastic impact scales (eqs 5–7)",
+                detail: format!(
+                    "x_max = {x_max:e} m, t_c = {t_c:e} s, F_max = {f_max:e} N are not all finite and non-zero"
+                ),
+            });
+        }
+        Ok(())
+    }
 }
 
 /// Which force law.
@@ -58,6 +103,11 @@ impl ForceModel {
         }
     }
 
+    /// The law of this model for `params` (validated).
+    pub fn law(self, params: &ImpactParams) -> Result<AnyLaw, ModelError> {
+        AnyLaw::new(self, params)
+    }
+
     /// A human label with the paper's equation number.
     pub fn label(self) -> &'static str {
         match self {
@@ -92,3 +142,6 @@ impl FromStr for ForceModel {
             })
     }
 }
+
+#[cfg(test)]
+mod tests;

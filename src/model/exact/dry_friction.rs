@@ -1,0 +1,163 @@
+//! Dry friction F = k·xⁿ + P·x·sign(ẋ) (eq 15) through its energy identity (physics notes §3).
+//!
+//! Scaled variables X = x/x_e, V = v/v₀ (x_e the elastic x_max), q = P·x_e²/(m·v₀²):
+//! - loading:   V² = 1 − X^{n+1} − q·X², so X_m solves X^{n+1} + q·X² = 1;
+//! - unloading: V² = (X_m^{n+1} − X^{n+1}) − q·(X_m² − X²).
+//!
+//! On unloading F = k·xⁿ − P·x turns tensile below x* = (P/k)^{1/(n−1)} (n > 1): the friction term
+//! outgrows the elastic one near x = 0. By the compressive-only rule contact ends there, so
+//! v_out² follows from the unloading identity at X* (not at 0), and x* is left as residual
+//! approach. Eq 16's e² = 1 − 2P·x_max²/(m·v₀²) is the same identity carried on to x = 0.
+
+use super::ExactImpact;
+use super::elastic::elastic;
+use super::quadrature::tanh_sinh;
+use crate::model::force::ImpactParams;
+
+/// X_m^p − X^p from d = X_m − X without cancellation: X_m^p·(−expm1(p·ln(1 − d/X_m))).
+fn power_drop(x_m: f64, d: f64, p: f64) -> f64 {
+    -x_m.powf(p) * (p * (-d / x_m).ln_1p()).exp_m1()
+}
+
+/// The exact dry-friction impact with friction coefficient `p` (N/m, eq 16/17) and tensile cutoff at
+/// `x_cut` (m; 0 where the law stays compressive): x_max from the loading energy equation, v_out from
+/// the unloading identity, times by tanh-sinh quadrature of dt = dx/v to `rtol`. P = 0 is elastic.
+pub fn dry_friction(params: &ImpactParams, p: f64, x_cut: f64, rtol: f64) -> Option<ExactImpact> {
+    if p <= 0.0 {
+        return Some(elastic(params));
+    }
+    let (m, v0, law) = (params.mass, params.v0, params.law);
+    let n = law.n;
+    let x_e = law.max_approach(m, v0);
+    let t_ref = x_e / v0;
+    let q = p * x_e * x_e / (m * v0 * v0);
+
+    // X^{n+1} + q·X² = 1: increasing and convex in X, so Newton from X = 1 descends monotonically.
+    let mut x_m = 1.0_f64;
+    for _ in 0..100 {
+        let step =
+            (x_m.powf(n + 1.0) + q * x_m * x_m - 1.0) / ((n + 1.0) * x_m.powf(n) + 2.0 * q * x_m);
+        x_m -= step;
+        if step.abs() <= 2.0 * f64::EPSILON * x_m {
+            break;
+        }
+    }
+    let x_star = (x_cut / x_e).min(x_m);
+
+    // V² on each branch as a function of d = X_m − X.
+    let loading_v2 = |d: f64| power_drop(x_m, d, n + 1.0) + q * d * (2.0 * x_m - d);
+    let unloading_v2 = |d: f64| power_drop(x_m, d, n + 1.0) - q * d * (2.0 * x_m - d);
+
+    let d_end = x_m - x_star;
+    let v_out = unloading_v2(d_end).max(0.0).sqrt();
+    let loading = tanh_sinh(|_, _, d| 1.0 / loading_v2(d).sqrt(), 0.0, x_m, rtol);
+    let unloading = tanh_sinh(|_, _, d| 1.0 / unloading_v2(d).sqrt(), x_star, x_m, rtol);
+    let x_max = x_e * x_m;
+    let t_x_max = t_ref * loading;
+
+    let exact = ExactImpact {
+        x_max,
+        t_x_max,
+        // The force rises with x on loading and drops by 2P·x_max at the switch: the peak is the end
+        // of loading.
+        f_max: law.force(x_max) + p * x_max,
+        t_f_max: t_x_max,
+        t_contact: t_x_max + t_ref * unloading,
+        v_out: v0 * v_out,
+        x_residual: x_e * x_star,
+        tensile_cutoff: x_star > 0.0,
+    };
+    exact.is_valid().then_some(exact)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::power_law::PowerLaw;
+
+    fn fig4() -> ImpactParams {
+        ImpactParams {
+            mass: 0.033,
+            law: PowerLaw {
+                k: 1.465e10,
+                n: 1.5,
+            },
+            v0: 0.03,
+            restitution: 0.9,
+            plastic_indentation: 0.0,
+        }
+    }
+
+    fn rel(a: f64, b: f64) -> f64 {
+        (a / b - 1.0).abs()
+    }
+
+    #[test]
+    fn fig4_against_40_digit_reference() {
+        // mpmath at 40 digits: P from eq 16 with the elastic x_max, x_max root of the loading energy
+        // equation, x* = (P/k)², v_out from the unloading identity at x*, times by adaptive quadrature.
+        let params = fig4();
+        let x_e = params.law.max_approach(params.mass, params.v0);
+        let p = 0.5 * params.mass * params.v0 * params.v0 * (1.0 - 0.81) / (x_e * x_e);
+        assert!(rel(p, 1_340_963.585_370_805) < 1e-14);
+        let x_cut = (p / params.law.k).powi(2);
+        let ex = dry_friction(&params, p, x_cut, 1e-14).unwrap();
+        assert!(
+            rel(ex.x_max, 1.397_928_938_372_607_5e-6) < 1e-14,
+            "{}",
+            ex.x_max
+        );
+        assert!(rel(ex.x_residual, 8.378_354_260_576_239e-9) < 1e-13);
+        assert!(
+            rel(ex.v_out, 0.027_224_644_856_800_613) < 1e-13,
+            "{}",
+            ex.v_out
+        );
+        assert!(rel(ex.f_max, 26.088_500_965_174_086) < 1e-14);
+        assert!(
+            rel(ex.t_x_max, 6.893_696_307_590_915e-5) < 1e-12,
+            "{}",
+            ex.t_x_max
+        );
+        assert!(
+            rel(ex.t_contact, 1.437_212_206_712_726e-4) < 1e-12,
+            "{}",
+            ex.t_contact
+        );
+        assert!(ex.tensile_cutoff);
+    }
+
+    #[test]
+    fn without_cutoff_eq_16_holds_exactly() {
+        // Carried on to x = 0 the identity is eq 16: e_out² = 1 − 2P·x_max²/(m·v₀²).
+        let params = fig4();
+        let p = 1.0e6;
+        let ex = dry_friction(&params, p, 0.0, 1e-12).unwrap();
+        let e2 = 1.0 - 2.0 * p * ex.x_max * ex.x_max / (params.mass * params.v0 * params.v0);
+        assert!(rel((ex.v_out / params.v0).powi(2), e2) < 1e-14);
+        assert!(!ex.tensile_cutoff);
+        assert_eq!(ex.x_residual, 0.0);
+    }
+
+    #[test]
+    fn linear_spring_with_friction_has_closed_form_times() {
+        // n = 1: loading is a harmonic arc of ω₁ = √((k+P)/m), unloading of ω₂ = √((k−P)/m):
+        // t_x = (π/2)/ω₁, t_c = t_x + (π/2)/ω₂, and x_max = v₀/ω₁.
+        let params = ImpactParams {
+            mass: 2.0,
+            law: PowerLaw { k: 8e6, n: 1.0 },
+            v0: 0.5,
+            restitution: 0.8,
+            plastic_indentation: 0.0,
+        };
+        let p = 2e6;
+        let ex = dry_friction(&params, p, 0.0, 1e-14).unwrap();
+        let w1 = (10e6f64 / 2.0).sqrt();
+        let w2 = (6e6f64 / 2.0).sqrt();
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        assert!(rel(ex.x_max, 0.5 / w1) < 1e-14);
+        assert!(rel(ex.t_x_max, half_pi / w1) < 1e-13, "{}", ex.t_x_max);
+        assert!(rel(ex.t_contact, half_pi / w1 + half_pi / w2) < 1e-13);
+        assert!(rel(ex.v_out, 0.5 / w1 * w2) < 1e-14);
+    }
+}

@@ -1,0 +1,229 @@
+//! The Hunt–Crossley family F = k·xⁿ·(1 + α·ẋ) (eqs 19–20) through its separable energy integral
+//! (physics notes §3).
+//!
+//! Scaled variables: X = x/x_e, V = v/v₀ with x_e the elastic x_max, a = α·v₀, G(y) = y − ln(1 + y).
+//! Then m·v·dv/(1 + αv) = −k·xⁿ dx integrates to G(a·V) = C − (a²/2)·X^{n+1}, C = G(a), and
+//! m·ẍ = −F becomes dV/dT = −((n+1)/2)·Xⁿ(1 + aV) with T = t·v₀/x_e.
+//!
+//! **The compressive-only rule never fires here.** u = 1 + αv obeys du/dt = −(αk/m)·xⁿ·u, so u
+//! decays but cannot cross zero while x > 0: the line 1 + αv = 0 is invariant and an exact trajectory
+//! starting at u = 1 + a > 0 exits at x = 0 with α·v_out = 1 + W₀(−e^{−(1+C)}) < 1. Only an
+//! integrator's error can carry the state across it (the solver then ends contact there and says so).
+
+use super::quadrature::tanh_sinh;
+use super::roots::brent;
+use super::special::{unloading_root, y_minus_log1p};
+use super::{ExactImpact, elastic::elastic};
+use crate::model::force::ImpactParams;
+
+/// The scaled energy integral of one Hunt–Crossley-family impact.
+#[derive(Debug, Clone, Copy)]
+struct Integral {
+    n: f64,
+    /// a = α·v₀.
+    a: f64,
+    /// C = G(a).
+    c: f64,
+    /// s = a·V_out, the unloading root of G(−s) = C.
+    s: f64,
+    /// w = 1 − s = 1 + a·V at the exit, kept separately: it is tiny for strong damping.
+    w: f64,
+}
+
+impl Integral {
+    /// D(V) = C − G(aV) on loading, V ∈ [0, 1], from δ = 1 − V without cancellation:
+    /// with z = aδ/(1 + aV), D = G(z) + aV·z (both terms ≥ 0).
+    fn d_loading(&self, v: f64, delta: f64) -> f64 {
+        let z = self.a * delta / (1.0 + self.a * v);
+        y_minus_log1p(z) + self.a * v * z
+    }
+
+    /// (D(V), 1 + aV) on unloading, V ∈ [−V_out, 0], δ = V + V_out. Near the exit (δ ≤ V_out/2),
+    /// with z = aδ/w: D = s·z − G(z) = ln(1 + z) − w·z (the first form for s < ½, the second for
+    /// s ≥ ½, whichever does not cancel) and 1 + aV = w + aδ, so both keep their relative accuracy
+    /// as δ → 0 even when w is tiny. Elsewhere D = C − G(aV) directly (G(aV) ≤ G(−s/2) stays well
+    /// below C there).
+    fn d_unloading(&self, v: f64, delta: f64) -> (f64, f64) {
+        let v_out = self.s / self.a;
+        if delta <= 0.5 * v_out {
+            let z = self.a * delta / self.w;
+            let d = if self.s < 0.5 {
+                self.s * z - y_minus_log1p(z)
+            } else {
+                z.ln_1p() - self.w * z
+            };
+            (d, self.w + self.a * delta)
+        } else {
+            (self.c - y_minus_log1p(self.a * v), 1.0 + self.a * v)
+        }
+    }
+
+    /// Scaled force f = Xⁿ·u, u = 1 + aV, f = F/(k·x_eⁿ) (eqs 19–20), X^{n+1} = 2D/a².
+    fn force(&self, d: f64, u: f64) -> f64 {
+        (2.0 * d / (self.a * self.a)).powf(self.n / (self.n + 1.0)) * u
+    }
+
+    /// |dT/dV| = 2/((n+1)·f): the integrand of the contact time in V.
+    fn dt_dv(&self, d: f64, u: f64) -> f64 {
+        2.0 / ((self.n + 1.0) * self.force(d, u))
+    }
+}
+
+/// The exact impact of F = k·xⁿ(1 + α·ẋ) (eqs 19–20): x_max and v_out in closed form (physics notes
+/// §3), the force peak at the root of (n+1)·D(V) = n·a·V, times by tanh-sinh quadrature of
+/// dt = m·dv/F to `rtol`. α = 0 is the elastic impact. `None` if a number comes out non-finite.
+pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactImpact> {
+    let a = alpha * params.v0;
+    if a <= 0.0 {
+        return Some(elastic(params));
+    }
+    let (m, v0, law) = (params.mass, params.v0, params.law);
+    let n = law.n;
+    let x_e = law.max_approach(m, v0);
+    let t_ref = x_e / v0;
+    let f_ref = law.force(x_e);
+    let c = y_minus_log1p(a);
+    let (s, w) = unloading_root(c);
+    let hc = Integral { n, a, c, s, w };
+    let v_out = s / a;
+
+    // Peak force: dF/dV = 0 ⇔ h(V) = (n+1)·D(V) − n·a·V = 0; h(0) = (n+1)C > 0, h(1) = −na < 0,
+    // and h is decreasing, so the root is unique and lies on loading.
+    let v_peak = brent(
+        |v| (n + 1.0) * hc.d_loading(v, 1.0 - v) - n * a * v,
+        0.0,
+        1.0,
+    )?;
+    let d_peak = hc.d_loading(v_peak, 1.0 - v_peak);
+
+    // Times, in T: [V*, 1] (start to peak), [0, V*] (peak to x_max), [−V_out, 0] (unloading).
+    let to_peak = tanh_sinh(
+        |v, _, top| hc.dt_dv(hc.d_loading(v, top), 1.0 + a * v),
+        v_peak,
+        1.0,
+        rtol,
+    );
+    let peak_to_x_max = tanh_sinh(
+        |v, _, _| hc.dt_dv(hc.d_loading(v, 1.0 - v), 1.0 + a * v),
+        0.0,
+        v_peak,
+        rtol,
+    );
+    let unloading = tanh_sinh(
+        |v, from_exit, _| {
+            let (d, u) = hc.d_unloading(v, from_exit);
+            hc.dt_dv(d, u)
+        },
+        -v_out,
+        0.0,
+        rtol,
+    );
+
+    let exact = ExactImpact {
+        x_max: x_e * (2.0 * c / (a * a)).powf(1.0 / (n + 1.0)),
+        t_x_max: t_ref * (to_peak + peak_to_x_max),
+        f_max: f_ref * hc.force(d_peak, 1.0 + a * v_peak),
+        t_f_max: t_ref * to_peak,
+        t_contact: t_ref * (to_peak + peak_to_x_max + unloading),
+        v_out: v0 * v_out,
+        x_residual: 0.0,
+        tensile_cutoff: false,
+    };
+    exact.is_valid().then_some(exact)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::power_law::PowerLaw;
+
+    fn fig5(mass: f64) -> ImpactParams {
+        ImpactParams {
+            mass,
+            law: PowerLaw {
+                k: 1.465e10,
+                n: 1.5,
+            },
+            v0: 0.3,
+            restitution: 0.6,
+            plastic_indentation: 2.3e-6,
+        }
+    }
+
+    fn rel(a: f64, b: f64) -> f64 {
+        (a / b - 1.0).abs()
+    }
+
+    #[test]
+    fn hunt_crossley_fig5_against_40_digit_reference() {
+        // mpmath at 40 digits: x_max by eq (physics notes §3), v_out by Lambert W, times and peak by
+        // adaptive quadrature / root finding of the same integrals.
+        let p = fig5(0.033);
+        let alpha = 1.5 * (1.0 - 0.6) / 0.3;
+        let ex = hysteresis(&p, alpha, 1e-14).unwrap();
+        assert!(
+            rel(ex.x_max, 8.035_169_159_662_600e-6) < 1e-14,
+            "{}",
+            ex.x_max
+        );
+        assert!(
+            rel(ex.v_out, 0.213_585_053_873_359_86) < 1e-14,
+            "{}",
+            ex.v_out
+        );
+        assert!(
+            rel(ex.f_max, 366.898_766_799_700_87) < 1e-13,
+            "{}",
+            ex.f_max
+        );
+        assert!(rel(ex.t_f_max, 3.271_923_371_073_430e-5) < 1e-12);
+        assert!(rel(ex.t_x_max, 4.154_061_059_738_278e-5) < 1e-12);
+        assert!(
+            rel(ex.t_contact, 9.388_273_932_839_247e-5) < 1e-12,
+            "{}",
+            ex.t_contact
+        );
+    }
+
+    #[test]
+    fn lankarani_nikravesh_fig5_against_40_digit_reference() {
+        let p = fig5(0.033);
+        let alpha = 3.0 * (1.0 - 0.36) / (4.0 * 0.3);
+        let ex = hysteresis(&p, alpha, 1e-14).unwrap();
+        assert!(rel(ex.x_max, 8.216_001_471_350_663e-6) < 1e-14);
+        assert!(rel(ex.v_out, 0.226_844_604_197_834_3) < 1e-14);
+        assert!(rel(ex.f_max, 368.793_189_135_817_8) < 1e-13);
+        assert!(rel(ex.t_contact, 9.300_112_290_198_327e-5) < 1e-12);
+    }
+
+    #[test]
+    fn vanishing_damping_tends_to_elastic() {
+        // a = 1.5e-12: every number within ~a of the elastic one, and e_out = 1 − 2a/3.
+        let p = fig5(0.033);
+        let alpha = 1.5e-12 / p.v0;
+        let ex = hysteresis(&p, alpha, 1e-14).unwrap();
+        let el = elastic(&p);
+        assert!(rel(ex.x_max, el.x_max) < 1e-11);
+        assert!(rel(ex.f_max, el.f_max) < 1e-11);
+        assert!(rel(ex.t_contact, el.t_contact) < 1e-11);
+        assert!(rel(ex.v_out / p.v0, 1.0 - 1e-12) < 1e-15);
+    }
+
+    #[test]
+    fn exit_stays_below_the_invariant_line_for_strong_damping() {
+        // Even a = 20 (far beyond HC's 1.5): α·v_out < 1, so F never turns tensile; reference
+        // values from mpmath (Lambert W; quadrature split at 1e-30…1e-5 of V_out from the exit,
+        // where 1 + αv falls to w = 1.6e-8).
+        let p = fig5(0.033);
+        for &(a, v_out, t_c) in &[
+            (5.0, 0.059_094_073_584_155_67, 1.338_733_437_020_365e-4),
+            (20.0, 0.014_999_999_761_149_343, 2.576_715_520_594_233e-4),
+        ] {
+            let ex = hysteresis(&p, a / p.v0, 1e-14).unwrap();
+            assert!(rel(ex.v_out, v_out) < 1e-14, "{a}: {}", ex.v_out);
+            assert!(rel(ex.t_contact, t_c) < 1e-9, "{a}: {}", ex.t_contact);
+            assert!(a * ex.v_out / p.v0 < 1.0);
+            assert!(!ex.tensile_cutoff);
+        }
+    }
+}

@@ -1,0 +1,84 @@
+//! The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18), b = k·x_pl/(v₀·e).
+
+use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
+use super::{ForceModel, ImpactParams};
+use crate::model::exact::{ExactImpact, elastic::elastic};
+
+/// F = xⁿ⁻¹·(k·x + b·ẋ) (eq 18). Contact ends where F returns to 0, i.e. at ẋ = −k·x/b, leaving a
+/// residual indentation; x_pl = 0 makes b = 0, the elastic law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Proposed {
+    params: ImpactParams,
+    b: f64,
+}
+
+impl Proposed {
+    /// b = k·x_pl/(v₀·e) (eq 18, from F = 0 at x = x_pl, ẋ = −v₀e).
+    pub fn new(params: &ImpactParams) -> Self {
+        Proposed {
+            params: *params,
+            b: params.law.k * params.plastic_indentation / (params.v0 * params.restitution),
+        }
+    }
+
+    /// The damping factor b, N·s/mⁿ.
+    pub fn b(&self) -> f64 {
+        self.b
+    }
+}
+
+impl ForceLaw for Proposed {
+    fn model(&self) -> ForceModel {
+        ForceModel::Proposed
+    }
+
+    fn params(&self) -> &ImpactParams {
+        &self.params
+    }
+
+    /// F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18).
+    fn phase_force(&self, x: f64, v: f64, _phase: Phase) -> f64 {
+        let (k, n) = (self.params.law.k, self.params.law.n);
+        abs_pow_nm1(x, n) * (k * x + self.b * v)
+    }
+
+    /// b·xⁿ⁻¹·ẋ (eq 18).
+    fn dissipative_force(&self, x: f64, v: f64, _phase: Phase) -> f64 {
+        self.b * abs_pow_nm1(x, self.params.law.n) * v
+    }
+
+    /// (n·k·xⁿ⁻¹ + (n−1)·b·xⁿ⁻²·ẋ, b·xⁿ⁻¹) (eq 18 differentiated). xⁿ⁻² is singular at x = 0 for
+    /// n < 2; |x| is kept above the smallest normal number so the result stays finite.
+    fn partials(&self, x: f64, v: f64, _phase: Phase) -> (f64, f64) {
+        let (k, n) = (self.params.law.k, self.params.law.n);
+        let xnm1 = abs_pow_nm1(x, n);
+        let xnm2 = if n == 1.0 {
+            0.0
+        } else {
+            x.abs().max(f64::MIN_POSITIVE).powf(n - 2.0) * x.signum()
+        };
+        (n * k * xnm1 + (n - 1.0) * self.b * xnm2 * v, self.b * xnm1)
+    }
+
+    fn contact_end(&self) -> ContactEnd {
+        if self.b > 0.0 {
+            ContactEnd::ForceZero
+        } else {
+            ContactEnd::ApproachZero
+        }
+    }
+
+    fn may_turn_tensile(&self) -> bool {
+        self.b > 0.0
+    }
+
+    /// F/xⁿ⁻¹ = k·x + b·ẋ.
+    fn tension(&self, x: f64, v: f64) -> f64 {
+        self.params.law.k * x + self.b * v
+    }
+
+    /// Only the elastic limit b = 0 has a closed form.
+    fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
+        (self.b == 0.0).then(|| elastic(&self.params))
+    }
+}
