@@ -1,8 +1,14 @@
 //! Continuous output of an integration: one polynomial segment per accepted step.
+//!
+//! Every variant stores the exact end states of its step so that evaluation at a step point returns
+//! the integrator's own value bit for bit (the polynomial forms alone would be off by an ulp).
 
 use super::State;
 
 /// The interpolant of one step over [t0, t0 + h].
+///
+/// Variants are stored inline (no boxing) so that pushing a segment never allocates beyond the
+/// vector's growth; the largest variant (DOP853) is 18 floats.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Segment {
     /// Cubic Hermite interpolant from the end states and their derivatives (fixed-step methods).
@@ -14,23 +20,86 @@ pub enum Segment {
         f0: State,
         f1: State,
     },
+    /// DOPRI5's 4th-order continuous extension (Hairer–Nørsett–Wanner I, §II.6; Hairer's CONTD5):
+    /// y(s) = y0 + s·(Δ + (1−s)·(r3 + s·(r4 + (1−s)·r5))), Δ = y1 − y0, s = (t − t0)/h.
+    Dopri5 {
+        t0: f64,
+        h: f64,
+        y0: State,
+        y1: State,
+        r3: State,
+        r4: State,
+        r5: State,
+    },
+    /// DOP853's 7th-order continuous extension (Hairer's CONTD8): nested in s and 1−s like
+    /// [`Segment::Dopri5`] with six coefficient vectors r3…r8.
+    Dop853 {
+        t0: f64,
+        h: f64,
+        y0: State,
+        y1: State,
+        r: [State; 6],
+    },
+    /// Radau IIA collocation polynomial of the step (Hairer's CONTR5), written from the step end:
+    /// y(s) = y1 + s·(c1 + (s − c₂ + 1)·(c2 + (s − c₁ + 1)·c3)), s = (t − t0 − h)/h ∈ [−1, 0].
+    Radau5 {
+        t0: f64,
+        h: f64,
+        y0: State,
+        y1: State,
+        c: [State; 3],
+    },
 }
 
 impl Segment {
     pub fn t_start(&self) -> f64 {
         match self {
-            Segment::Hermite { t0, .. } => *t0,
+            Segment::Hermite { t0, .. }
+            | Segment::Dopri5 { t0, .. }
+            | Segment::Dop853 { t0, .. }
+            | Segment::Radau5 { t0, .. } => *t0,
         }
     }
 
     pub fn t_end(&self) -> f64 {
         match self {
-            Segment::Hermite { t0, h, .. } => t0 + h,
+            Segment::Hermite { t0, h, .. }
+            | Segment::Dopri5 { t0, h, .. }
+            | Segment::Dop853 { t0, h, .. }
+            | Segment::Radau5 { t0, h, .. } => t0 + h,
         }
     }
 
-    /// The interpolated state at t inside the segment.
+    /// The state at the start of the step.
+    pub fn y_start(&self) -> State {
+        match self {
+            Segment::Hermite { y0, .. }
+            | Segment::Dopri5 { y0, .. }
+            | Segment::Dop853 { y0, .. }
+            | Segment::Radau5 { y0, .. } => *y0,
+        }
+    }
+
+    /// The state at the end of the step (the integrator's accepted value).
+    pub fn y_end(&self) -> State {
+        match self {
+            Segment::Hermite { y1, .. }
+            | Segment::Dopri5 { y1, .. }
+            | Segment::Dop853 { y1, .. }
+            | Segment::Radau5 { y1, .. } => *y1,
+        }
+    }
+
+    /// The interpolated state at t inside the segment; t outside is clamped to the segment, and
+    /// the step ends return the stored states exactly.
     pub fn eval(&self, t: f64) -> State {
+        let t_start = self.t_start();
+        if t <= t_start {
+            return self.y_start();
+        }
+        if t >= self.t_end() {
+            return self.y_end();
+        }
         match self {
             Segment::Hermite {
                 t0,
@@ -49,6 +118,34 @@ impl Segment {
                 let h11 = s3 - s2;
                 y0 * h00 + f0 * (h10 * h) + y1 * h01 + f1 * (h11 * h)
             }
+            Segment::Dopri5 {
+                t0,
+                h,
+                y0,
+                y1,
+                r3,
+                r4,
+                r5,
+            } => {
+                let s = (t - t0) / h;
+                let s1 = 1.0 - s;
+                y0 + ((y1 - y0) + (r3 + (r4 + r5 * s1) * s) * s1) * s
+            }
+            Segment::Dop853 { t0, h, y0, y1, r } => {
+                let s = (t - t0) / h;
+                let s1 = 1.0 - s;
+                let inner = r[4] + r[5] * s;
+                let inner = r[3] + inner * s1;
+                let inner = r[2] + inner * s;
+                let inner = r[1] + inner * s1;
+                let inner = r[0] + inner * s;
+                y0 + ((y1 - y0) + inner * s1) * s
+            }
+            Segment::Radau5 { t0, h, y1, c, .. } => {
+                let s = (t - (t0 + h)) / h;
+                let (c1m1, c2m1) = super::radau5::C1M1_C2M1;
+                y1 + (c[0] + (c[1] + c[2] * (s - c1m1)) * (s - c2m1)) * s
+            }
         }
     }
 }
@@ -57,6 +154,9 @@ impl Segment {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct DenseOutput {
     segments: Vec<Segment>,
+    /// End of the covered interval: the last segment's end, or the located event / `t_max` after
+    /// [`DenseOutput::truncate_at`] (the last segment may extend beyond it).
+    end: f64,
 }
 
 impl DenseOutput {
@@ -64,7 +164,16 @@ impl DenseOutput {
         Self::default()
     }
 
+    /// An empty output with room for `n` segments (integrators reserve to avoid regrowth).
+    pub fn with_capacity(n: usize) -> Self {
+        DenseOutput {
+            segments: Vec::with_capacity(n),
+            end: 0.0,
+        }
+    }
+
     pub fn push(&mut self, segment: Segment) {
+        self.end = segment.t_end();
         self.segments.push(segment);
     }
 
@@ -72,9 +181,22 @@ impl DenseOutput {
         &self.segments
     }
 
-    /// Keeps the solution up to t (the located event) and drops what lies beyond.
+    pub fn len(&self) -> usize {
+        self.segments.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.segments.is_empty()
+    }
+
+    /// Keeps the solution up to t (the located event) and drops what lies beyond; the covered
+    /// interval then ends exactly at t.
     pub fn truncate_at(&mut self, t: f64) {
         self.segments.retain(|s| s.t_start() < t);
+        self.end = match self.segments.last() {
+            Some(last) => t.min(last.t_end()),
+            None => 0.0,
+        };
     }
 
     pub fn t_start(&self) -> f64 {
@@ -82,15 +204,80 @@ impl DenseOutput {
     }
 
     pub fn t_end(&self) -> f64 {
-        self.segments.last().map_or(0.0, Segment::t_end)
+        if self.segments.is_empty() {
+            0.0
+        } else {
+            self.end
+        }
     }
 
-    /// The state at t, clamped to the covered interval; segments are found by binary search.
+    /// The state at t, clamped to the covered interval; segments are found by binary search, and
+    /// step points return the integrator's accepted states exactly.
     pub fn eval(&self, t: f64) -> State {
         let Some(last) = self.segments.last() else {
             return State::zeros();
         };
+        let t = t.clamp(self.t_start(), self.end);
         let i = self.segments.partition_point(|s| s.t_end() < t);
         self.segments.get(i).unwrap_or(last).eval(t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(t0: f64, h: f64, a: f64) -> Segment {
+        // y = (a·t, a): a straight line is reproduced exactly by the Hermite cubic.
+        Segment::Hermite {
+            t0,
+            h,
+            y0: State::new(a * t0, a),
+            y1: State::new(a * (t0 + h), a),
+            f0: State::new(a, 0.0),
+            f1: State::new(a, 0.0),
+        }
+    }
+
+    #[test]
+    fn eval_finds_the_segment_and_clamps() {
+        let mut d = DenseOutput::with_capacity(3);
+        d.push(line(0.0, 1.0, 2.0));
+        d.push(line(1.0, 1.0, 2.0));
+        d.push(line(2.0, 0.5, 2.0));
+        assert_eq!(d.t_end(), 2.5);
+        for &t in &[0.0, 0.3, 1.0, 1.7, 2.0, 2.25, 2.5] {
+            assert!((d.eval(t)[0] - 2.0 * t).abs() < 1e-15, "t = {t}");
+        }
+        // Clamped outside [t_start, t_end].
+        assert_eq!(d.eval(-1.0)[0], 0.0);
+        assert_eq!(d.eval(9.0)[0], 5.0);
+    }
+
+    #[test]
+    fn truncation_moves_the_end_inside_the_last_segment() {
+        let mut d = DenseOutput::new();
+        d.push(line(0.0, 1.0, 1.0));
+        d.push(line(1.0, 1.0, 1.0));
+        d.push(line(2.0, 1.0, 1.0));
+        d.truncate_at(1.25);
+        assert_eq!(d.len(), 2);
+        assert_eq!(d.t_end(), 1.25);
+        assert!((d.eval(2.5)[0] - 1.25).abs() < 1e-15);
+    }
+
+    #[test]
+    fn step_points_are_exact() {
+        // A Hermite segment with data that is not a cubic: the end values still come back bit for bit.
+        let s = Segment::Hermite {
+            t0: 0.1,
+            h: 0.7,
+            y0: State::new(0.3, -1.1),
+            y1: State::new(1.0 / 3.0, 2.0f64.sqrt()),
+            f0: State::new(5.0, 7.0),
+            f1: State::new(-3.0, 11.0),
+        };
+        assert_eq!(s.eval(0.1), State::new(0.3, -1.1));
+        assert_eq!(s.eval(0.1 + 0.7), State::new(1.0 / 3.0, 2.0f64.sqrt()));
     }
 }

@@ -214,6 +214,14 @@ pub enum OdeError {
 }
 
 mod dense;
+mod dop853;
+mod dop853_coefficients;
+mod dopri5;
+mod driver;
+mod events;
+mod fixed_step;
+mod radau5;
+mod step_control;
 
 pub use dense::{DenseOutput, Segment};
 
@@ -232,6 +240,20 @@ pub struct Integration {
 
 /// Integrates `sys` from (t₀, y₀) with `method` until the first event in `events` fires
 /// (located on the dense output to near machine precision) or `opts.t_max` is reached.
+///
+/// - Integration runs forward only: `t_max` must exceed `t0`.
+/// - Fixed-step methods need `opts.dt`; their last step is not shortened to land on `t_max`
+///   (the state there is read from the step's interpolant). Adaptive methods stretch or clip
+///   their last step onto `t_max` exactly and need `atol > 0`.
+/// - Events are checked after every accepted step at its ends and at three interior points of
+///   its interpolant; the first crossing is located by Brent's method to ≈ 4·ε·|t| on the dense
+///   output. The returned event time lies on the far side of the crossing (g has changed sign
+///   or is 0 there), so re-starting from it does not fire the same event again. An event whose
+///   g is exactly 0 at t₀ does not fire at t₀.
+/// - `OdeSystem::check` runs after every accepted step and on the final state.
+/// - `Stats::rhs_evals` counts the integrator's own calls of `rhs`; evaluations made inside
+///   `OdeSystem::jacobian` (e.g. by its finite-difference default) are counted only as
+///   `jacobian_evals`.
 pub fn integrate(
     method: Method,
     sys: &mut dyn OdeSystem,
@@ -240,6 +262,5 @@ pub fn integrate(
     events: &[Event],
     opts: &Options,
 ) -> Result<Integration, OdeError> {
-    let _ = (method, sys, t0, y0, events, opts);
-    todo!("ode helper: driver loop")
+    driver::integrate(method, sys, t0, y0, events, opts)
 }

@@ -1,0 +1,194 @@
+//! The integration loop shared by every method: validate the options, take accepted steps from a
+//! [`Scheme`], store their interpolants, look for events, call the system's check, stop.
+
+use super::dop853::Dop853;
+use super::dopri5::Dopri5;
+use super::events::EventTracker;
+use super::fixed_step::{FixedKind, FixedStep};
+use super::radau5::Radau5;
+use super::step_control::is_finite;
+use super::{
+    DenseOutput, Event, Integration, Method, OdeError, OdeSystem, Options, Segment, State, Stats,
+    Stop,
+};
+
+/// One accepted step: its end and its interpolant over [t, t_new].
+pub(super) struct Step {
+    pub t: f64,
+    pub y: State,
+    pub segment: Segment,
+}
+
+/// A one-step method. `step` advances from (t, y) by one *accepted* step, retrying rejected
+/// attempts internally; every attempt counts towards the step budget. Implementors keep their own
+/// memory (FSAL derivative, step-size proposal, Jacobian) between calls.
+pub(super) trait Scheme {
+    fn step(
+        &mut self,
+        sys: &mut dyn OdeSystem,
+        t: f64,
+        y: &State,
+        stats: &mut Stats,
+    ) -> Result<Step, OdeError>;
+}
+
+/// Segments reserved up front: enough for a typical impact, so the inner loop does not regrow.
+const RESERVED_SEGMENTS: usize = 64;
+
+pub(super) fn integrate(
+    method: Method,
+    sys: &mut dyn OdeSystem,
+    t0: f64,
+    y0: State,
+    events: &[Event],
+    opts: &Options,
+) -> Result<Integration, OdeError> {
+    validate(method, t0, opts)?;
+    if !is_finite(&y0) {
+        return Err(OdeError::NonFinite { t: t0 });
+    }
+    let mut stats = Stats::default();
+    match method {
+        Method::Euler | Method::SymplecticEuler | Method::Verlet | Method::Rk4 => {
+            let kind = match method {
+                Method::Euler => FixedKind::Euler,
+                Method::SymplecticEuler => FixedKind::SymplecticEuler,
+                Method::Verlet => FixedKind::Verlet,
+                _ => FixedKind::Rk4,
+            };
+            // `validate` guarantees dt is present and positive.
+            let dt = opts.dt.unwrap_or(f64::NAN);
+            let scheme = FixedStep::new(kind, sys, &mut stats, t0, &y0, dt, opts)?;
+            run(scheme, sys, stats, t0, y0, events, opts)
+        }
+        Method::Dopri5 => {
+            let scheme = Dopri5::new(sys, &mut stats, t0, &y0, opts)?;
+            run(scheme, sys, stats, t0, y0, events, opts)
+        }
+        Method::Dop853 => {
+            let scheme = Dop853::new(sys, &mut stats, t0, &y0, opts)?;
+            run(scheme, sys, stats, t0, y0, events, opts)
+        }
+        Method::Radau5 => {
+            let scheme = Radau5::new(sys, &mut stats, t0, &y0, opts)?;
+            run(scheme, sys, stats, t0, y0, events, opts)
+        }
+    }
+}
+
+fn invalid(msg: String) -> Result<(), OdeError> {
+    Err(OdeError::InvalidOptions(msg))
+}
+
+fn validate(method: Method, t0: f64, opts: &Options) -> Result<(), OdeError> {
+    if !t0.is_finite() {
+        return invalid(format!("t0 = {t0} is not finite"));
+    }
+    if opts.t_max.is_nan() || opts.t_max <= t0 {
+        return invalid(format!(
+            "t_max = {} must lie after t0 = {t0} (integration runs forward)",
+            opts.t_max
+        ));
+    }
+    if method.is_adaptive() {
+        if !(opts.rtol.is_finite() && opts.rtol >= 0.0) {
+            return invalid(format!("rtol = {} must be finite and ≥ 0", opts.rtol));
+        }
+        if !(opts.atol.is_finite() && opts.atol > 0.0) {
+            return invalid(format!("atol = {} must be finite and > 0", opts.atol));
+        }
+        if method == Method::Radau5 && opts.rtol <= 10.0 * f64::EPSILON {
+            return invalid(format!(
+                "rtol = {} is too small for radau5 (must exceed 10·ε)",
+                opts.rtol
+            ));
+        }
+        if opts.h_max.is_nan() || opts.h_max <= 0.0 {
+            return invalid(format!("h_max = {} must be > 0", opts.h_max));
+        }
+        if let Some(h) = opts.h_initial
+            && !(h.is_finite() && h > 0.0)
+        {
+            return invalid(format!("h_initial = {h} must be finite and > 0"));
+        }
+    } else {
+        match opts.dt {
+            None => return invalid(format!("{method} is a fixed-step method and needs dt")),
+            Some(dt) if !(dt.is_finite() && dt > 0.0) => {
+                return invalid(format!("dt = {dt} must be finite and > 0"));
+            }
+            Some(_) => {}
+        }
+    }
+    Ok(())
+}
+
+fn run<S: Scheme>(
+    mut scheme: S,
+    sys: &mut dyn OdeSystem,
+    mut stats: Stats,
+    t0: f64,
+    y0: State,
+    events: &[Event],
+    opts: &Options,
+) -> Result<Integration, OdeError> {
+    let mut dense = DenseOutput::with_capacity(RESERVED_SEGMENTS);
+    let mut tracker = EventTracker::new(events, t0, &y0);
+    let mut t = t0;
+    let mut y = y0;
+    loop {
+        let step = scheme.step(sys, t, &y, &mut stats)?;
+        // Fixed-step methods may overshoot t_max: events beyond it do not count, and the end
+        // state is interpolated there.
+        let beyond = step.t >= opts.t_max;
+        let (t_b, y_b) = if beyond && step.t > opts.t_max {
+            (opts.t_max, step.segment.eval(opts.t_max))
+        } else {
+            (step.t, step.y)
+        };
+        let hit = tracker.check(events, &step.segment, t, t_b, &y_b);
+        dense.push(step.segment);
+        if let Some(hit) = hit {
+            dense.truncate_at(hit.t);
+            return finish(
+                sys,
+                dense,
+                hit.t,
+                hit.y,
+                Stop::Event { index: hit.index },
+                stats,
+            );
+        }
+        if beyond {
+            dense.truncate_at(t_b);
+            return finish(sys, dense, t_b, y_b, Stop::TimeLimit, stats);
+        }
+        t = step.t;
+        y = step.y;
+        sys.check(t, &y)
+            .map_err(|reason| OdeError::Aborted { t, reason })?;
+    }
+}
+
+/// The last accepted state also passes the system's check before it is returned.
+fn finish(
+    sys: &mut dyn OdeSystem,
+    dense: DenseOutput,
+    t: f64,
+    y: State,
+    stop: Stop,
+    stats: Stats,
+) -> Result<Integration, OdeError> {
+    if !is_finite(&y) {
+        return Err(OdeError::NonFinite { t });
+    }
+    sys.check(t, &y)
+        .map_err(|reason| OdeError::Aborted { t, reason })?;
+    Ok(Integration {
+        dense,
+        t,
+        y,
+        stop,
+        stats,
+    })
+}
