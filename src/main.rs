@@ -1,4 +1,46 @@
-fn main() -> color_eyre::Result<()> {
+//! The `hertz-tui` binary: the explorer by default, `list` and `solve` headless.
+
+use std::io;
+use std::process::ExitCode;
+
+use clap::Parser;
+use hertz_tui::cli::{self, Cli, CliError};
+
+fn main() -> color_eyre::Result<ExitCode> {
     color_eyre::install()?;
-    Ok(())
+    let args = Cli::parse();
+    let outcome = match &args.command {
+        Some(command) => cli::run(command, &mut io::stdout().lock()),
+        None => return explore(&args),
+    };
+    Ok(exit(outcome))
+}
+
+/// Opens the explorer on the chosen scene. A bad scene is a user error (exit 2); failures of the
+/// terminal itself go through color_eyre.
+fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
+    let scene = cli::load_registry().and_then(|registry| {
+        registry
+            .scene_with(&args.scene, &args.overrides)
+            .map_err(CliError::from)
+    });
+    match scene {
+        Ok(scene) => {
+            hertz_tui::ui::run(scene, args.marker)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Err(e) => Ok(exit(Err(e))),
+    }
+}
+
+/// The exit status of a headless outcome; user errors are printed as `error: …`.
+fn exit(outcome: Result<(), CliError>) -> ExitCode {
+    match outcome {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
 }

@@ -1,1 +1,51 @@
 //! Headless subcommands over the model layer.
+
+pub mod args;
+mod csv;
+pub mod error;
+mod layout;
+mod list;
+mod report;
+pub mod solve;
+pub mod units;
+
+use std::io::Write;
+
+pub use args::{Cli, Command, Format, SolveArgs};
+pub use error::CliError;
+
+use crate::model::presets::Registry;
+
+/// Loads the presets and reports problems with user presets as warnings on stderr.
+pub fn load_registry() -> Result<Registry, CliError> {
+    let registry = Registry::load()?;
+    for warning in registry.warnings() {
+        eprintln!("warning: {warning}");
+    }
+    Ok(registry)
+}
+
+/// Runs a headless subcommand, writing its output to `out`.
+pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
+    let registry = load_registry()?;
+    let text = match command {
+        Command::List => list::render(&registry),
+        Command::Solve(args) => match args.format {
+            Format::Table => report::render(&solve::report(args, &registry)?),
+            Format::Json => {
+                let report = solve::report(args, &registry)?;
+                let mut json = serde_json::to_string_pretty(&report)
+                    .map_err(|e| CliError::Output(e.into()))?;
+                json.push('\n');
+                json
+            }
+            Format::Csv => {
+                let solution = solve::trajectory(args, &registry)?;
+                csv::render(&solution, args.points as usize).map_err(CliError::Usage)?
+            }
+        },
+    };
+    out.write_all(text.as_bytes())?;
+    out.flush()?;
+    Ok(())
+}

@@ -1,6 +1,8 @@
 //! A resolved scene: two bodies with their materials and the impact conditions, SI units.
 
-use super::body::Body;
+use serde::ser::{Serialize, SerializeMap, Serializer};
+
+use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
 use super::force::ImpactParams;
 use super::pair::ContactPair;
@@ -44,6 +46,12 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Checks both bodies, their combination and the impact conditions; errors name the dotted field.
+    pub fn validate(&self) -> Result<(), ModelError> {
+        self.pair()?;
+        self.impact.validate()
+    }
+
     /// The validated contact pair of the two bodies.
     pub fn pair(&self) -> Result<ContactPair, ModelError> {
         ContactPair::new(self.body1.clone(), self.body2.clone())
@@ -64,5 +72,113 @@ impl Scene {
             restitution: self.impact.restitution,
             plastic_indentation: self.impact.plastic_indentation,
         }
+    }
+}
+
+/// Serializes in the scene-file schema (materials inline, SI units): what `solve --format json` prints.
+impl Serialize for Scene {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(4))?;
+        map.serialize_entry("name", &self.name)?;
+        map.serialize_entry("body1", &BodyRecord(&self.body1))?;
+        map.serialize_entry("body2", &BodyRecord(&self.body2))?;
+        map.serialize_entry("impact", &ImpactRecord(&self.impact))?;
+        map.end()
+    }
+}
+
+/// A body as the scene file writes it: only the keys its shape uses, the mass only when given.
+struct BodyRecord<'a>(&'a Body);
+
+impl Serialize for BodyRecord<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let body = self.0;
+        let mut map = serializer.serialize_map(None)?;
+        map.serialize_entry("shape", body.shape.name())?;
+        match body.shape {
+            Shape::Sphere { radius } => map.serialize_entry("radius", &radius)?,
+            Shape::Cylinder { radius, length } => {
+                map.serialize_entry("radius", &radius)?;
+                map.serialize_entry("length", &length)?;
+            }
+            Shape::Plane => {}
+        }
+        if let Some(mass) = body.mass {
+            map.serialize_entry("mass", &mass)?;
+        }
+        map.serialize_entry("material", &body.material)?;
+        map.end()
+    }
+}
+
+/// The `[impact]` table.
+struct ImpactRecord<'a>(&'a ImpactConditions);
+
+impl Serialize for ImpactRecord<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(3))?;
+        map.serialize_entry("v0", &self.0.v0)?;
+        map.serialize_entry("restitution", &self.0.restitution)?;
+        map.serialize_entry("plastic_indentation", &self.0.plastic_indentation)?;
+        map.end()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::material::tests::steel;
+
+    fn fig5_scene() -> Scene {
+        Scene {
+            name: "Fig. 5".into(),
+            body1: Body {
+                shape: Shape::Sphere { radius: 0.01 },
+                material: steel(),
+                mass: None,
+            },
+            body2: Body {
+                shape: Shape::Plane,
+                material: steel(),
+                mass: None,
+            },
+            impact: ImpactConditions {
+                v0: 0.3,
+                restitution: 0.6,
+                plastic_indentation: 2.3e-6,
+            },
+        }
+    }
+
+    #[test]
+    fn validate_names_the_dotted_field() {
+        let mut scene = fig5_scene();
+        assert_eq!(scene.validate(), Ok(()));
+        scene.body2.material.poisson_ratio = 0.7;
+        assert_eq!(
+            scene.validate().unwrap_err().to_string(),
+            "body2.material.poisson_ratio must be in [0, 0.5), got 0.7"
+        );
+        let mut scene = fig5_scene();
+        scene.impact.restitution = 1.5;
+        assert!(
+            scene
+                .validate()
+                .unwrap_err()
+                .to_string()
+                .starts_with("impact.restitution must be in (0, 1]")
+        );
+    }
+
+    #[test]
+    fn json_follows_the_scene_file_schema() {
+        let json = serde_json::to_value(fig5_scene()).unwrap();
+        assert_eq!(json["body1"]["shape"], "sphere");
+        assert_eq!(json["body1"]["radius"], 0.01);
+        assert_eq!(json["body1"]["material"]["youngs_modulus"], 2e11);
+        // A plane has no radius key, and an omitted mass stays omitted.
+        assert!(json["body2"].get("radius").is_none());
+        assert!(json["body1"].get("mass").is_none());
+        assert_eq!(json["impact"]["plastic_indentation"], 2.3e-6);
     }
 }

@@ -1,0 +1,89 @@
+//! The command line (clap): no subcommand opens the explorer; `list` and `solve` are headless.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::model::ForceModel;
+use crate::model::impact::MethodChoice;
+use crate::model::overrides::Override;
+use crate::model::presets::DEFAULT_SCENE;
+use crate::ui::MarkerStyle;
+
+/// Explore impact contact forces: Hertz contact, dry friction, Hunt–Crossley, Lankarani–Nikravesh
+/// and the proposed viscous model of Polukoshko, Sokolova & Kononova.
+#[derive(Debug, Parser)]
+#[command(name = "hertz-tui", version)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Scene to open in the explorer: a preset name (see `hertz-tui list`) or a scene file path.
+    #[arg(long, value_name = "NAME|PATH", default_value = DEFAULT_SCENE)]
+    pub scene: String,
+    /// Override a key of the explorer's scene by its dotted path, e.g. impact.v0=0.5 (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<Override>,
+    /// How the explorer draws chart points; dot or block for fonts without braille.
+    #[arg(long, value_enum, default_value_t = MarkerStyle::Braille)]
+    pub marker: MarkerStyle,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// List the built-in and user materials and scenes.
+    List,
+    /// Evaluate a scene: the quasistatic Hertz estimate and the impact of each force model.
+    Solve(SolveArgs),
+}
+
+/// Options of `hertz-tui solve`.
+#[derive(Debug, Args)]
+pub struct SolveArgs {
+    /// A preset name (see `hertz-tui list`) or the path of a scene file.
+    #[arg(long, value_name = "NAME|PATH")]
+    pub scene: String,
+    /// Override a scene key by its dotted path (repeatable): impact.v0=0.5, body1.radius=0.02,
+    /// body1.shape=plane, body1.material=aluminium-alloy, body1.material.youngs_modulus=7e10.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<Override>,
+    /// Output format; csv prints the trajectory t,x,v,F of the one --model given.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Force model (repeatable; default all five): quasistatic, dry-friction, proposed,
+    /// hunt-crossley, lankarani-nikravesh.
+    #[arg(long = "model", value_name = "MODEL")]
+    pub models: Vec<ForceModel>,
+    /// Solution method: auto, euler, symplectic-euler, verlet, rk4, dopri5, dop853, radau5.
+    #[arg(long, value_name = "METHOD", default_value = "auto")]
+    pub method: MethodChoice,
+    /// Relative tolerance of the adaptive methods (default 1e-8).
+    #[arg(long, value_name = "R", value_parser = positive_number)]
+    pub rtol: Option<f64>,
+    /// Absolute tolerance of the adaptive methods, in scaled variables (default 1e-10).
+    #[arg(long, value_name = "A", value_parser = positive_number)]
+    pub atol: Option<f64>,
+    /// Step of the fixed-step methods, s (default: the elastic contact time / 1000).
+    #[arg(long, value_name = "S", value_parser = positive_number)]
+    pub dt: Option<f64>,
+    /// Number of trajectory samples printed by --format csv.
+    #[arg(long, value_name = "N", default_value_t = 400, value_parser = clap::value_parser!(u32).range(2..=1_000_000))]
+    pub points: u32,
+}
+
+/// How `solve` prints its results.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// Aligned tables with units.
+    Table,
+    /// One JSON object: scene, quasistatic, impacts (SI units).
+    Json,
+    /// The trajectory t,x,v,F of one model (SI units).
+    Csv,
+}
+
+/// A finite number > 0 (tolerances and step sizes).
+fn positive_number(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+        Ok(_) => Err(format!("{s} must be a finite number > 0")),
+        Err(_) => Err(format!("\"{s}\" is not a number")),
+    }
+}

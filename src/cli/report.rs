@@ -1,0 +1,245 @@
+//! `solve --format table`: the scene, the quasistatic estimate and the impacts as aligned text.
+
+use super::layout::columns;
+use super::solve::{ImpactRow, SolveReport};
+use super::units::{NOT_A_NUMBER, count, engineering, scientific, significant};
+use crate::model::body::{Body, Shape};
+use crate::model::quasistatic::ContactGeometry;
+use crate::model::{Quasistatic, Scene};
+
+/// The whole report as text.
+pub fn render(report: &SolveReport) -> String {
+    let mut out = String::new();
+    out.push_str(&scene_section(&report.scene));
+    out.push('\n');
+    out.push_str(&quasistatic_section(
+        &report.quasistatic,
+        report.scene.impact.v0,
+    ));
+    if !report.impacts.is_empty() {
+        out.push('\n');
+        out.push_str(&impact_section(&report.impacts));
+    }
+    out
+}
+
+fn body_line(body: &Body) -> String {
+    let m = &body.material;
+    let geometry = match body.shape {
+        Shape::Sphere { radius } => format!("sphere R = {}", engineering(radius, "m")),
+        Shape::Cylinder { radius, length } => format!(
+            "cylinder R = {}, L = {}",
+            engineering(radius, "m"),
+            engineering(length, "m")
+        ),
+        Shape::Plane => "plane".to_string(),
+    };
+    let mass = match (body.mass, body.shape) {
+        (Some(mass), _) => format!(", m = {}", engineering(mass * 1e3, "g")),
+        (None, Shape::Plane) => String::new(),
+        (None, _) => format!(
+            ", m = {} (from density)",
+            engineering(body.mass() * 1e3, "g")
+        ),
+    };
+    format!(
+        "{geometry}{mass}; {} (E = {}, ν = {}, σy = {}, ρ = {} kg/m³)",
+        m.name,
+        engineering(m.youngs_modulus, "Pa"),
+        significant(m.poisson_ratio, 3),
+        engineering(m.yield_stress, "Pa"),
+        significant(m.density, 4)
+    )
+}
+
+fn scene_section(scene: &Scene) -> String {
+    let i = &scene.impact;
+    let rows = vec![
+        vec!["body1".to_string(), body_line(&scene.body1)],
+        vec!["body2".to_string(), body_line(&scene.body2)],
+        vec![
+            "impact".to_string(),
+            format!(
+                "v0 = {}, e = {}, x_pl = {}",
+                engineering(i.v0, "m/s"),
+                significant(i.restitution, 4),
+                engineering(i.plastic_indentation, "m")
+            ),
+        ],
+    ];
+    format!("Scene: {}\n{}", scene.name, columns(&rows, "  "))
+}
+
+fn row(label: &str, value: String, note: &str) -> Vec<String> {
+    vec![label.to_string(), value, note.to_string()]
+}
+
+fn quasistatic_section(q: &Quasistatic, v0: f64) -> String {
+    let k_unit = format!(
+        "N/m^{}",
+        significant(q.n, 4)
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+    );
+    let mut rows = vec![
+        row("η = η1 + η2", scientific(q.eta, "m²/N"), "eq 3"),
+        row(
+            "k",
+            scientific(q.k, &k_unit),
+            "F = k·xⁿ, eq 2 or the fitted a",
+        ),
+        row("n", significant(q.n, 4), ""),
+        row(
+            "reduced mass",
+            engineering(q.reduced_mass * 1e3, "g"),
+            "eq 4",
+        ),
+        row("x_max", engineering(q.x_max, "m"), "eq 5"),
+        row("F_max", engineering(q.f_max, "N"), "eq 6"),
+        row("contact time", engineering(q.t_contact, "s"), "eq 7"),
+        row("p0 at F_max", engineering(q.p_max, "Pa"), "eq 9 / 12"),
+    ];
+    match q.geometry {
+        ContactGeometry::Point { contact_radius } => {
+            rows.push(row(
+                "contact radius a",
+                engineering(contact_radius, "m"),
+                "eq 8",
+            ));
+        }
+        ContactGeometry::Line { half_width, fit } => {
+            rows.push(row("half-width b", engineering(half_width, "m"), "eq 11"));
+            rows.push(row(
+                "fit F = a·xⁿ + c",
+                format!(
+                    "a = {}, n = {}, c = {}",
+                    scientific(fit.a, ""),
+                    significant(fit.n, 4),
+                    engineering(fit.c, "N")
+                ),
+                &format!(
+                    "eq 13/14 over {} … {}, worst error {} %",
+                    engineering(fit.f_min, "N"),
+                    engineering(fit.f_max, "N"),
+                    significant(fit.max_rel_error * 100.0, 2)
+                ),
+            ));
+        }
+    }
+    let o = &q.onset;
+    rows.extend([
+        row(
+            "v0y (p0 = 1.1 σy)",
+            engineering(o.v_yield, "m/s"),
+            "yield begins (paper: maximum pressure)",
+        ),
+        row(
+            "v0p (p0 = 2.8 σy)",
+            engineering(o.v_plastic, "m/s"),
+            "full plasticity (paper)",
+        ),
+        row(
+            "v0y (pm = 1.1 σy)",
+            engineering(o.v_yield_mean_pressure, "m/s"),
+            "textbook convention: mean pressure",
+        ),
+        row(
+            "v0p (pm = 2.8 σy)",
+            engineering(o.v_plastic_mean_pressure, "m/s"),
+            "textbook convention: mean pressure",
+        ),
+        row(
+            "wave limit",
+            engineering(o.v_wave_limit, "m/s"),
+            "10⁻⁵·√(E/ρ), conclusion",
+        ),
+    ]);
+    let regime = match q.regime(v0) {
+        crate::model::pressure::Regime::Elastic => "elastic: p0 < 1.1 σy",
+        crate::model::pressure::Regime::YieldBegins => "yield begins: 1.1 σy ≤ p0 < 2.8 σy",
+        crate::model::pressure::Regime::FullyPlastic => {
+            "fully plastic: p0 ≥ 2.8 σy, Hertz no longer holds"
+        }
+    };
+    rows.push(row("regime at v0", regime.to_string(), ""));
+    format!("Quasistatic Hertz estimate\n{}", columns(&rows, "  "))
+}
+
+fn optional(value: Option<f64>, format: impl Fn(f64) -> String) -> String {
+    value.map_or(NOT_A_NUMBER.to_string(), format)
+}
+
+fn impact_section(impacts: &[ImpactRow]) -> String {
+    let mut rows = vec![
+        [
+            "model",
+            "method",
+            "x_max",
+            "F_max",
+            "t_contact",
+            "v_out",
+            "e_out",
+            "x_residual",
+            "dissipated",
+            "energy err",
+            "steps",
+            "rejected",
+            "F evals",
+        ]
+        .map(String::from)
+        .to_vec(),
+    ];
+    let mut errors = String::new();
+    for r in impacts {
+        if let Some(error) = &r.error {
+            rows.push(vec![
+                r.model.to_string(),
+                r.method.clone(),
+                "failed (see below)".into(),
+            ]);
+            errors.push_str(&format!("  {}: {error}\n", r.model));
+            continue;
+        }
+        rows.push(vec![
+            r.model.to_string(),
+            r.method.clone(),
+            optional(r.x_max, |x| engineering(x, "m")),
+            optional(r.f_max, |x| engineering(x, "N")),
+            optional(r.t_contact, |x| engineering(x, "s")),
+            optional(r.v_out, |x| engineering(x, "m/s")),
+            optional(r.e_out, |x| significant(x, 4)),
+            optional(r.x_residual, |x| engineering(x, "m")),
+            optional(r.energy_dissipated, |x| engineering(x, "J")),
+            optional(r.energy_residual, |x| scientific(x, "")),
+            count(r.steps),
+            count(r.rejected_steps),
+            count(r.force_evals),
+        ]);
+    }
+    let mut out = format!(
+        "Impact (m·ẍ = −F from x = 0, ẋ = v0)\n{}",
+        columns(&rows, "  ")
+    );
+    if !errors.is_empty() {
+        out.push_str("Failures:\n");
+        out.push_str(&errors);
+    }
+    let cutoffs: Vec<String> = impacts
+        .iter()
+        .filter_map(|r| {
+            r.tensile_cutoff.map(|c| {
+                format!(
+                    "  {}: the force turned tensile at t = {}, x = {}: contact ended there\n",
+                    r.model,
+                    engineering(c.t, "s"),
+                    engineering(c.x, "m")
+                )
+            })
+        })
+        .collect();
+    if !cutoffs.is_empty() {
+        out.push_str("Compressive-only rule:\n");
+        out.push_str(&cutoffs.concat());
+    }
+    out
+}
