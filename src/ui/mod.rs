@@ -1,28 +1,54 @@
 //! The terminal explorer (ratatui + crossterm) over the model layer.
+//!
+//! [`app`] holds the state and `update(&mut App, Action)`; [`keymap`] turns keys into actions;
+//! [`render`] draws one pane per pure function; [`worker`] solves off the UI thread; [`runtime`]
+//! ties them to the terminal. The UI holds no physics: every number comes from `crate::model`.
 
+pub mod action;
+pub mod advice;
+pub mod app;
+pub mod export;
+pub mod field;
+pub mod keymap;
 mod marker;
+pub mod picker;
+pub mod plot;
+pub mod render;
+mod runtime;
+pub mod solutions;
+#[cfg(test)]
+mod testing;
+pub mod theme;
+pub mod ticks;
+pub mod units;
+pub mod worker;
 
 pub use marker::MarkerStyle;
 
+use color_eyre::eyre::WrapErr;
+
 use crate::model::Scene;
+use crate::model::presets::Registry;
+
+use app::App;
+use theme::Theme;
 
 /// Opens the explorer on `scene` and runs it until the user quits; the terminal is restored on
-/// every exit path (errors and panics included).
+/// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
+/// restores the terminal before the previously installed color-eyre hook reports).
 pub fn run(scene: Scene, marker: MarkerStyle) -> color_eyre::Result<()> {
-    let mut terminal = ratatui::try_init()?;
-    let result = (|| -> color_eyre::Result<()> {
-        loop {
-            terminal.draw(|frame| {
-                let text = format!("{} ({marker:?}) — press q to quit", scene.name);
-                frame.render_widget(ratatui::widgets::Paragraph::new(text), frame.area());
-            })?;
-            if let ratatui::crossterm::event::Event::Key(key) = ratatui::crossterm::event::read()?
-                && key.code == ratatui::crossterm::event::KeyCode::Char('q')
-            {
-                return Ok(());
-            }
+    let registry = Registry::load()
+        .or_else(|_| Registry::builtin())
+        .wrap_err("cannot load the presets")?;
+    let app = App::new(scene, registry, marker, Theme::from_env());
+    let mut terminal = match ratatui::try_init() {
+        Ok(terminal) => terminal,
+        Err(e) => {
+            ratatui::restore();
+            return Err(e).wrap_err("cannot set up the terminal");
         }
-    })();
+    };
+    let result = runtime::event_loop(&mut terminal, app);
     ratatui::restore();
     result
 }

@@ -1,0 +1,41 @@
+//! Everything that can happen to the app: the vocabulary of [`update`](super::app::update).
+
+use tui_input::InputRequest;
+
+use crate::model::scene_key::BodyIndex;
+
+use super::field::Nudge;
+use super::worker::Report;
+
+/// One step of the state machine, from a key, the terminal or the solver.
+#[derive(Debug, Clone)]
+pub enum Action {
+    Quit,
+    /// Cursor (or picker selection) up / down.
+    Up,
+    Down,
+    /// Steps the value under the cursor (←/→, −/+).
+    Nudge(Nudge),
+    /// Enter: edit the field, toggle the model, commit the edit or prompt, apply the preset.
+    Enter,
+    /// Esc: cancel the edit, close the overlay, clear the message.
+    Cancel,
+    /// A line-editing request for the open editor or prompt.
+    Input(InputRequest),
+    /// Space: check or uncheck the model under the cursor (else the focused one).
+    ToggleModel,
+    /// Moves the focus to the next / previous model without moving the cursor.
+    FocusModel(Nudge),
+    /// Shows the next chart where only one fits.
+    CycleChart,
+    Help,
+    Presets,
+    Save,
+    Export,
+    /// Applies the material selected in the picker to a body.
+    ApplyMaterialTo(BodyIndex),
+    /// The terminal changed size: redraw.
+    Resize,
+    /// The solver finished a job (or failed).
+    Solved(Report),
+}

@@ -1,0 +1,107 @@
+//! Key → action, per mode. The only place that knows which key does what (the help lists them).
+
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use tui_input::backend::crossterm::to_input_request;
+
+use crate::model::scene_key::BodyIndex;
+
+use super::action::Action;
+use super::app::Mode;
+use super::field::Nudge;
+
+/// The key bindings, as the help screen lists them: (keys, what they do).
+pub const BINDINGS: &[(&str, &str)] = &[
+    ("↑ ↓  Tab  S-Tab", "move between fields and models"),
+    (
+        "Enter",
+        "edit the field (Enter commits, Esc cancels) · toggle a model",
+    ),
+    (
+        "← →  − +",
+        "nudge the value by one step of its 2nd digit; cycle choices",
+    ),
+    ("Space", "check / uncheck the model (drawn and tabulated)"),
+    ("[  ]", "focus the previous / next model"),
+    ("c", "next chart (when only one fits)"),
+    (
+        "p",
+        "presets: scenes and materials (1 / 2 apply a material to a body)",
+    ),
+    (
+        "s",
+        "save the scene (preset name, or a path ending in .toml)",
+    ),
+    ("e", "export the focused model's trajectory as CSV"),
+    ("?", "this help"),
+    ("Esc", "close · cancel · clear the message"),
+    ("q  Ctrl-C", "quit"),
+];
+
+/// Units accepted while editing, for the help screen.
+pub const INPUT_HINTS: &[&str] = &[
+    "numbers take SI prefixes and units: 200G, 2e11, 200 GPa, 10 mm, 0.3 m/s, 2.3 µm (or um), 33 g",
+    "a bare number is in SI base units (Pa, m, m/s, kg); mass `auto` = density × volume",
+];
+
+/// The action of a terminal event in `mode`, if any.
+pub fn action_for_event(mode: &Mode, event: &Event) -> Option<Action> {
+    match event {
+        Event::Key(key) if matches!(key.kind, KeyEventKind::Press | KeyEventKind::Repeat) => {
+            action_for_key(mode, event, *key)
+        }
+        Event::Resize(_, _) => Some(Action::Resize),
+        _ => None,
+    }
+}
+
+fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
+    if key.modifiers.contains(KeyModifiers::CONTROL) && key.code == KeyCode::Char('c') {
+        return Some(Action::Quit);
+    }
+    match mode {
+        Mode::Normal => normal(key),
+        Mode::Editing(_) | Mode::Prompt(_) => match key.code {
+            KeyCode::Enter => Some(Action::Enter),
+            KeyCode::Esc => Some(Action::Cancel),
+            _ => to_input_request(event).map(Action::Input),
+        },
+        Mode::Help => Some(match key.code {
+            KeyCode::Char('q') | KeyCode::Char('?') | KeyCode::Esc | KeyCode::Enter => {
+                Action::Cancel
+            }
+            _ => return None,
+        }),
+        Mode::Picker(_) => Some(match key.code {
+            KeyCode::Up | KeyCode::Char('k') | KeyCode::BackTab => Action::Up,
+            KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => Action::Down,
+            KeyCode::Enter => Action::Enter,
+            KeyCode::Char('1') => Action::ApplyMaterialTo(BodyIndex::One),
+            KeyCode::Char('2') => Action::ApplyMaterialTo(BodyIndex::Two),
+            KeyCode::Esc | KeyCode::Char('q') | KeyCode::Char('p') => Action::Cancel,
+            _ => return None,
+        }),
+    }
+}
+
+fn normal(key: KeyEvent) -> Option<Action> {
+    Some(match key.code {
+        KeyCode::Char('q') => Action::Quit,
+        KeyCode::Up | KeyCode::Char('k') | KeyCode::BackTab => Action::Up,
+        KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => Action::Down,
+        KeyCode::Left | KeyCode::Char('-') | KeyCode::Char('h') => Action::Nudge(Nudge::Down),
+        KeyCode::Right | KeyCode::Char('+') | KeyCode::Char('=') | KeyCode::Char('l') => {
+            Action::Nudge(Nudge::Up)
+        }
+        KeyCode::Enter => Action::Enter,
+        KeyCode::Esc => Action::Cancel,
+        KeyCode::Char(' ') => Action::ToggleModel,
+        KeyCode::Char('[') => Action::FocusModel(Nudge::Down),
+        KeyCode::Char(']') => Action::FocusModel(Nudge::Up),
+        KeyCode::Char('c') => Action::CycleChart,
+        KeyCode::Char('?') => Action::Help,
+        KeyCode::Char('p') => Action::Presets,
+        KeyCode::Char('s') => Action::Save,
+        KeyCode::Char('e') => Action::Export,
+        _ => return None,
+    })
+}

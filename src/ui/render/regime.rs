@@ -1,0 +1,130 @@
+//! The regime line: v₀ against the yield-onset velocities, the wave criterion, and the models that
+//! fit the regime, with the reason.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
+
+use crate::model::pressure::Regime;
+use crate::ui::advice::{advise, regime_name};
+use crate::ui::app::App;
+use crate::ui::theme::Role;
+use crate::ui::units::sig;
+
+use super::common::{flow, model_name, pane, wrap};
+
+fn speed(v: f64) -> String {
+    format!("{} m/s", sig(v, 3))
+}
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+    let theme = app.theme;
+    let (inner, block) = if roomy {
+        let block = pane("Regime", theme, true);
+        (block.inner(area), Some(block))
+    } else {
+        (area, None)
+    };
+    if let Some(block) = block {
+        frame.render_widget(block, area);
+    }
+    let width = inner.width as usize;
+    let max_lines = inner.height as usize;
+    let mut items: Vec<Vec<Span>> = Vec::new();
+    if let Some(error) = &app.scene_error
+        && app.error_fields().is_empty()
+    {
+        items.push(vec![Span::styled(
+            format!("✗ {error}: showing the last valid scene"),
+            theme.style(Role::Error),
+        )]);
+    }
+    let Some(valid) = &app.valid else {
+        frame.render_widget(
+            Paragraph::new(flow(items, width, max_lines, Span::raw("  "))),
+            inner,
+        );
+        return;
+    };
+    let onset = &valid.quasistatic.onset;
+    let v0 = valid.scene.impact.v0;
+    let advice = advise(&valid.quasistatic, v0);
+    let regime_role = match advice.regime {
+        Regime::Elastic => Role::Good,
+        Regime::YieldBegins => Role::Warning,
+        Regime::FullyPlastic => Role::Error,
+    };
+    let relation = match advice.regime {
+        Regime::Elastic => format!("v₀ {} < v_y {}", speed(v0), speed(onset.v_yield)),
+        Regime::YieldBegins => format!(
+            "v_y {} ≤ v₀ {} < v_p {}",
+            speed(onset.v_yield),
+            speed(v0),
+            speed(onset.v_plastic)
+        ),
+        Regime::FullyPlastic => format!("v₀ {} ≥ v_p {}", speed(v0), speed(onset.v_plastic)),
+    };
+    items.push(vec![
+        Span::styled(
+            format!("● {}", regime_name(advice.regime)),
+            theme.style(regime_role),
+        ),
+        Span::raw(": "),
+        Span::styled(relation, theme.style(Role::Normal)),
+        Span::styled(" (p₀ = 1.1 / 2.8 σ_y)", theme.style(Role::Muted)),
+    ]);
+    let wave = if advice.within_wave_limit {
+        "within: no permanent indentation"
+    } else {
+        "exceeded: permanent indentation possible"
+    };
+    items.push(vec![
+        Span::styled("wave limit ", theme.style(Role::Label)),
+        Span::styled(
+            format!("10⁻⁵√(E/ρ) = {} {wave}", speed(onset.v_wave_limit)),
+            theme.style(if advice.within_wave_limit {
+                Role::Normal
+            } else {
+                Role::Warning
+            }),
+        ),
+    ]);
+    let mut fits = vec![Span::styled("fits: ", theme.style(Role::Label))];
+    for (i, &model) in advice.fits.iter().enumerate() {
+        if i > 0 {
+            fits.push(Span::raw(", "));
+        }
+        fits.push(Span::styled(
+            model_name(model, 19),
+            theme.model_style(model),
+        ));
+    }
+    fits.push(Span::styled(
+        format!(" ({})", advice.gist),
+        theme.style(Role::Normal),
+    ));
+    items.push(fits);
+    let mut lines = flow(items, width, max_lines, Span::raw("  ·  "));
+    let mean_pressure = format!(
+        "mean-pressure convention: v_y {}, v_p {}",
+        speed(onset.v_yield_mean_pressure),
+        speed(onset.v_plastic_mean_pressure)
+    );
+    let room = max_lines.saturating_sub(lines.len());
+    let why = wrap(&format!("why: {}", advice.why), width);
+    // The reason whole, or not at all; then the other convention if a line is left.
+    if why.len() <= room {
+        lines.extend(
+            why.into_iter()
+                .map(|l| Line::from(Span::styled(l, theme.style(Role::Muted)))),
+        );
+    }
+    if lines.len() < max_lines {
+        lines.push(Line::from(Span::styled(
+            mean_pressure,
+            theme.style(Role::Muted),
+        )));
+    }
+    frame.render_widget(Paragraph::new(lines), inner);
+}

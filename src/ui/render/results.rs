@@ -1,0 +1,223 @@
+//! The results table: one row per checked model, then the quasistatic (Hertz) estimate.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Modifier;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Cell, Paragraph, Row, Table};
+
+use crate::model::ForceModel;
+use crate::model::impact::ImpactSummary;
+use crate::model::quasistatic::ContactGeometry;
+use crate::ui::app::App;
+use crate::ui::theme::{Role, Theme};
+use crate::ui::units::{self, sig};
+
+use super::common::{flow, model_name, pane, span};
+
+/// A column: header, unit, width, and the value of a summary in that unit.
+struct Column {
+    header: &'static str,
+    unit: &'static str,
+    width: u16,
+    value: fn(&ImpactSummary) -> String,
+}
+
+const COLUMNS: [Column; 9] = [
+    Column {
+        header: "x_max",
+        unit: "µm",
+        width: 7,
+        value: |s| sig(s.x_max * 1e6, 4),
+    },
+    Column {
+        header: "F_max",
+        unit: "N",
+        width: 7,
+        value: |s| sig(s.f_max, 4),
+    },
+    Column {
+        header: "t_c",
+        unit: "µs",
+        width: 7,
+        value: |s| sig(s.t_contact * 1e6, 4),
+    },
+    Column {
+        header: "v_out",
+        unit: "m/s",
+        width: 7,
+        value: |s| sig(s.v_out, 4),
+    },
+    Column {
+        header: "e_out",
+        unit: "",
+        width: 6,
+        value: |s| sig(s.e_out, 3),
+    },
+    Column {
+        header: "x_res",
+        unit: "µm",
+        width: 7,
+        value: |s| sig(s.x_residual * 1e6, 4),
+    },
+    Column {
+        header: "ΔE",
+        unit: "mJ",
+        width: 7,
+        value: |s| sig(s.energy_dissipated * 1e3, 4),
+    },
+    Column {
+        header: "method",
+        unit: "",
+        width: 16,
+        value: |s| s.method.to_string(),
+    },
+    Column {
+        header: "steps",
+        unit: "",
+        width: 6,
+        value: |s| s.steps.to_string(),
+    },
+];
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+    let theme = app.theme;
+    let checked = app.checked_models();
+    let block = pane("Results", theme, roomy);
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let model_width: u16 = if roomy { 27 } else { 9 };
+    // As many columns as fit, in order of importance.
+    let mut used = model_width;
+    let columns: Vec<&Column> = COLUMNS
+        .iter()
+        .take_while(|c| {
+            used += c.width + 1;
+            used <= inner.width
+        })
+        .collect();
+    let quasistatic_lines = quasistatic_block(app, inner.width as usize, 2);
+    let table_height = inner
+        .height
+        .saturating_sub(quasistatic_lines.len() as u16)
+        .max(1);
+    let [table_area, q_area] =
+        Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
+    let header_text = |c: &Column| {
+        if c.unit.is_empty() || !roomy {
+            c.header.to_string()
+        } else {
+            format!("{} {}", c.header, c.unit)
+        }
+    };
+    let header = Row::new(
+        std::iter::once(Cell::from("model"))
+            .chain(columns.iter().map(|c| Cell::from(header_text(c)))),
+    )
+    .style(theme.style(Role::Label).add_modifier(Modifier::BOLD));
+    let rows: Vec<Row> = checked
+        .iter()
+        .map(|&model| model_row(app, model, &columns, model_width, theme))
+        .collect();
+    let widths = std::iter::once(Constraint::Length(model_width))
+        .chain(columns.iter().map(|c| Constraint::Length(c.width)));
+    let table = Table::new(rows, widths).header(header).column_spacing(1);
+    frame.render_widget(table, table_area);
+    frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
+    if !roomy {
+        // Units are in the compact header's place: say them once, right-aligned in the title row.
+        let units = "x µm · F N · t µs · v m/s";
+        let width = units.chars().count() as u16;
+        if area.width > width + 10 {
+            let rect = Rect::new(area.right() - width - 1, area.y, width, 1);
+            frame.render_widget(Paragraph::new(span(units, theme.style(Role::Muted))), rect);
+        }
+    }
+}
+
+fn model_row<'a>(
+    app: &App,
+    model: ForceModel,
+    columns: &[&Column],
+    model_width: u16,
+    theme: Theme,
+) -> Row<'a> {
+    let busy = app.solutions.is_pending(model);
+    let mut name = model_name(model, usize::from(model_width) - 1).to_string();
+    if busy {
+        name.push('…');
+    }
+    let mut name_style = theme.model_style(model);
+    if app.focused == model {
+        name_style = name_style.add_modifier(Modifier::BOLD);
+    }
+    let name_cell = Cell::from(span(name, name_style));
+    match app.solutions.result(model) {
+        Some(Ok(solution)) => Row::new(
+            std::iter::once(name_cell).chain(
+                columns
+                    .iter()
+                    .map(|c| Cell::from((c.value)(&solution.summary))),
+            ),
+        ),
+        Some(Err(message)) => Row::new(vec![
+            name_cell,
+            Cell::from(span(format!("✗ {message}"), theme.style(Role::Error))),
+        ]),
+        None => Row::new(vec![
+            name_cell,
+            Cell::from(span("computing…", theme.style(Role::Muted))),
+        ]),
+    }
+}
+
+/// The quasistatic block: k, n, contact radius or half-width, p₀, and the elastic estimates.
+fn quasistatic_block(app: &App, width: usize, max_lines: usize) -> Vec<Line<'static>> {
+    let Some(valid) = &app.valid else {
+        return Vec::new();
+    };
+    let theme = app.theme;
+    let q = &valid.quasistatic;
+    let item = |label: &str, value: String| {
+        vec![
+            Span::styled(format!("{label} "), theme.style(Role::Label)),
+            Span::styled(value, theme.style(Role::Normal)),
+        ]
+    };
+    let mut items = vec![
+        vec![Span::styled("Hertz estimate", theme.style(Role::Title))],
+        item("k", format!("{} N/m^{}", sig(q.k, 4), sig(q.n, 3))),
+        item("n", sig(q.n, 4)),
+    ];
+    items.push(match q.geometry {
+        ContactGeometry::Point { contact_radius } => {
+            item("a", units::engineering(contact_radius, units::METRE, 4))
+        }
+        ContactGeometry::Line { half_width, .. } => {
+            item("b", units::engineering(half_width, units::METRE, 4))
+        }
+    });
+    items.push(item("p₀", units::engineering(q.p_max, units::PASCAL, 4)));
+    items.push(item(
+        "m",
+        units::engineering(q.reduced_mass, units::GRAM, 4),
+    ));
+    items.push(item("x_max", units::engineering(q.x_max, units::METRE, 4)));
+    items.push(item("F_max", units::engineering(q.f_max, units::NEWTON, 4)));
+    items.push(item(
+        "t_c",
+        units::engineering(q.t_contact, units::SECOND, 4),
+    ));
+    if let ContactGeometry::Line { fit, .. } = q.geometry {
+        items.push(item(
+            "fit",
+            format!(
+                "a·xⁿ+c over {}–{}, max error {} %",
+                units::engineering(fit.f_min, units::NEWTON, 3),
+                units::engineering(fit.f_max, units::NEWTON, 3),
+                sig(fit.max_rel_error * 100.0, 2)
+            ),
+        ));
+    }
+    flow(items, width, max_lines, Span::raw("  "))
+}

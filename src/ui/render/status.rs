@@ -1,0 +1,96 @@
+//! The status line: scene name with the unsaved mark, recompute time or "computing…", and either
+//! the news of the last action or the key hints.
+
+use ratatui::Frame;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
+
+use crate::ui::app::{App, Mode};
+use crate::ui::theme::Role;
+use crate::ui::units;
+
+/// Key hints per mode: (key, action).
+fn hints(mode: &Mode) -> &'static [(&'static str, &'static str)] {
+    match mode {
+        Mode::Normal => &[
+            ("↑↓", "move"),
+            ("Enter", "edit"),
+            ("←→", "nudge"),
+            ("Space", "model"),
+            ("?", "help"),
+            ("p", "presets"),
+            ("s", "save"),
+            ("e", "export"),
+            ("q", "quit"),
+        ],
+        Mode::Editing(_) => &[("Enter", "commit"), ("Esc", "cancel")],
+        Mode::Help => &[("Esc", "close")],
+        Mode::Picker(_) => &[
+            ("Enter", "load / apply"),
+            ("1 2", "material to body"),
+            ("Esc", "close"),
+        ],
+        Mode::Prompt(_) => &[("Enter", "write"), ("Esc", "cancel")],
+    }
+}
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App) {
+    let theme = app.theme;
+    let mut left = vec![Span::styled(
+        format!(" {}", app.draft.scene.name),
+        theme.style(Role::Title),
+    )];
+    if app.is_dirty() {
+        left.push(Span::styled("*", theme.style(Role::Warning)));
+    }
+    if app.is_computing() {
+        left.push(Span::styled(" · computing…", theme.style(Role::Warning)));
+    } else if let Some(elapsed) = app.last_recompute {
+        left.push(Span::styled(
+            format!(
+                " · recomputed in {}",
+                units::engineering(elapsed.as_secs_f64(), units::SECOND, 2)
+            ),
+            theme.style(Role::Muted),
+        ));
+    }
+    if app.scene_error.is_some() {
+        left.push(Span::styled(" · invalid scene", theme.style(Role::Error)));
+    }
+    let left = Line::from(left);
+    let left_width = (left.width() as u16).min(area.width);
+    let room = usize::from(area.width.saturating_sub(left_width + 1));
+    let right: Vec<Span> = match &app.message {
+        Some(message) => vec![Span::styled(
+            format!("{} ", message.text),
+            theme.style(if message.error {
+                Role::Error
+            } else {
+                Role::Good
+            }),
+        )],
+        None => {
+            // As many hints as fit, in order.
+            let mut used = 0;
+            hints(&app.mode)
+                .iter()
+                .take_while(|(key, what)| {
+                    used += key.chars().count() + what.chars().count() + 3;
+                    used <= room
+                })
+                .flat_map(|(key, what)| {
+                    [
+                        Span::styled(*key, theme.style(Role::Key)),
+                        Span::styled(format!(" {what}  "), theme.style(Role::Muted)),
+                    ]
+                })
+                .collect()
+        }
+    };
+    let right = Line::from(right).right_aligned();
+    let [l, r] =
+        Layout::horizontal([Constraint::Length(left_width + 1), Constraint::Fill(1)]).areas(area);
+    frame.render_widget(Paragraph::new(left), l);
+    frame.render_widget(Paragraph::new(right), r);
+}

@@ -1,0 +1,183 @@
+//! The solved impacts of the current scene, one slot per force model, and the solve requests.
+//!
+//! A slot remembers the inputs it was solved for, so a request with the same inputs solves nothing.
+//! Every request gets a new generation; an outcome of an older generation is stale and dropped.
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::model::impact::{ImpactSolution, SolveOptions};
+use crate::model::{ForceModel, ImpactParams};
+
+/// One impact to solve off the UI thread.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Job {
+    pub generation: u64,
+    pub model: ForceModel,
+    pub params: ImpactParams,
+    pub options: SolveOptions,
+}
+
+/// What a solve produced; errors are kept as the solver's message.
+pub type SolveResult = Result<Arc<ImpactSolution>, String>;
+
+/// A finished job.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    pub generation: u64,
+    pub model: ForceModel,
+    pub result: SolveResult,
+    pub elapsed: Duration,
+}
+
+#[derive(Debug, Clone, Default)]
+struct Slot {
+    /// Inputs of the latest request.
+    inputs: Option<(ImpactParams, SolveOptions)>,
+    /// Generation of the latest request.
+    generation: u64,
+    /// Whether the latest request is still running.
+    pending: bool,
+    /// The latest finished result (of the latest request once it is no longer pending).
+    shown: Option<SolveResult>,
+}
+
+/// Results per model, with the bookkeeping of requests in flight.
+#[derive(Debug, Clone, Default)]
+pub struct Solutions {
+    slots: [Slot; 5],
+    last_generation: u64,
+}
+
+fn index(model: ForceModel) -> usize {
+    ForceModel::ALL
+        .iter()
+        .position(|&m| m == model)
+        .unwrap_or_default()
+}
+
+impl Solutions {
+    /// A job for `model` if its inputs differ from those of its last request, else `None`.
+    pub fn request(
+        &mut self,
+        model: ForceModel,
+        params: ImpactParams,
+        options: SolveOptions,
+    ) -> Option<Job> {
+        let slot = &mut self.slots[index(model)];
+        if slot.inputs == Some((params, options)) {
+            return None;
+        }
+        self.last_generation += 1;
+        slot.inputs = Some((params, options));
+        slot.generation = self.last_generation;
+        slot.pending = true;
+        Some(Job {
+            generation: self.last_generation,
+            model,
+            params,
+            options,
+        })
+    }
+
+    /// Stores an outcome if it answers the latest request of its model; returns whether it did.
+    pub fn accept(&mut self, outcome: Outcome) -> bool {
+        let slot = &mut self.slots[index(outcome.model)];
+        if outcome.generation != slot.generation || !slot.pending {
+            return false;
+        }
+        slot.pending = false;
+        slot.shown = Some(outcome.result);
+        true
+    }
+
+    /// The latest finished result of `model` (the previous one while a new solve runs).
+    pub fn result(&self, model: ForceModel) -> Option<&SolveResult> {
+        self.slots[index(model)].shown.as_ref()
+    }
+
+    /// The solution of `model`, if its latest finished solve succeeded.
+    pub fn solution(&self, model: ForceModel) -> Option<&ImpactSolution> {
+        match self.result(model) {
+            Some(Ok(solution)) => Some(solution),
+            _ => None,
+        }
+    }
+
+    pub fn is_pending(&self, model: ForceModel) -> bool {
+        self.slots[index(model)].pending
+    }
+
+    pub fn any_pending(&self) -> bool {
+        self.slots.iter().any(|s| s.pending)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::power_law::PowerLaw;
+
+    fn params(v0: f64) -> ImpactParams {
+        ImpactParams {
+            mass: 0.0327,
+            law: PowerLaw {
+                k: 1.465e10,
+                n: 1.5,
+            },
+            v0,
+            restitution: 0.6,
+            plastic_indentation: 2.3e-6,
+        }
+    }
+
+    fn failed(job: &Job, message: &str) -> Outcome {
+        Outcome {
+            generation: job.generation,
+            model: job.model,
+            result: Err(message.into()),
+            elapsed: Duration::ZERO,
+        }
+    }
+
+    fn message(s: &Solutions) -> Option<&str> {
+        match s.result(ForceModel::Proposed) {
+            Some(Err(m)) => Some(m),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn same_inputs_solve_nothing() {
+        let mut s = Solutions::default();
+        let opts = SolveOptions::default();
+        let job = s.request(ForceModel::Proposed, params(0.3), opts).unwrap();
+        assert!(s.is_pending(ForceModel::Proposed));
+        assert_eq!(s.request(ForceModel::Proposed, params(0.3), opts), None);
+        assert!(s.accept(failed(&job, "x")));
+        assert!(!s.any_pending());
+        assert_eq!(s.request(ForceModel::Proposed, params(0.3), opts), None);
+        assert!(
+            s.request(ForceModel::HuntCrossley, params(0.3), opts)
+                .is_some()
+        );
+    }
+
+    #[test]
+    fn stale_outcomes_are_dropped_and_the_old_result_stays_meanwhile() {
+        let mut s = Solutions::default();
+        let opts = SolveOptions::default();
+        let first = s.request(ForceModel::Proposed, params(0.3), opts).unwrap();
+        assert!(s.accept(failed(&first, "first")));
+        let second = s.request(ForceModel::Proposed, params(0.4), opts).unwrap();
+        let third = s.request(ForceModel::Proposed, params(0.5), opts).unwrap();
+        assert!(second.generation < third.generation);
+        // While the new request runs, the previous result is what is shown.
+        assert_eq!(message(&s), Some("first"));
+        assert!(!s.accept(failed(&second, "second")), "stale");
+        assert!(s.is_pending(ForceModel::Proposed));
+        assert!(s.accept(failed(&third, "third")));
+        assert_eq!(message(&s), Some("third"));
+        assert!(!s.accept(failed(&third, "again")), "answered already");
+    }
+}

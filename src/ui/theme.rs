@@ -1,0 +1,157 @@
+//! Colours (16-colour palette only) and line patterns; `NO_COLOR` turns colour off.
+
+use ratatui::style::{Color, Modifier, Style};
+
+use crate::model::ForceModel;
+
+/// How a model's curve is drawn, so that curves stay distinct without colour (the paper's Fig. 5
+/// draws the proposed model solid, Hunt–Crossley dotted and Lankarani–Nikravesh dashed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LinePattern {
+    Solid,
+    Dotted,
+    Dashed,
+    DashDot,
+    LongDash,
+}
+
+impl LinePattern {
+    pub fn of(model: ForceModel) -> LinePattern {
+        match model {
+            ForceModel::Proposed => LinePattern::Solid,
+            ForceModel::HuntCrossley => LinePattern::Dotted,
+            ForceModel::LankaraniNikravesh => LinePattern::Dashed,
+            ForceModel::Quasistatic => LinePattern::DashDot,
+            ForceModel::DryFriction => LinePattern::LongDash,
+        }
+    }
+
+    /// A four-cell sample of the pattern for legends.
+    pub fn sample(self) -> &'static str {
+        match self {
+            LinePattern::Solid => "────",
+            LinePattern::Dotted => "····",
+            LinePattern::Dashed => "╴╴╴╴",
+            LinePattern::DashDot => "─·─·",
+            LinePattern::LongDash => "── ─",
+        }
+    }
+
+    /// Lengths of the pattern's pieces in plot dots: (drawn, gap) pairs; a drawn length of 0 is a dot.
+    pub fn pieces(self) -> &'static [(f64, f64)] {
+        match self {
+            LinePattern::Solid => &[],
+            LinePattern::Dotted => &[(0.0, 3.0)],
+            LinePattern::Dashed => &[(5.0, 4.0)],
+            LinePattern::DashDot => &[(7.0, 3.0), (0.0, 3.0)],
+            LinePattern::LongDash => &[(14.0, 5.0)],
+        }
+    }
+}
+
+/// What a piece of text is, for styling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Normal,
+    Title,
+    Label,
+    Muted,
+    /// The row under the cursor.
+    Cursor,
+    Error,
+    Good,
+    Warning,
+    /// Key names in hints.
+    Key,
+}
+
+/// The palette: 16 ANSI colours, or none at all under `NO_COLOR`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Theme {
+    pub color: bool,
+}
+
+impl Theme {
+    /// Colour unless `NO_COLOR` is set to a non-empty value (https://no-color.org).
+    pub fn from_env() -> Theme {
+        Theme::from_no_color(std::env::var_os("NO_COLOR"))
+    }
+
+    pub fn from_no_color(value: Option<std::ffi::OsString>) -> Theme {
+        Theme {
+            color: value.is_none_or(|v| v.is_empty()),
+        }
+    }
+
+    pub fn style(self, role: Role) -> Style {
+        let base = Style::default();
+        if !self.color {
+            return match role {
+                Role::Title | Role::Key => base.add_modifier(Modifier::BOLD),
+                Role::Cursor => base.add_modifier(Modifier::REVERSED),
+                Role::Error => base.add_modifier(Modifier::BOLD | Modifier::UNDERLINED),
+                Role::Muted => base.add_modifier(Modifier::DIM),
+                Role::Normal | Role::Label | Role::Good | Role::Warning => base,
+            };
+        }
+        match role {
+            Role::Normal => base,
+            Role::Title => base.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+            Role::Label => base.fg(Color::Gray),
+            Role::Muted => base.fg(Color::DarkGray),
+            Role::Cursor => base.add_modifier(Modifier::REVERSED),
+            Role::Error => base.fg(Color::LightRed).add_modifier(Modifier::BOLD),
+            Role::Good => base.fg(Color::Green),
+            Role::Warning => base.fg(Color::Yellow),
+            Role::Key => base.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+        }
+    }
+
+    /// The colour of a model's curve and legend entry.
+    pub fn model_color(self, model: ForceModel) -> Color {
+        if !self.color {
+            return Color::Reset;
+        }
+        match model {
+            ForceModel::Proposed => Color::Yellow,
+            ForceModel::HuntCrossley => Color::LightCyan,
+            ForceModel::LankaraniNikravesh => Color::LightMagenta,
+            ForceModel::Quasistatic => Color::LightBlue,
+            ForceModel::DryFriction => Color::LightGreen,
+        }
+    }
+
+    pub fn model_style(self, model: ForceModel) -> Style {
+        Style::default().fg(self.model_color(model))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_color_is_honoured_only_when_non_empty() {
+        assert!(Theme::from_no_color(None).color);
+        assert!(Theme::from_no_color(Some("".into())).color);
+        let plain = Theme::from_no_color(Some("1".into()));
+        assert!(!plain.color);
+        for role in [Role::Error, Role::Title, Role::Good, Role::Muted] {
+            let s = plain.style(role);
+            assert_eq!((s.fg, s.bg), (None, None), "{role:?}");
+        }
+        assert_eq!(plain.model_color(ForceModel::Proposed), Color::Reset);
+    }
+
+    #[test]
+    fn models_differ_in_colour_and_pattern() {
+        let theme = Theme { color: true };
+        for (i, a) in ForceModel::ALL.iter().enumerate() {
+            for b in &ForceModel::ALL[i + 1..] {
+                assert_ne!(theme.model_color(*a), theme.model_color(*b));
+                assert_ne!(LinePattern::of(*a), LinePattern::of(*b));
+                assert_ne!(LinePattern::of(*a).sample(), LinePattern::of(*b).sample());
+            }
+        }
+    }
+}

@@ -1,0 +1,187 @@
+//! Chart axes in engineering units with round ticks.
+//!
+//! ratatui spreads axis labels evenly over the bounds, so the bounds are chosen as whole multiples
+//! of a round step (1, 2, 2.5 or 5 × 10ᵏ) and every label then sits exactly on its value.
+
+use super::units::{self, Prefix, Unit};
+
+/// An axis ready for a chart: bounds and labels in display units, and the unit's prefix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NiceAxis {
+    /// Bounds in display units (SI value / prefix factor / unit size).
+    pub bounds: [f64; 2],
+    pub labels: Vec<String>,
+    pub prefix: Prefix,
+    /// SI value of one display unit: divide SI values by it to plot them.
+    pub scale: f64,
+}
+
+const MANTISSAS: [f64; 4] = [1.0, 2.0, 2.5, 5.0];
+
+/// An axis covering [lo, hi] (SI) with at most `max_labels` labels (at least 2).
+pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
+    let (lo, hi) = if lo.is_finite() && hi.is_finite() && lo <= hi {
+        (lo, hi)
+    } else {
+        (0.0, 0.0)
+    };
+    let prefix = units::engineering_prefix(lo.abs().max(hi.abs()), unit);
+    let scale = prefix.factor * unit.si_per_unit;
+    let (mut a, mut b) = (lo / scale, hi / scale);
+    if b - a <= f64::EPSILON * a.abs().max(b.abs()).max(1e-300) {
+        // A flat range: open it around the value (or 0..1 for zero).
+        let half = if a == 0.0 { 0.5 } else { a.abs() * 0.5 };
+        a -= half;
+        b += half;
+        if lo >= 0.0 {
+            a = a.max(0.0);
+        }
+    }
+    let max_intervals = max_labels.max(2) - 1;
+    let step = nice_step(a, b, max_intervals);
+    let first = (a / step + 1e-12).floor();
+    let last = (b / step - 1e-12).ceil();
+    let count = (last - first) as usize;
+    let decimals = decimals_of(step);
+    let labels = (0..=count)
+        .map(|i| {
+            let value = (first + i as f64) * step;
+            let value = if value.abs() < step * 1e-9 {
+                0.0
+            } else {
+                value
+            };
+            format!("{value:.decimals$}")
+        })
+        .collect();
+    NiceAxis {
+        bounds: [first * step, last * step],
+        labels,
+        prefix,
+        scale,
+    }
+}
+
+/// The smallest round step whose outward-rounded ticks cover [a, b] in at most `max_intervals`
+/// (two at least when the range crosses zero: zero is always a tick).
+fn nice_step(a: f64, b: f64, max_intervals: usize) -> f64 {
+    let max_intervals = if a < 0.0 && b > 0.0 {
+        max_intervals.max(2)
+    } else {
+        max_intervals
+    };
+    let raw = (b - a) / max_intervals as f64;
+    let first_exponent = raw.log10().floor() as i32;
+    // A step of 10× the raw step always fits; the bound only guards against float surprises.
+    for exponent in first_exponent..first_exponent + 3 {
+        for mantissa in MANTISSAS {
+            let step = mantissa * 10f64.powi(exponent);
+            // The outer ticks round outwards, which can add an interval: check the real count.
+            if step >= raw * (1.0 - 1e-12) && intervals(a, b, step) <= max_intervals as f64 {
+                return step;
+            }
+        }
+    }
+    10f64.powi(first_exponent + 3)
+}
+
+fn intervals(a: f64, b: f64, step: f64) -> f64 {
+    (b / step - 1e-12).ceil() - (a / step + 1e-12).floor()
+}
+
+/// Decimals needed to print multiples of `step` exactly (2.5 → 1, 0.25 → 2, 20 → 0).
+fn decimals_of(step: f64) -> usize {
+    (0..12)
+        .find(|&d| {
+            let scaled = step * 10f64.powi(d);
+            (scaled - scaled.round()).abs() < 1e-6 * scaled.max(1.0)
+        })
+        .unwrap_or(12) as usize
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ui::units::{METRE, METRE_PER_SECOND, NEWTON, SECOND};
+
+    fn values(axis: &NiceAxis) -> Vec<f64> {
+        axis.labels.iter().map(|l| l.parse().unwrap()).collect()
+    }
+
+    /// Labels are evenly spaced over the bounds, so they must be the arithmetic sequence.
+    fn assert_labels_on_ticks(axis: &NiceAxis) {
+        let v = values(axis);
+        let n = v.len() - 1;
+        for (i, value) in v.iter().enumerate() {
+            let expected = axis.bounds[0] + (axis.bounds[1] - axis.bounds[0]) * i as f64 / n as f64;
+            assert!((value - expected).abs() < 1e-9 * axis.bounds[1].abs().max(1.0));
+        }
+    }
+
+    #[test]
+    fn micrometres_for_fig5_displacements() {
+        let axis = nice_axis(0.0, 9.112e-6, METRE, 6);
+        assert_eq!(axis.prefix.symbol, "µ");
+        assert_eq!(axis.labels, ["0", "2", "4", "6", "8", "10"]);
+        assert_eq!(axis.bounds, [0.0, 10.0]);
+        assert!(axis.bounds[1] * axis.scale >= 9.112e-6);
+        assert_labels_on_ticks(&axis);
+    }
+
+    #[test]
+    fn velocities_span_zero() {
+        let axis = nice_axis(-0.2134, 0.3, METRE_PER_SECOND, 8);
+        assert_eq!(axis.prefix.symbol, "m");
+        assert_labels_on_ticks(&axis);
+        assert!(values(&axis).contains(&0.0));
+        assert!(axis.bounds[0] * axis.scale <= -0.2134 && axis.bounds[1] * axis.scale >= 0.3);
+    }
+
+    #[test]
+    fn label_budget_is_respected() {
+        for max in 2..10 {
+            for (lo, hi, unit) in [
+                (0.0, 403.3, NEWTON),
+                (0.0, 8.92e-5, SECOND),
+                (-0.21, 0.3, METRE_PER_SECOND),
+                (0.0, 4.0e4, NEWTON),
+                (1.0, 1.0, NEWTON),
+            ] {
+                let axis = nice_axis(lo, hi, unit, max);
+                // A range across zero needs three labels at least: zero is a tick.
+                let budget = if lo < 0.0 && hi > 0.0 {
+                    max.max(3)
+                } else {
+                    max
+                };
+                assert!(
+                    axis.labels.len() <= budget && axis.labels.len() >= 2,
+                    "{axis:?}"
+                );
+                assert!(
+                    axis.bounds[0] * axis.scale <= lo + 1e-15,
+                    "{lo} {hi} {max}: {axis:?}"
+                );
+                assert!(axis.bounds[1] * axis.scale >= hi - 1e-15);
+                assert_labels_on_ticks(&axis);
+            }
+        }
+    }
+
+    #[test]
+    fn steps_of_two_and_a_half_print_their_decimal() {
+        let axis = nice_axis(0.0, 0.1, NEWTON, 5);
+        assert_eq!(axis.prefix.symbol, "m");
+        assert_eq!(axis.labels, ["0", "25", "50", "75", "100"]);
+        let axis = nice_axis(0.0, 7.4, NEWTON, 4);
+        assert_eq!(axis.labels, ["0.0", "2.5", "5.0", "7.5"]);
+    }
+
+    #[test]
+    fn degenerate_ranges_still_give_an_axis() {
+        let axis = nice_axis(0.0, 0.0, NEWTON, 5);
+        assert!(axis.bounds[1] > axis.bounds[0]);
+        let axis = nice_axis(f64::NAN, 1.0, NEWTON, 5);
+        assert!(axis.bounds[1] > axis.bounds[0]);
+    }
+}

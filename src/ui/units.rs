@@ -1,0 +1,393 @@
+//! Quantities at the UI edge: parsing what the user types (`200G`, `2e11`, `10 mm`, `0.3 m/s`)
+//! into SI values, and formatting SI values in engineering units (µm, µs, N, GPa …).
+
+/// A decimal SI prefix.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prefix {
+    pub symbol: &'static str,
+    pub factor: f64,
+}
+
+pub const PICO: Prefix = Prefix {
+    symbol: "p",
+    factor: 1e-12,
+};
+pub const NANO: Prefix = Prefix {
+    symbol: "n",
+    factor: 1e-9,
+};
+pub const MICRO: Prefix = Prefix {
+    symbol: "µ",
+    factor: 1e-6,
+};
+pub const MILLI: Prefix = Prefix {
+    symbol: "m",
+    factor: 1e-3,
+};
+pub const NONE: Prefix = Prefix {
+    symbol: "",
+    factor: 1.0,
+};
+pub const KILO: Prefix = Prefix {
+    symbol: "k",
+    factor: 1e3,
+};
+pub const MEGA: Prefix = Prefix {
+    symbol: "M",
+    factor: 1e6,
+};
+pub const GIGA: Prefix = Prefix {
+    symbol: "G",
+    factor: 1e9,
+};
+pub const TERA: Prefix = Prefix {
+    symbol: "T",
+    factor: 1e12,
+};
+
+/// The engineering prefixes (powers of 1000), smallest first.
+pub const ENGINEERING: [Prefix; 9] = [PICO, NANO, MICRO, MILLI, NONE, KILO, MEGA, GIGA, TERA];
+
+/// Prefix letters accepted on input, with the ASCII `u` and the Greek `μ` for micro.
+const INPUT_PREFIXES: [(&str, f64); 10] = [
+    ("p", 1e-12),
+    ("n", 1e-9),
+    ("µ", 1e-6),
+    ("μ", 1e-6),
+    ("u", 1e-6),
+    ("m", 1e-3),
+    ("k", 1e3),
+    ("M", 1e6),
+    ("G", 1e9),
+    ("T", 1e12),
+];
+
+/// A unit of measure: its symbol, other spellings accepted on input, and its size in SI base units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Unit {
+    pub symbol: &'static str,
+    pub aliases: &'static [&'static str],
+    /// SI value of one unit (1e-3 for the gram, whose SI base is the kilogram).
+    pub si_per_unit: f64,
+    /// Whether engineering prefixes are shown on output (not for kg/m³).
+    pub prefixable: bool,
+}
+
+pub const DIMENSIONLESS: Unit = Unit {
+    symbol: "",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: false,
+};
+pub const METRE: Unit = Unit {
+    symbol: "m",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+pub const SECOND: Unit = Unit {
+    symbol: "s",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+pub const GRAM: Unit = Unit {
+    symbol: "g",
+    aliases: &[],
+    si_per_unit: 1e-3,
+    prefixable: true,
+};
+pub const NEWTON: Unit = Unit {
+    symbol: "N",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+pub const PASCAL: Unit = Unit {
+    symbol: "Pa",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+pub const JOULE: Unit = Unit {
+    symbol: "J",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+pub const METRE_PER_SECOND: Unit = Unit {
+    symbol: "m/s",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+pub const KG_PER_CUBIC_METRE: Unit = Unit {
+    symbol: "kg/m³",
+    aliases: &["kg/m3", "kg/m^3"],
+    si_per_unit: 1.0,
+    prefixable: false,
+};
+
+/// Parses `text` as a quantity of `unit` and returns its SI value.
+///
+/// A bare number is in SI base units (`2e11` Pa, `0.01` m, `0.033` kg). A number may carry a unit
+/// (`10 mm`, `0.3 m/s`, `200 GPa`, `33 g`) or just a prefix on the SI base unit (`200G`, `10m` is
+/// ten metres on a length but `300m` is 0.3 on a velocity). Dimensionless values accept `%`.
+pub fn parse(text: &str, unit: Unit) -> Result<f64, String> {
+    let text = text.trim();
+    if text.is_empty() {
+        return Err("empty: type a number".into());
+    }
+    let (number, rest) = split_number(text).ok_or_else(|| format!("'{text}' is not a number"))?;
+    let factor = suffix_factor(rest.trim(), unit)?;
+    let value = number * factor;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!("'{text}' is out of range"))
+    }
+}
+
+/// The longest leading part of `text` that is a finite decimal number, and the rest.
+fn split_number(text: &str) -> Option<(f64, &str)> {
+    let numeric_prefix_len = text
+        .char_indices()
+        .take_while(|(_, c)| c.is_ascii_digit() || matches!(c, '+' | '-' | '.' | 'e' | 'E'))
+        .map(|(i, c)| i + c.len_utf8())
+        .last()?;
+    (1..=numeric_prefix_len)
+        .rev()
+        .filter(|&end| text.is_char_boundary(end))
+        .find_map(|end| {
+            let number: f64 = text[..end].parse().ok()?;
+            number.is_finite().then_some((number, &text[end..]))
+        })
+}
+
+/// The factor a unit suffix applies to the number, relative to SI base units.
+fn suffix_factor(suffix: &str, unit: Unit) -> Result<f64, String> {
+    if suffix.is_empty() {
+        return Ok(1.0);
+    }
+    let symbols = std::iter::once(unit.symbol)
+        .chain(unit.aliases.iter().copied())
+        .filter(|s| !s.is_empty());
+    for symbol in symbols {
+        if suffix == symbol {
+            return Ok(unit.si_per_unit);
+        }
+        if let Some(head) = suffix.strip_suffix(symbol)
+            && let Some(factor) = input_prefix(head)
+        {
+            return Ok(factor * unit.si_per_unit);
+        }
+    }
+    if let Some(factor) = input_prefix(suffix) {
+        return Ok(factor);
+    }
+    if unit.symbol.is_empty() && suffix == "%" {
+        return Ok(0.01);
+    }
+    let expected = if unit.symbol.is_empty() {
+        "no unit".to_string()
+    } else {
+        format!("{} or a bare number in SI", unit.symbol)
+    };
+    Err(format!(
+        "unknown unit '{suffix}' (expected {expected}, with an optional prefix p n µ m k M G T)"
+    ))
+}
+
+fn input_prefix(head: &str) -> Option<f64> {
+    INPUT_PREFIXES
+        .iter()
+        .find(|(symbol, _)| *symbol == head)
+        .map(|&(_, factor)| factor)
+}
+
+/// `value` rounded to `sig` significant digits, without trailing zeros; scientific notation
+/// outside 1e-4 ≤ |value| < 1e7. Non-finite values print as `—` (never NaN on screen).
+pub fn sig(value: f64, sig: usize) -> String {
+    if !value.is_finite() {
+        return if value.is_infinite() {
+            if value > 0.0 { "∞" } else { "−∞" }.into()
+        } else {
+            "—".into()
+        };
+    }
+    if value == 0.0 {
+        return "0".into();
+    }
+    let sig = sig.max(1);
+    let magnitude = value.abs().log10().floor() as i32;
+    if !(-4..7).contains(&magnitude) {
+        let text = format!("{:.*e}", sig - 1, value);
+        return match text.split_once('e') {
+            Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa)),
+            None => text,
+        };
+    }
+    let decimals = (sig as i32 - 1 - magnitude).max(0) as usize;
+    let text = format!("{value:.decimals$}");
+    // Rounding may carry into a new digit (9.9996 → 10.000); trimming zeros handles both.
+    trim_zeros(&text).to_string()
+}
+
+fn trim_zeros(text: &str) -> &str {
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        text
+    }
+}
+
+/// `value_si` shown in `unit` with a fixed `prefix`, e.g. `10 mm`.
+pub fn with_prefix(value_si: f64, unit: Unit, prefix: Prefix, digits: usize) -> String {
+    let number = sig(value_si / (prefix.factor * unit.si_per_unit), digits);
+    join(&number, prefix.symbol, unit.symbol)
+}
+
+/// The engineering prefix that brings `magnitude_si` (in SI base units) into [1, 1000) of `unit`.
+pub fn engineering_prefix(magnitude_si: f64, unit: Unit) -> Prefix {
+    if !unit.prefixable || !magnitude_si.is_finite() || magnitude_si == 0.0 {
+        return NONE;
+    }
+    let in_unit = magnitude_si.abs() / unit.si_per_unit;
+    ENGINEERING
+        .iter()
+        .rev()
+        .find(|p| in_unit >= p.factor * (1.0 - 1e-12))
+        .copied()
+        .unwrap_or(PICO)
+}
+
+/// `value_si` in `unit` with the engineering prefix that suits it, e.g. `32.67 g`, `4.345 GPa`.
+pub fn engineering(value_si: f64, unit: Unit, digits: usize) -> String {
+    if !value_si.is_finite() {
+        return sig(value_si, digits);
+    }
+    let prefix = engineering_prefix(value_si, unit);
+    // Rounding can push the mantissa to 1000 (999.96 → "1000"): move up one prefix then.
+    let mantissa = value_si / (prefix.factor * unit.si_per_unit);
+    let rounded: f64 = sig(mantissa, digits).parse().unwrap_or(mantissa);
+    if rounded.abs() >= 1000.0 && unit.prefixable {
+        let bigger = ENGINEERING
+            .iter()
+            .find(|p| p.factor > prefix.factor)
+            .copied()
+            .unwrap_or(prefix);
+        return with_prefix(value_si, unit, bigger, digits);
+    }
+    with_prefix(value_si, unit, prefix, digits)
+}
+
+fn join(number: &str, prefix: &str, symbol: &str) -> String {
+    if prefix.is_empty() && symbol.is_empty() {
+        number.to_string()
+    } else {
+        format!("{number} {prefix}{symbol}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() <= 1e-12 * b.abs()
+    }
+
+    #[test]
+    fn issue_examples_parse_to_si() {
+        assert!(close(parse("200G", PASCAL).unwrap(), 2e11));
+        assert!(close(parse("2e11", PASCAL).unwrap(), 2e11));
+        assert!(close(parse("10 mm", METRE).unwrap(), 0.01));
+        assert!(close(parse("0.3 m/s", METRE_PER_SECOND).unwrap(), 0.3));
+    }
+
+    #[test]
+    fn units_prefixes_and_aliases() {
+        assert!(close(parse("200 GPa", PASCAL).unwrap(), 2e11));
+        assert!(close(parse("780MPa", PASCAL).unwrap(), 7.8e8));
+        assert!(close(parse("2.3 µm", METRE).unwrap(), 2.3e-6));
+        assert!(close(parse("2.3um", METRE).unwrap(), 2.3e-6));
+        assert!(close(parse("2.3 μm", METRE).unwrap(), 2.3e-6));
+        assert!(close(parse("300 mm/s", METRE_PER_SECOND).unwrap(), 0.3));
+        assert!(close(parse("300m", METRE_PER_SECOND).unwrap(), 0.3));
+        // On a length, a lone "m" is the metre, not milli.
+        assert!(close(parse("10m", METRE).unwrap(), 10.0));
+        assert!(close(parse("33 g", GRAM).unwrap(), 0.033));
+        assert!(close(parse("1 kg", GRAM).unwrap(), 1.0));
+        assert!(close(parse("0.5", GRAM).unwrap(), 0.5));
+        assert!(close(
+            parse("7800 kg/m3", KG_PER_CUBIC_METRE).unwrap(),
+            7800.0
+        ));
+        assert!(close(parse("7.8k", KG_PER_CUBIC_METRE).unwrap(), 7800.0));
+        assert!(close(parse("60%", DIMENSIONLESS).unwrap(), 0.6));
+        assert!(close(parse(" -1.5E-3 ", DIMENSIONLESS).unwrap(), -1.5e-3));
+    }
+
+    #[test]
+    fn bad_input_says_why() {
+        assert_eq!(parse("", METRE).unwrap_err(), "empty: type a number");
+        assert_eq!(parse("abc", METRE).unwrap_err(), "'abc' is not a number");
+        assert!(
+            parse("10 furlongs", METRE)
+                .unwrap_err()
+                .starts_with("unknown unit 'furlongs' (expected m")
+        );
+        assert!(parse("1 kg", PASCAL).unwrap_err().contains("unknown unit"));
+        assert!(
+            parse("1e308 T", PASCAL)
+                .unwrap_err()
+                .contains("out of range")
+        );
+        assert!(parse("inf", METRE).is_err());
+        assert!(parse("NaN", METRE).is_err());
+        assert!(parse("5 %", METRE).is_err());
+    }
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(sig(0.3, 6), "0.3");
+        assert_eq!(sig(9.112345, 4), "9.112");
+        assert_eq!(sig(403.24, 4), "403.2");
+        assert_eq!(sig(9.99996, 4), "10");
+        assert_eq!(sig(-0.21347, 3), "-0.213");
+        assert_eq!(sig(1.465e10, 4), "1.465e10");
+        assert_eq!(sig(2.5e-6, 3), "2.5e-6");
+        assert_eq!(sig(0.0, 3), "0");
+        assert_eq!(sig(f64::NAN, 3), "—");
+        assert_eq!(sig(f64::INFINITY, 3), "∞");
+    }
+
+    #[test]
+    fn engineering_units() {
+        assert_eq!(engineering(9.11e-6, METRE, 4), "9.11 µm");
+        assert_eq!(engineering(8.9e-5, SECOND, 3), "89 µs");
+        assert_eq!(engineering(0.0326725, GRAM, 4), "32.67 g");
+        assert_eq!(engineering(1.0, GRAM, 4), "1 kg");
+        assert_eq!(engineering(4.3452e9, PASCAL, 4), "4.345 GPa");
+        assert_eq!(engineering(999.96, NEWTON, 4), "1 kN");
+        assert_eq!(engineering(0.3, METRE_PER_SECOND, 4), "300 mm/s");
+        assert_eq!(engineering(7800.0, KG_PER_CUBIC_METRE, 4), "7800 kg/m³");
+        assert_eq!(engineering(0.6, DIMENSIONLESS, 4), "0.6");
+        assert_eq!(with_prefix(0.01, METRE, MILLI, 6), "10 mm");
+        assert_eq!(with_prefix(2e11, PASCAL, GIGA, 6), "200 GPa");
+    }
+
+    #[test]
+    fn formatted_values_parse_back() {
+        for (value, unit) in [
+            (2.3e-6, METRE),
+            (0.0326725, GRAM),
+            (7.8e8, PASCAL),
+            (0.21, METRE_PER_SECOND),
+            (7800.0, KG_PER_CUBIC_METRE),
+        ] {
+            let text = engineering(value, unit, 6);
+            assert!(close(parse(&text, unit).unwrap(), value), "{text}");
+        }
+    }
+}

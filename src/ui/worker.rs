@@ -1,0 +1,138 @@
+//! Solves impacts off the UI thread, so a slow solve (a stiff method at a tight tolerance) never
+//! freezes input. Jobs queued for a model are superseded by newer ones for the same model.
+
+use std::any::Any;
+use std::panic::{self, AssertUnwindSafe};
+use std::sync::Arc;
+use std::sync::mpsc::{self, Receiver, Sender};
+use std::thread;
+use std::time::Instant;
+
+use crate::model::impact::solve_impact;
+
+use super::solutions::{Job, Outcome};
+
+/// Solves one job on the calling thread.
+pub fn solve(job: &Job) -> Outcome {
+    let start = Instant::now();
+    let result = solve_impact(job.model, &job.params, &job.options)
+        .map(Arc::new)
+        .map_err(|e| e.to_string());
+    Outcome {
+        generation: job.generation,
+        model: job.model,
+        result,
+        elapsed: start.elapsed(),
+    }
+}
+
+/// A report of the worker: an outcome, or the message of a solver panic (a bug; the worker stops).
+pub type Report = Result<Outcome, String>;
+
+/// Handle of the background solver thread; dropping it ends the thread after the current solve.
+pub struct Worker {
+    jobs: Sender<Job>,
+}
+
+impl Worker {
+    /// Starts the thread; `deliver` receives every report and returns false once nobody listens.
+    pub fn spawn(deliver: impl Fn(Report) -> bool + Send + 'static) -> std::io::Result<Worker> {
+        let (jobs, queue) = mpsc::channel();
+        thread::Builder::new()
+            .name("hertz-solver".into())
+            .spawn(move || serve(&queue, deliver))?;
+        Ok(Worker { jobs })
+    }
+
+    /// Queues a job; returns false if the worker has stopped.
+    pub fn submit(&self, job: Job) -> bool {
+        self.jobs.send(job).is_ok()
+    }
+}
+
+fn serve(incoming: &Receiver<Job>, deliver: impl Fn(Report) -> bool) {
+    let mut queue: Vec<Job> = Vec::new();
+    loop {
+        if queue.is_empty() {
+            match incoming.recv() {
+                Ok(job) => queue.push(job),
+                Err(_) => return,
+            }
+        }
+        for job in incoming.try_iter() {
+            supersede(&mut queue, job);
+        }
+        let job = queue.remove(0);
+        let report = panic::catch_unwind(AssertUnwindSafe(|| solve(&job))).map_err(|payload| {
+            format!(
+                "the solver panicked on {} ({}): this is a bug",
+                job.model,
+                panic_message(payload.as_ref())
+            )
+        });
+        let stop = report.is_err();
+        if !deliver(report) || stop {
+            return;
+        }
+    }
+}
+
+/// Adds `job` to the queue, dropping a queued job of the same model (it is stale).
+pub fn supersede(queue: &mut Vec<Job>, job: Job) {
+    queue.retain(|queued| queued.model != job.model);
+    queue.push(job);
+}
+
+fn panic_message(payload: &(dyn Any + Send)) -> String {
+    if let Some(s) = payload.downcast_ref::<&str>() {
+        (*s).to_string()
+    } else if let Some(s) = payload.downcast_ref::<String>() {
+        s.clone()
+    } else {
+        "no message".into()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::ForceModel;
+    use crate::model::impact::SolveOptions;
+    use crate::model::power_law::PowerLaw;
+
+    fn job(generation: u64, model: ForceModel) -> Job {
+        Job {
+            generation,
+            model,
+            params: crate::model::ImpactParams {
+                mass: 0.0327,
+                law: PowerLaw {
+                    k: 1.465e10,
+                    n: 1.5,
+                },
+                v0: 0.3,
+                restitution: 0.6,
+                plastic_indentation: 2.3e-6,
+            },
+            options: SolveOptions::default(),
+        }
+    }
+
+    #[test]
+    fn newer_jobs_replace_queued_ones_of_the_same_model() {
+        let mut queue = vec![
+            job(1, ForceModel::Proposed),
+            job(2, ForceModel::HuntCrossley),
+        ];
+        supersede(&mut queue, job(3, ForceModel::Proposed));
+        let generations: Vec<u64> = queue.iter().map(|j| j.generation).collect();
+        assert_eq!(generations, [2, 3]);
+    }
+
+    #[test]
+    fn panic_payloads_become_messages() {
+        assert_eq!(panic_message(&"boom"), "boom");
+        assert_eq!(panic_message(&String::from("bang")), "bang");
+        assert_eq!(panic_message(&42), "no message");
+    }
+}
