@@ -1,4 +1,4 @@
-//! Line contact of parallel cylinders and of a cylinder on a plane: eqs 11–14 and the power-law fit.
+//! Line contact of parallel cylinders and of a cylinder on a plane (eqs 11–14), and its fitted law.
 
 mod approach;
 mod fit;

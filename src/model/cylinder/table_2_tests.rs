@@ -135,20 +135,22 @@ fn cylinder_on_plane_at_one_metre_per_second() {
     assert!(fit.max_rel_error < 1e-3, "{fit:?}");
 
     // Not reproducible: the column's F_max = 4.779e4 N contradicts its own k = 1.91e9,
-    // n = 1.081 and x_max = 3.535e-5 m. Any power law has F_max·x_max = (n+1)/2·m·v₀²
-    // = 1.0405 J here, while the table's product is 4.779e4 × 3.535e-5 = 1.689 J (1.62 times
-    // more). The table's p₀ = 914e6 Pa, v₀y = 0.885 m/s and v₀p = 5.340 m/s follow from
-    // F_max = 4.779e4 N by eq 12 with R = 0.02 m, and its b = 2.353e-4 m from the same F_max by
-    // eq 11 with R = 0.01 m (the two-cylinder reduced radius, although R₂ → ∞ here). So we check
-    // these against the values the table's own k, n and x_max imply, with eqs 11–12 at R = 0.02:
-    // F_max = 2.943e4 N (ours 2.948e4), b = 2.612e-4 m (ours 2.614e-4), p₀ = 717.5e6 Pa
-    // (ours 718.0e6), v₀y = 1.41 m/s (ours 1.409), v₀p = 8.50 m/s (ours 8.51).
+    // n = 1.081 and x_max = 3.535e-5 m. Eq 6 gives F_max = k·x_maxⁿ = 2.943e4 N, and any power
+    // law has F_max·x_max = (n+1)/2·m·v₀² = 1.0405 J here, while the table's product is
+    // 4.779e4 × 3.535e-5 = 1.689 J (1.62 times more). The table's p₀ = 914e6 Pa,
+    // v₀y = 0.885 m/s and v₀p = 5.340 m/s follow from F_max = 4.779e4 N by eq 12 with
+    // R = 0.02 m, and its b = 2.353e-4 m from the same F_max by eq 11 with R = 0.01 m (the
+    // two-cylinder reduced radius, although R₂ → ∞ here). So we check these against the values
+    // the table's own k, n and x_max imply, with eqs 11–12 at R = 0.02 m: F_max = 2.943e4 N
+    // (ours 2.948e4), b = 2.612e-4 m (ours 2.614e-4), p₀ = 717.5e6 Pa (ours 718.0e6),
+    // v₀y = 1.411 m/s (ours 1.409), v₀p = 8.52 m/s (ours 8.51).
     let paper_law = PowerLaw {
         k: 1.91e9,
         n: 1.081,
     };
     let implied_f_max = (paper_law.n + 1.0) / 2.0 * 1.0 / 3.535e-5;
     assert_close("F_max·x_max (paper)", 4.779e4 * 3.535e-5, 1.689, 1e-3);
+    assert_close("k·x_maxⁿ (paper)", paper_law.force(3.535e-5), 2.943e4, 1e-3);
     assert!(
         rel(4.779e4, implied_f_max) > 0.6,
         "the table's F_max is inconsistent"
