@@ -55,13 +55,13 @@ pub struct SolveArgs {
     #[arg(long, value_name = "METHOD", default_value = "auto")]
     pub method: MethodChoice,
     /// Relative tolerance of the adaptive methods (default 1e-8).
-    #[arg(long, value_name = "R", value_parser = positive_number)]
+    #[arg(long, value_name = "R", value_parser = positive_number, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// Absolute tolerance of the adaptive methods, in scaled variables (default 1e-10).
-    #[arg(long, value_name = "A", value_parser = positive_number)]
+    #[arg(long, value_name = "A", value_parser = positive_number, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Step of the fixed-step methods, s (default: the elastic contact time / 1000).
-    #[arg(long, value_name = "S", value_parser = positive_number)]
+    #[arg(long, value_name = "S", value_parser = positive_number, allow_hyphen_values = true)]
     pub dt: Option<f64>,
     /// Number of trajectory samples printed by --format csv.
     #[arg(long, value_name = "N", default_value_t = 400, value_parser = clap::value_parser!(u32).range(2..=1_000_000))]

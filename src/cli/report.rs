@@ -2,7 +2,9 @@
 
 use super::layout::columns;
 use super::solve::{ImpactRow, SolveReport};
-use super::units::{NOT_A_NUMBER, count, engineering, scientific, significant};
+use super::units::{
+    NOT_A_NUMBER, compact, compact_number, count, engineering, scientific, significant,
+};
 use crate::model::body::{Body, Shape};
 use crate::model::quasistatic::ContactGeometry;
 use crate::model::{Quasistatic, Scene};
@@ -26,16 +28,16 @@ pub fn render(report: &SolveReport) -> String {
 fn body_line(body: &Body) -> String {
     let m = &body.material;
     let geometry = match body.shape {
-        Shape::Sphere { radius } => format!("sphere R = {}", engineering(radius, "m")),
+        Shape::Sphere { radius } => format!("sphere R = {}", compact(radius, "m")),
         Shape::Cylinder { radius, length } => format!(
             "cylinder R = {}, L = {}",
-            engineering(radius, "m"),
-            engineering(length, "m")
+            compact(radius, "m"),
+            compact(length, "m")
         ),
         Shape::Plane => "plane".to_string(),
     };
     let mass = match (body.mass, body.shape) {
-        (Some(mass), _) => format!(", m = {}", engineering(mass * 1e3, "g")),
+        (Some(mass), _) => format!(", m = {}", compact(mass * 1e3, "g")),
         (None, Shape::Plane) => String::new(),
         (None, _) => format!(
             ", m = {} (from density)",
@@ -45,10 +47,10 @@ fn body_line(body: &Body) -> String {
     format!(
         "{geometry}{mass}; {} (E = {}, ν = {}, σy = {}, ρ = {} kg/m³)",
         m.name,
-        engineering(m.youngs_modulus, "Pa"),
-        significant(m.poisson_ratio, 3),
-        engineering(m.yield_stress, "Pa"),
-        significant(m.density, 4)
+        compact(m.youngs_modulus, "Pa"),
+        compact_number(m.poisson_ratio, 4),
+        compact(m.yield_stress, "Pa"),
+        compact_number(m.density, 6)
     )
 }
 
@@ -61,9 +63,9 @@ fn scene_section(scene: &Scene) -> String {
             "impact".to_string(),
             format!(
                 "v0 = {}, e = {}, x_pl = {}",
-                engineering(i.v0, "m/s"),
-                significant(i.restitution, 4),
-                engineering(i.plastic_indentation, "m")
+                compact(i.v0, "m/s"),
+                compact_number(i.restitution, 4),
+                compact(i.plastic_indentation, "m")
             ),
         ],
     ];
@@ -75,29 +77,27 @@ fn row(label: &str, value: String, note: &str) -> Vec<String> {
 }
 
 fn quasistatic_section(q: &Quasistatic, v0: f64) -> String {
-    let k_unit = format!(
-        "N/m^{}",
-        significant(q.n, 4)
-            .trim_end_matches('0')
-            .trim_end_matches('.')
-    );
+    let k_unit = format!("N/m^{}", compact_number(q.n, 4));
+    let point = matches!(q.geometry, ContactGeometry::Point { .. });
+    let (k_note, notes, p_note) = if point {
+        ("F = k·x^1.5, eq 2", ["eq 5", "eq 6", "eq 7"], "eq 9")
+    } else {
+        let general = "fitted law, general n";
+        ("F = k·xⁿ: the fitted a", [general; 3], "eq 12")
+    };
     let mut rows = vec![
         row("η = η1 + η2", scientific(q.eta, "m²/N"), "eq 3"),
-        row(
-            "k",
-            scientific(q.k, &k_unit),
-            "F = k·xⁿ, eq 2 or the fitted a",
-        ),
+        row("k", scientific(q.k, &k_unit), k_note),
         row("n", significant(q.n, 4), ""),
         row(
             "reduced mass",
             engineering(q.reduced_mass * 1e3, "g"),
             "eq 4",
         ),
-        row("x_max", engineering(q.x_max, "m"), "eq 5"),
-        row("F_max", engineering(q.f_max, "N"), "eq 6"),
-        row("contact time", engineering(q.t_contact, "s"), "eq 7"),
-        row("p0 at F_max", engineering(q.p_max, "Pa"), "eq 9 / 12"),
+        row("x_max", engineering(q.x_max, "m"), notes[0]),
+        row("F_max", engineering(q.f_max, "N"), notes[1]),
+        row("contact time", engineering(q.t_contact, "s"), notes[2]),
+        row("p0 at F_max", engineering(q.p_max, "Pa"), p_note),
     ];
     match q.geometry {
         ContactGeometry::Point { contact_radius } => {

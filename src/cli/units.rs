@@ -40,6 +40,30 @@ pub fn engineering(value: f64, unit: &str) -> String {
     format!("{} {prefix}{unit}", significant(mantissa, 4))
 }
 
+/// [`engineering`] without trailing zeros, for inputs as the user wrote them: "10 mm", "2.3 µm".
+pub fn compact(value: f64, unit: &str) -> String {
+    let text = engineering(value, unit);
+    match text.split_once(' ') {
+        Some((number, rest)) if number.contains('.') => {
+            format!(
+                "{} {rest}",
+                number.trim_end_matches('0').trim_end_matches('.')
+            )
+        }
+        _ => text,
+    }
+}
+
+/// `value` with at most `digits` significant digits and no trailing zeros: 0.3, 0.6, 1.09.
+pub fn compact_number(value: f64, digits: i32) -> String {
+    let text = significant(value, digits);
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
 /// `value` in scientific notation with 4 significant digits: 1.465e10.
 pub fn scientific(value: f64, unit: &str) -> String {
     if !value.is_finite() {
@@ -92,6 +116,18 @@ mod tests {
         assert_eq!(engineering(999.96, "N"), "1.000 kN");
         assert_eq!(engineering(0.0, "J"), "0 J");
         assert_eq!(engineering(f64::NAN, "J"), NOT_A_NUMBER);
+    }
+
+    #[test]
+    fn compact_drops_trailing_zeros() {
+        assert_eq!(compact(0.01, "m"), "10 mm");
+        assert_eq!(compact(2.3e-6, "m"), "2.3 µm");
+        assert_eq!(compact(2e11, "Pa"), "200 GPa");
+        assert_eq!(compact(0.0, "m"), "0 m");
+        assert_eq!(compact_number(0.3, 4), "0.3");
+        assert_eq!(compact_number(1.5, 4), "1.5");
+        assert_eq!(compact_number(7800.0, 4), "7800");
+        assert_eq!(compact_number(1.0, 4), "1");
     }
 
     #[test]

@@ -57,10 +57,13 @@ impl Scene {
         ContactPair::new(self.body1.clone(), self.body2.clone())
     }
 
-    /// The quasistatic estimate (eqs 1–14) at the scene's v₀.
+    /// The quasistatic estimate (eqs 1–14) at the scene's v₀. Inputs that are each valid but
+    /// together overflow double precision (v₀ = 1e200 m/s) are an error, never an infinite result.
     pub fn quasistatic(&self) -> Result<Quasistatic, ModelError> {
         self.impact.validate()?;
-        quasistatic::evaluate(&self.pair()?, self.impact.v0)
+        let q = quasistatic::evaluate(&self.pair()?, self.impact.v0)?;
+        require_finite_results(&q)?;
+        Ok(q)
     }
 
     /// Inputs of the impact solver: the quasistatic law F = k·xⁿ, the reduced mass and the impact conditions.
@@ -72,6 +75,34 @@ impl Scene {
             restitution: self.impact.restitution,
             plastic_indentation: self.impact.plastic_indentation,
         }
+    }
+}
+
+/// Refuses an estimate with a non-finite or non-positive number, naming the first one.
+fn require_finite_results(q: &Quasistatic) -> Result<(), ModelError> {
+    let o = &q.onset;
+    let values = [
+        ("eta", q.eta),
+        ("k", q.k),
+        ("reduced_mass", q.reduced_mass),
+        ("x_max", q.x_max),
+        ("f_max", q.f_max),
+        ("t_contact", q.t_contact),
+        ("p_max", q.p_max),
+        ("v_yield", o.v_yield),
+        ("v_plastic", o.v_plastic),
+        ("v_yield_mean_pressure", o.v_yield_mean_pressure),
+        ("v_plastic_mean_pressure", o.v_plastic_mean_pressure),
+        ("v_wave_limit", o.v_wave_limit),
+    ];
+    match values.iter().find(|(_, v)| !(v.is_finite() && *v > 0.0)) {
+        None => Ok(()),
+        Some((name, value)) => Err(ModelError::OutOfDomain {
+            formula: "quasistatic estimate",
+            detail: format!(
+                "{name} = {value} is out of double-precision range; check the units of v0, radii, masses and moduli"
+            ),
+        }),
     }
 }
 
@@ -168,6 +199,19 @@ mod tests {
                 .to_string()
                 .starts_with("impact.restitution must be in (0, 1]")
         );
+    }
+
+    #[test]
+    fn overflowing_inputs_are_an_error_not_infinity() {
+        let mut scene = fig5_scene();
+        scene.impact.v0 = 1e200;
+        let err = scene.quasistatic().unwrap_err().to_string();
+        assert!(
+            err.starts_with("quasistatic estimate: x_max = inf is out of double-precision range"),
+            "{err}"
+        );
+        scene.impact.v0 = 0.3;
+        assert!(scene.quasistatic().is_ok());
     }
 
     #[test]
