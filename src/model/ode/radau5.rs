@@ -573,10 +573,10 @@ mod tests {
         }
         // And T·T⁻¹ = I.
         let id = mul(&T, &TI);
-        for i in 0..3 {
-            for j in 0..3 {
+        for (i, row) in id.iter().enumerate() {
+            for (j, value) in row.iter().enumerate() {
                 let want = if i == j { 1.0 } else { 0.0 };
-                assert!((id[i][j] - want).abs() < 1e-15);
+                assert!((value - want).abs() < 1e-15, "({i},{j}): {value}");
             }
         }
     }
