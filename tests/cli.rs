@@ -498,7 +498,7 @@ fn user_errors_exit_2_with_a_message() {
         "body1.shape=cylinder",
     ]);
     assert!(
-        err.contains("missing key `body1.length` (a cylinder needs it)"),
+        err.ends_with("(--set body1.shape): missing key `body1.length` (a cylinder needs it)\n"),
         "{err}"
     );
     // The explorer refuses a bad scene before it touches the terminal.

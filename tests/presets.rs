@@ -321,11 +321,11 @@ fn unknown_key_names_file_line_and_key() {
 
 #[test]
 fn missing_key_names_file_line_and_key() {
-    // The radius of a sphere is missing: the message points at its [body1] table (line 3).
+    // The radius of a sphere is missing: the message points at the shape that needs it (line 4).
     let err = scene_error(&VALID.replace("radius = 0.01\n", ""));
     assert_eq!(
         err,
-        "test.toml:3:2: missing key `body1.radius` (a sphere needs it)"
+        "test.toml:4:1: missing key `body1.radius` (a sphere needs it)"
     );
     let err = scene_error(&VALID.replace("plastic_indentation = 2.3e-6\n", ""));
     assert!(
@@ -382,7 +382,7 @@ fn shape_keys_are_checked_both_ways() {
     let err = scene_error(&VALID.replace("shape = \"sphere\"", "shape = \"cylinder\""));
     assert_eq!(
         err,
-        "test.toml:3:2: missing key `body1.length` (a cylinder needs it)"
+        "test.toml:4:1: missing key `body1.length` (a cylinder needs it)"
     );
     let err = scene_error(&VALID.replace("shape = \"sphere\"", "shape = \"cone\""));
     assert_eq!(

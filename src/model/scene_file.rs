@@ -429,14 +429,13 @@ impl Decoder<'_> {
         self.check_keys(key, table, BODY_KEYS)?;
         let shape_path = join(key, "shape");
         let shape_name = self.string(table, key, "shape")?;
-        let needs = format!(" (a {shape_name} needs it)");
         let shape = match shape_name {
             "sphere" => Shape::Sphere {
-                radius: self.number(table, key, "radius", &needs)?,
+                radius: self.geometry(table, key, "radius", shape_name)?,
             },
             "cylinder" => Shape::Cylinder {
-                radius: self.number(table, key, "radius", &needs)?,
-                length: self.number(table, key, "length", &needs)?,
+                radius: self.geometry(table, key, "radius", shape_name)?,
+                length: self.geometry(table, key, "length", shape_name)?,
             },
             "plane" => Shape::Plane,
             other => {
@@ -470,6 +469,26 @@ impl Decoder<'_> {
             shape,
             material,
             mass,
+        })
+    }
+
+    /// A radius or length the body's shape needs; if missing, the error points at the `shape`
+    /// that asks for it (or at the `--set` that changed the shape).
+    fn geometry(
+        &self,
+        body: &Table,
+        body_key: &str,
+        field: &str,
+        shape: &str,
+    ) -> Result<f64, SceneFileError> {
+        self.optional_number(body, body_key, field)?.ok_or_else(|| {
+            self.doc.error(
+                &join(body_key, "shape"),
+                Problem::MissingKey {
+                    key: join(body_key, field),
+                    why: format!(" (a {shape} needs it)"),
+                },
+            )
         })
     }
 
