@@ -1,0 +1,85 @@
+//! Writing a scene back as TOML in the scene-file schema.
+
+use toml::Value;
+
+use crate::model::body::Shape;
+use crate::model::scene::Scene;
+
+/// A float as TOML text that reads back to exactly the same f64, in plain or exponent notation
+/// (Rust prints the shortest round-tripping digits in both).
+pub fn toml_float(x: f64) -> String {
+    if x.is_nan() {
+        return "nan".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf".into() } else { "-inf".into() };
+    }
+    let mut plain = format!("{x}");
+    if !plain.contains(['.', 'e']) {
+        plain.push_str(".0");
+    }
+    let exponent = format!("{x:e}");
+    // Plain notation unless it is clearly longer (7800.0 rather than 7.8e3, 2e11 rather than 200000000000.0).
+    if exponent.len() + 2 < plain.len() {
+        exponent
+    } else {
+        plain
+    }
+}
+
+/// Writes a scene in the scene-file schema with materials inline; [`parse_scene`](super::parse_scene) reads it back
+/// to an equal [`Scene`].
+pub fn to_toml(scene: &Scene, description: Option<&str>) -> String {
+    let mut out = String::new();
+    let quote = |s: &str| Value::String(s.to_string()).to_string();
+    out.push_str(&format!("name = {}\n", quote(&scene.name)));
+    if let Some(description) = description {
+        out.push_str(&format!("description = {}\n", quote(description)));
+    }
+    for (key, body) in [("body1", &scene.body1), ("body2", &scene.body2)] {
+        out.push_str(&format!("\n[{key}]\nshape = \"{}\"\n", body.shape.name()));
+        match body.shape {
+            Shape::Sphere { radius } => {
+                out.push_str(&format!("radius = {}  # m\n", toml_float(radius)))
+            }
+            Shape::Cylinder { radius, length } => {
+                out.push_str(&format!("radius = {}  # m\n", toml_float(radius)));
+                out.push_str(&format!("length = {}  # m\n", toml_float(length)));
+            }
+            Shape::Plane => {}
+        }
+        if let Some(mass) = body.mass {
+            out.push_str(&format!("mass = {}  # kg\n", toml_float(mass)));
+        }
+        let m = &body.material;
+        out.push_str(&format!("\n[{key}.material]\nname = {}\n", quote(&m.name)));
+        out.push_str(&format!(
+            "youngs_modulus = {}  # Pa\n",
+            toml_float(m.youngs_modulus)
+        ));
+        out.push_str(&format!(
+            "poisson_ratio = {}\n",
+            toml_float(m.poisson_ratio)
+        ));
+        out.push_str(&format!(
+            "yield_stress = {}  # Pa\n",
+            toml_float(m.yield_stress)
+        ));
+        out.push_str(&format!("density = {}  # kg/m³\n", toml_float(m.density)));
+    }
+    let i = &scene.impact;
+    out.push_str("\n[impact]\n");
+    out.push_str(&format!(
+        "v0 = {}  # m/s, pre-impact relative velocity\n",
+        toml_float(i.v0)
+    ));
+    out.push_str(&format!(
+        "restitution = {}  # e, used by the dissipative models\n",
+        toml_float(i.restitution)
+    ));
+    out.push_str(&format!(
+        "plastic_indentation = {}  # x_pl in m, used by the proposed viscous model\n",
+        toml_float(i.plastic_indentation)
+    ));
+    out
+}
