@@ -216,3 +216,37 @@ pub(super) fn join(prefix: &str, key: &str) -> String {
         format!("{prefix}.{key}")
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_count_characters() {
+        let text = "a = 1\nµ = \"x\"\n";
+        assert_eq!(line_column(text, 0), (1, 1));
+        let offset = text.find('=').unwrap();
+        assert_eq!(line_column(text, offset), (1, 3));
+        let offset = text.rfind('=').unwrap();
+        assert_eq!(line_column(text, offset), (2, 3), "µ is one column");
+    }
+
+    #[test]
+    fn location_falls_back_to_the_enclosing_table_then_the_override() {
+        let mut doc = Document::parse("f.toml", "x = 1\n\n[t]\ny = 2\n").unwrap();
+        let at = |line, column| Location::File {
+            origin: "f.toml".into(),
+            line,
+            column,
+        };
+        assert_eq!(doc.location("t.y"), at(4, 1));
+        assert_eq!(doc.location("t.missing"), at(3, 2));
+        assert_eq!(doc.location("missing"), at(1, 1));
+        doc.mark_overridden("t");
+        assert_eq!(
+            doc.location("t.y").to_string(),
+            "f.toml (--set t)",
+            "a value under an override points at it"
+        );
+    }
+}
