@@ -654,3 +654,75 @@ fn overrides_apply_to_a_scene_in_memory() {
     assert_eq!(changed.body2.material.density, 8000.0);
     assert_eq!(changed.body1, scene.body1);
 }
+
+mod round_trip {
+    use super::*;
+    use hertz_tui::model::{Body, ImpactConditions, Scene};
+    use proptest::prelude::*;
+
+    fn positive() -> impl Strategy<Value = f64> {
+        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e))
+    }
+
+    fn material() -> impl Strategy<Value = Material> {
+        ("[ -~]{0,20}", positive(), 0.0..0.5, positive(), positive()).prop_map(
+            |(name, e, nu, sy, rho)| Material {
+                name,
+                youngs_modulus: e,
+                poisson_ratio: nu,
+                yield_stress: sy,
+                density: rho,
+            },
+        )
+    }
+
+    fn body() -> impl Strategy<Value = Body> {
+        (
+            prop_oneof![
+                positive().prop_map(|radius| Shape::Sphere { radius }),
+                (positive(), positive())
+                    .prop_map(|(radius, length)| Shape::Cylinder { radius, length }),
+                Just(Shape::Plane),
+            ],
+            material(),
+            prop::option::of(positive()),
+        )
+            .prop_map(|(shape, material, mass)| Body {
+                shape,
+                material,
+                mass,
+            })
+    }
+
+    proptest! {
+        /// Any scene the writer is given reads back identically: every f64 to the last bit.
+        #[test]
+        fn any_scene_reads_back_identically(
+            name in "\\PC{0,30}",
+            body1 in body(),
+            body2 in body(),
+            v0 in positive(),
+            e in 1e-9..=1.0f64,
+            x_pl in prop_oneof![Just(0.0), positive()],
+        ) {
+            let scene = Scene {
+                name,
+                body1,
+                body2,
+                impact: ImpactConditions { v0, restitution: e, plastic_indentation: x_pl },
+            };
+            let text = scene_file::to_toml(&scene, Some("round trip"));
+            let doc = scene_file::Document::parse("written.toml", &text).unwrap();
+            // Decoding validates: it reads back the scene if the scene is valid, else it refuses
+            // it with the scene's own validation error.
+            let decoded = scene_file::decode_scene(&doc, &BTreeMap::new());
+            match scene.validate() {
+                Ok(()) => prop_assert_eq!(decoded.unwrap(), scene),
+                Err(invalid) => {
+                    let message = decoded.unwrap_err().to_string();
+                    prop_assert!(message.ends_with(&invalid.to_string()), "{}\n{}", message, text);
+                }
+            }
+        }
+    }
+}
