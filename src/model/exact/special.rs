@@ -30,7 +30,7 @@ pub fn unloading_root(c: f64) -> (f64, f64) {
     }
     if c > 1.0 {
         // w = e^{w − 1 − c} < e^{−2}: Newton on ln w − w + 1 + c = 0 from the fixed-point guess.
-        let mut w = (lambert_w0(-(-(1.0 + c)).exp()) * -1.0).max((-1.0 - c).exp());
+        let mut w = (-lambert_w0(-(-(1.0 + c)).exp())).max((-1.0 - c).exp());
         for _ in 0..50 {
             let step = (w.ln() - w + 1.0 + c) * w / (1.0 - w);
             w -= step;

@@ -2,6 +2,7 @@
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{ForceModel, ImpactParams};
+use crate::model::error::{ModelError, require_positive};
 use crate::model::exact::{ExactImpact, hysteresis::hysteresis};
 
 /// F = k·xⁿ·(1 + α·ẋ) with α from the restitution e and v₀.
@@ -20,6 +21,20 @@ impl Hysteresis {
             model: ForceModel::HuntCrossley,
             alpha: 1.5 * (1.0 - params.restitution) / params.v0,
         }
+    }
+
+    /// Hunt–Crossley with a = (1 − e)/v_c calibrated at another impact velocity v_c (the paper fits
+    /// e = 1 − a·v₀ over a range of velocities, so a is a material constant): α = (3/2)·a (eq 19).
+    pub fn hunt_crossley_calibrated(
+        params: &ImpactParams,
+        v_calibration: f64,
+    ) -> Result<Self, ModelError> {
+        require_positive("v_calibration", v_calibration)?;
+        Ok(Hysteresis {
+            params: *params,
+            model: ForceModel::HuntCrossley,
+            alpha: 1.5 * (1.0 - params.restitution) / v_calibration,
+        })
     }
 
     /// Lankarani–Nikravesh: α = 3(1 − e²)/(4·v₀) (eq 20).

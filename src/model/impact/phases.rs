@@ -1,0 +1,198 @@
+//! The two phases of an impact, joined at the maximum-compression event ẋ = 0.
+//!
+//! Always two phases, for every law: dry friction's sign(ẋ) is then fixed within each phase and no
+//! step ever straddles the switch (a step across it collapses an adaptive step-size controller).
+
+use crate::model::force::{ContactEnd, ForceLaw, Phase};
+use crate::model::ode::{
+    self, DenseOutput, Direction, Event, Integration, Method, OdeError, State, Stats, Stop,
+};
+
+use super::ImpactError;
+use super::scale::Scales;
+use super::system::ImpactSystem;
+
+/// Contact lasting this many elastic contact times means it will not end: [`ImpactError::NoSeparation`].
+pub const TIME_LIMIT_CONTACTS: f64 = 100.0;
+
+/// How the unloading phase ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum End {
+    /// x returned to 0.
+    Approach,
+    /// The law's force reached 0 at x > 0: the proposed model's own end, or the compressive-only
+    /// cutoff of the others.
+    Tension,
+}
+
+/// Step control of one run, in scaled units.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RunOptions {
+    pub method: Method,
+    pub rtol: f64,
+    pub atol: f64,
+    /// Fixed step in units of x_e/v₀ (fixed-step methods only).
+    pub dt: Option<f64>,
+    pub max_steps: usize,
+}
+
+/// Both phases of one integrated impact.
+#[derive(Debug, Clone)]
+pub(crate) struct Run {
+    pub loading: DenseOutput,
+    pub unloading: DenseOutput,
+    /// Scaled time and state at maximum compression (ẋ set to exactly 0).
+    pub t_switch: f64,
+    pub y_switch: State,
+    /// Scaled time and state at the end of contact.
+    pub t_end: f64,
+    pub y_end: State,
+    pub end: End,
+    pub stats: Stats,
+    pub force_evals: usize,
+}
+
+/// Turns an integrator error in scaled time into one in seconds; an abort by the energy guard
+/// becomes [`ImpactError::EnergyGrowth`].
+fn impact_error(method: Method, err: OdeError, t_ref: f64, growth: Option<f64>) -> ImpactError {
+    let source = match err {
+        OdeError::Aborted { t, .. } if growth.is_some() => {
+            return ImpactError::EnergyGrowth {
+                method,
+                t: t * t_ref,
+                growth: 100.0 * growth.unwrap_or(0.0),
+            };
+        }
+        OdeError::StepSizeUnderflow { t, h } => OdeError::StepSizeUnderflow {
+            t: t * t_ref,
+            h: h * t_ref,
+        },
+        OdeError::StepBudgetExhausted { t, steps } => OdeError::StepBudgetExhausted {
+            t: t * t_ref,
+            steps,
+        },
+        OdeError::NonFinite { t } => OdeError::NonFinite { t: t * t_ref },
+        OdeError::NewtonFailed { t } => OdeError::NewtonFailed { t: t * t_ref },
+        OdeError::Aborted { t, reason } => OdeError::Aborted {
+            t: t * t_ref,
+            reason,
+        },
+        other @ OdeError::InvalidOptions(_) => other,
+    };
+    ImpactError::Integration { method, source }
+}
+
+/// Integrates loading until ẋ = 0, then unloading until x = 0 or the law's force reaches 0
+/// (whichever the law's rules watch), within [`TIME_LIMIT_CONTACTS`] elastic contact times and
+/// `max_steps` accepted plus rejected steps in all.
+pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<Run, ImpactError> {
+    let t_limit = TIME_LIMIT_CONTACTS * sc.t_contact;
+    let no_separation = ImpactError::NoSeparation {
+        t_limit: t_limit * sc.t,
+    };
+    let mut opts = ode::Options {
+        rtol: ro.rtol,
+        atol: ro.atol,
+        dt: ro.dt,
+        h_initial: None,
+        // A quarter of the elastic contact: no step can leap over most of the impact.
+        h_max: 0.25 * sc.t_contact,
+        t_max: t_limit,
+        max_steps: ro.max_steps,
+    };
+
+    // Loading: from first contact to maximum compression.
+    let at_rest = |_: f64, y: &State| y[1];
+    let loading_events = [Event {
+        g: &at_rest,
+        direction: Direction::Falling,
+    }];
+    let mut sys = ImpactSystem::new(law, Phase::Loading, *sc);
+    let loading = ode::integrate(
+        ro.method,
+        &mut sys,
+        0.0,
+        State::new(0.0, 1.0),
+        &loading_events,
+        &opts,
+    )
+    .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    if loading.stop == Stop::TimeLimit {
+        return Err(no_separation);
+    }
+    let mut force_evals = sys.force_evals;
+    let mut stats = loading.stats;
+    let Integration {
+        dense: loading_dense,
+        t: t_switch,
+        y,
+        ..
+    } = loading;
+    // The event lies on the far side of ẋ = 0 by a rounding error; start unloading exactly at rest.
+    let y_switch = State::new(y[0], 0.0);
+
+    // Unloading: events in a fixed order, x = 0 first.
+    let spent = stats.steps + stats.rejected_steps;
+    opts.max_steps = ro.max_steps.saturating_sub(spent);
+    if opts.max_steps == 0 {
+        return Err(ImpactError::Integration {
+            method: ro.method,
+            source: OdeError::StepBudgetExhausted {
+                t: t_switch * sc.t,
+                steps: spent,
+            },
+        });
+    }
+    // Adaptive methods resume with the last accepted step of loading instead of guessing anew.
+    opts.h_initial = loading_dense
+        .segments()
+        .last()
+        .map(|seg| seg.t_end() - seg.t_start())
+        .filter(|h| *h > 0.0 && ro.method.is_adaptive());
+    let approach = |_: f64, y: &State| y[0];
+    let tension = |_: f64, y: &State| law.tension(y[0] * sc.x, y[1] * sc.v);
+    let watch_tension = law.may_turn_tensile() || law.contact_end() == ContactEnd::ForceZero;
+    let all_events = [
+        Event {
+            g: &approach,
+            direction: Direction::Falling,
+        },
+        Event {
+            g: &tension,
+            direction: Direction::Falling,
+        },
+    ];
+    let unloading_events = if watch_tension {
+        &all_events[..]
+    } else {
+        &all_events[..1]
+    };
+    let mut sys = ImpactSystem::new(law, Phase::Unloading, *sc);
+    let unloading = ode::integrate(
+        ro.method,
+        &mut sys,
+        t_switch,
+        y_switch,
+        unloading_events,
+        &opts,
+    )
+    .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    force_evals += sys.force_evals;
+    stats += unloading.stats;
+    let end = match unloading.stop {
+        Stop::TimeLimit => return Err(no_separation),
+        Stop::Event { index: 0 } => End::Approach,
+        Stop::Event { .. } => End::Tension,
+    };
+    Ok(Run {
+        loading: loading_dense,
+        unloading: unloading.dense,
+        t_switch,
+        y_switch,
+        t_end: unloading.t,
+        y_end: unloading.y,
+        end,
+        stats,
+        force_evals,
+    })
+}

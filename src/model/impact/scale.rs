@@ -1,0 +1,50 @@
+//! The solver's dimensionless variables X = x/x_e, V = v/v₀, T = t·v₀/x_e, with x_e the elastic
+//! x_max (eq 5), so that rtol/atol mean the same thing for every scene.
+
+use crate::model::force::ImpactParams;
+
+/// Reference scales of one impact, SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Scales {
+    /// x_e: the elastic x_max (eq 5), m.
+    pub x: f64,
+    /// v₀, m/s.
+    pub v: f64,
+    /// x_e/v₀, s: in these units the elastic contact lasts 2·B(1/(n+1), ½)/(n+1) ≈ 3.2.
+    pub t: f64,
+    /// k·x_eⁿ: the elastic F_max (eq 6), N.
+    pub f: f64,
+    /// x_e/(m·v₀²), 1/N: dV/dT = −accel·F.
+    pub accel: f64,
+    /// The elastic contact time in units of `t` (eq 7, physics notes §3).
+    pub t_contact: f64,
+    /// Reduced mass m, kg.
+    pub mass: f64,
+    /// Exponent n.
+    pub n: f64,
+}
+
+impl Scales {
+    /// Scales of validated `params`.
+    pub fn new(params: &ImpactParams) -> Self {
+        let (m, v0, law) = (params.mass, params.v0, params.law);
+        let x = law.max_approach(m, v0);
+        let t = x / v0;
+        Scales {
+            x,
+            v: v0,
+            t,
+            f: law.force(x),
+            accel: x / (m * v0 * v0),
+            t_contact: law.contact_time(m, v0) / t,
+            mass: m,
+            n: law.n,
+        }
+    }
+
+    /// Mechanical energy ½mv² + k·x^{n+1}/(n+1) over ½mv₀², in scaled variables: V² + |X|^{n+1}
+    /// (the elastic part uses x_e's definition, k·x_e^{n+1}/(n+1) = ½mv₀²).
+    pub fn energy(&self, x: f64, v: f64) -> f64 {
+        v * v + x * x * crate::model::force::law::abs_pow_nm1(x, self.n)
+    }
+}
