@@ -25,7 +25,7 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ("c", "next chart (when only one fits)"),
     (
         "p",
-        "presets: scenes and materials (1 / 2 apply a material to a body)",
+        "presets: scenes; materials (1 / 2 apply one to body 1 / 2)",
     ),
     (
         "s",
@@ -37,10 +37,11 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ("q  Ctrl-C", "quit"),
 ];
 
-/// Units accepted while editing, for the help screen.
+/// How numbers are typed, and the display options, for the help screen.
 pub const INPUT_HINTS: &[&str] = &[
-    "numbers take SI prefixes and units: 200G, 2e11, 200 GPa, 10 mm, 0.3 m/s, 2.3 µm (or um), 33 g",
-    "a bare number is in SI base units (Pa, m, m/s, kg); mass `auto` = density × volume",
+    "numbers: 200G, 2e11, 200 GPa, 10 mm, 0.3 m/s, 2.3 µm (or um), 33 g, 60%",
+    "a bare number is in SI units (Pa, m, m/s, kg); mass `auto` = ρ × volume",
+    "--marker braille|dot|block for fonts without braille; NO_COLOR=1: no colour",
 ];
 
 /// The action of a terminal event in `mode`, if any.

@@ -7,6 +7,8 @@
 pub mod action;
 pub mod advice;
 pub mod app;
+#[cfg(test)]
+mod app_tests;
 pub mod export;
 pub mod field;
 pub mod keymap;

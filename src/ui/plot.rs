@@ -273,8 +273,8 @@ mod tests {
             6,
             5,
         );
-        assert_eq!(v.y_title, "v [mm/s]");
-        assert!(v.y.bounds[0] <= -200.0 && v.y.bounds[1] >= 300.0);
+        assert_eq!(v.y_title, "v [m/s]");
+        assert!(v.y.bounds[0] <= -0.2 && v.y.bounds[1] >= 0.3);
     }
 
     #[test]

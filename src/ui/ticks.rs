@@ -62,8 +62,9 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
     }
 }
 
-/// The smallest round step whose outward-rounded ticks cover [a, b] in at most `max_intervals`
-/// (two at least when the range crosses zero: zero is always a tick).
+/// The round step whose outward-rounded ticks cover [a, b] in at most `max_intervals` with the
+/// least wasted range (then the most ticks); two intervals at least when the range crosses zero,
+/// since zero is always a tick.
 fn nice_step(a: f64, b: f64, max_intervals: usize) -> f64 {
     let max_intervals = if a < 0.0 && b > 0.0 {
         max_intervals.max(2)
@@ -72,17 +73,23 @@ fn nice_step(a: f64, b: f64, max_intervals: usize) -> f64 {
     };
     let raw = (b - a) / max_intervals as f64;
     let first_exponent = raw.log10().floor() as i32;
-    // A step of 10× the raw step always fits; the bound only guards against float surprises.
+    let mut best: Option<(f64, f64)> = None;
+    // Steps from the raw step up to 100× it: a step of 10× the raw step always fits.
     for exponent in first_exponent..first_exponent + 3 {
         for mantissa in MANTISSAS {
             let step = mantissa * 10f64.powi(exponent);
-            // The outer ticks round outwards, which can add an interval: check the real count.
-            if step >= raw * (1.0 - 1e-12) && intervals(a, b, step) <= max_intervals as f64 {
-                return step;
+            let count = intervals(a, b, step);
+            if step < raw * (1.0 - 1e-12) || count > max_intervals as f64 {
+                continue;
+            }
+            let covered = count * step;
+            // Strictly less range wins; on a tie the smaller step (more ticks) found first stays.
+            if best.is_none_or(|(_, c)| covered < c * (1.0 - 1e-9)) {
+                best = Some((step, covered));
             }
         }
     }
-    10f64.powi(first_exponent + 3)
+    best.map_or(10f64.powi(first_exponent + 3), |(step, _)| step)
 }
 
 fn intervals(a: f64, b: f64, step: f64) -> f64 {
@@ -131,7 +138,11 @@ mod tests {
     #[test]
     fn velocities_span_zero() {
         let axis = nice_axis(-0.2134, 0.3, METRE_PER_SECOND, 8);
-        assert_eq!(axis.prefix.symbol, "m");
+        assert_eq!(axis.prefix.symbol, "");
+        assert_eq!(
+            axis.labels,
+            ["-0.3", "-0.2", "-0.1", "0.0", "0.1", "0.2", "0.3"]
+        );
         assert_labels_on_ticks(&axis);
         assert!(values(&axis).contains(&0.0));
         assert!(axis.bounds[0] * axis.scale <= -0.2134 && axis.bounds[1] * axis.scale >= 0.3);
@@ -175,6 +186,15 @@ mod tests {
         assert_eq!(axis.labels, ["0", "25", "50", "75", "100"]);
         let axis = nice_axis(0.0, 7.4, NEWTON, 4);
         assert_eq!(axis.labels, ["0.0", "2.5", "5.0", "7.5"]);
+    }
+
+    #[test]
+    fn the_least_wasted_range_wins() {
+        // 403 N with three intervals: 0–500 by 250 rather than 0–600 by 200.
+        let axis = nice_axis(0.0, 403.3, NEWTON, 4);
+        assert_eq!(axis.labels, ["0", "250", "500"]);
+        let axis = nice_axis(0.0, 403.3, NEWTON, 6);
+        assert_eq!(axis.labels, ["0", "100", "200", "300", "400", "500"]);
     }
 
     #[test]

@@ -115,11 +115,12 @@ pub const JOULE: Unit = Unit {
     si_per_unit: 1.0,
     prefixable: true,
 };
+/// Velocities read best in m/s at impact speeds, so they are shown without a prefix.
 pub const METRE_PER_SECOND: Unit = Unit {
     symbol: "m/s",
     aliases: &[],
     si_per_unit: 1.0,
-    prefixable: true,
+    prefixable: false,
 };
 pub const KG_PER_CUBIC_METRE: Unit = Unit {
     symbol: "kg/m³",
@@ -370,7 +371,7 @@ mod tests {
         assert_eq!(engineering(1.0, GRAM, 4), "1 kg");
         assert_eq!(engineering(4.3452e9, PASCAL, 4), "4.345 GPa");
         assert_eq!(engineering(999.96, NEWTON, 4), "1 kN");
-        assert_eq!(engineering(0.3, METRE_PER_SECOND, 4), "300 mm/s");
+        assert_eq!(engineering(0.3, METRE_PER_SECOND, 4), "0.3 m/s");
         assert_eq!(engineering(7800.0, KG_PER_CUBIC_METRE, 4), "7800 kg/m³");
         assert_eq!(engineering(0.6, DIMENSIONLESS, 4), "0.6");
         assert_eq!(with_prefix(0.01, METRE, MILLI, 6), "10 mm");

@@ -13,7 +13,7 @@ use crate::ui::theme::Role;
 use super::common::{pane, span, wrap};
 
 /// Width of the label column.
-const LABEL_WIDTH: usize = 7;
+const LABEL_WIDTH: usize = 8;
 
 /// One visual row of the form.
 enum Row {

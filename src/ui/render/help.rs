@@ -33,10 +33,6 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
             .iter()
             .map(|h| Line::from(Span::styled(format!(" {h}"), theme.style(Role::Muted)))),
     );
-    lines.push(Line::from(Span::styled(
-        " --marker braille|dot|block picks the chart marker; NO_COLOR=1 turns colour off",
-        theme.style(Role::Muted),
-    )));
     let popup = centered(area, 96, lines.len() as u16 + 2);
     frame.render_widget(Clear, popup);
     frame.render_widget(

@@ -40,7 +40,7 @@ pub fn layout(area: Rect, first: ChartKind) -> Option<Areas> {
         Constraint::Length(1),
     ])
     .areas(area);
-    let left_width = if area.width >= 120 { 44 } else { 32 };
+    let left_width = if area.width >= 120 { 44 } else { 33 };
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_width), Constraint::Fill(1)]).areas(body);
     let models_height = if roomy { 7 } else { 8 };

@@ -24,8 +24,8 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let block = pane("Models · ✓ fits the regime", theme, roomy);
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    // "▸[x] ──── name …✓": 1 + 3 + 1 + 4 + 1 + name + 3.
-    let name_width = (inner.width as usize).saturating_sub(13);
+    // "▸[x] ──── name …✓ ": 1 + 3 + 1 + 4 + 1 + name + 4, the last column left blank.
+    let name_width = (inner.width as usize).saturating_sub(14);
     let lines: Vec<Line> = ForceModel::ALL
         .iter()
         .map(|&model| {

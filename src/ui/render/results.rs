@@ -19,6 +19,8 @@ use super::common::{flow, model_name, pane, span};
 struct Column {
     header: &'static str,
     unit: &'static str,
+    /// How the compact title names the unit of this column ("x µm"), empty for none.
+    note: &'static str,
     width: u16,
     value: fn(&ImpactSummary) -> String,
 }
@@ -26,54 +28,63 @@ struct Column {
 const COLUMNS: [Column; 9] = [
     Column {
         header: "x_max",
+        note: "x µm",
         unit: "µm",
-        width: 7,
+        width: 6,
         value: |s| sig(s.x_max * 1e6, 4),
     },
     Column {
         header: "F_max",
+        note: "F N",
         unit: "N",
-        width: 7,
+        width: 6,
         value: |s| sig(s.f_max, 4),
     },
     Column {
         header: "t_c",
+        note: "t µs",
         unit: "µs",
-        width: 7,
+        width: 6,
         value: |s| sig(s.t_contact * 1e6, 4),
     },
     Column {
         header: "v_out",
+        note: "v m/s",
         unit: "m/s",
-        width: 7,
+        width: 6,
         value: |s| sig(s.v_out, 4),
     },
     Column {
         header: "e_out",
+        note: "",
         unit: "",
-        width: 6,
+        width: 5,
         value: |s| sig(s.e_out, 3),
     },
     Column {
         header: "x_res",
+        note: "x µm",
         unit: "µm",
-        width: 7,
+        width: 6,
         value: |s| sig(s.x_residual * 1e6, 4),
     },
     Column {
         header: "ΔE",
+        note: "ΔE mJ",
         unit: "mJ",
-        width: 7,
+        width: 6,
         value: |s| sig(s.energy_dissipated * 1e3, 4),
     },
     Column {
         header: "method",
+        note: "",
         unit: "",
         width: 16,
         value: |s| s.method.to_string(),
     },
     Column {
         header: "steps",
+        note: "",
         unit: "",
         width: 6,
         value: |s| s.steps.to_string(),
@@ -86,13 +97,21 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let block = pane("Results", theme, roomy);
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    let model_width: u16 = if roomy { 27 } else { 9 };
+    let model_width: u16 = if roomy { 28 } else { 9 };
+    let header_text = |c: &Column| {
+        if c.unit.is_empty() || !roomy {
+            c.header.to_string()
+        } else {
+            format!("{} {}", c.header, c.unit)
+        }
+    };
+    let width_of = |c: &Column| c.width.max(header_text(c).chars().count() as u16);
     // As many columns as fit, in order of importance.
     let mut used = model_width;
     let columns: Vec<&Column> = COLUMNS
         .iter()
         .take_while(|c| {
-            used += c.width + 1;
+            used += width_of(c) + 1;
             used <= inner.width
         })
         .collect();
@@ -103,13 +122,6 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .max(1);
     let [table_area, q_area] =
         Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
-    let header_text = |c: &Column| {
-        if c.unit.is_empty() || !roomy {
-            c.header.to_string()
-        } else {
-            format!("{} {}", c.header, c.unit)
-        }
-    };
     let header = Row::new(
         std::iter::once(Cell::from("model"))
             .chain(columns.iter().map(|c| Cell::from(header_text(c)))),
@@ -120,13 +132,19 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .map(|&model| model_row(app, model, &columns, model_width, theme))
         .collect();
     let widths = std::iter::once(Constraint::Length(model_width))
-        .chain(columns.iter().map(|c| Constraint::Length(c.width)));
+        .chain(columns.iter().map(|c| Constraint::Length(width_of(c))));
     let table = Table::new(rows, widths).header(header).column_spacing(1);
     frame.render_widget(table, table_area);
     frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
     if !roomy {
-        // Units are in the compact header's place: say them once, right-aligned in the title row.
-        let units = "x µm · F N · t µs · v m/s";
+        // The compact header has no room for units: name them once, in the title row.
+        let mut notes: Vec<&str> = Vec::new();
+        for c in &columns {
+            if !c.note.is_empty() && !notes.contains(&c.note) {
+                notes.push(c.note);
+            }
+        }
+        let units = notes.join(" · ");
         let width = units.chars().count() as u16;
         if area.width > width + 10 {
             let rect = Rect::new(area.right() - width - 1, area.y, width, 1);

@@ -35,10 +35,24 @@ fn hints(mode: &Mode) -> &'static [(&'static str, &'static str)] {
     }
 }
 
+/// `text` cut to `width` characters, with an ellipsis when cut.
+fn shortened(text: &str, width: usize) -> String {
+    if text.chars().count() <= width {
+        text.to_string()
+    } else {
+        let mut cut: String = text.chars().take(width.saturating_sub(1)).collect();
+        cut.push('…');
+        cut
+    }
+}
+
 pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let theme = app.theme;
     let mut left = vec![Span::styled(
-        format!(" {}", app.draft.scene.name),
+        format!(
+            " {}",
+            shortened(&app.draft.scene.name, usize::from(area.width / 3))
+        ),
         theme.style(Role::Title),
     )];
     if app.is_dirty() {

@@ -1,0 +1,442 @@
+//! The state machine driven by keys, without a terminal: key → action → state.
+
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
+
+use super::action::Action;
+use super::app::{App, ChartKind, Cursor, Mode, PromptKind, update};
+use super::field::Field;
+use super::keymap::action_for_event;
+use super::marker::MarkerStyle;
+use super::picker::EntryKind;
+use super::testing::fig5_scene;
+use super::theme::Theme;
+use super::worker;
+use crate::model::ForceModel;
+use crate::model::presets::Registry;
+use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+
+const V0: Field = Field::Number(SceneKey::V0);
+
+fn app() -> App {
+    App::new(
+        fig5_scene(),
+        Registry::builtin().unwrap(),
+        MarkerStyle::Braille,
+        Theme { color: true },
+    )
+}
+
+/// Solves every queued job on this thread and feeds the outcomes back, as the worker would.
+fn settle(app: &mut App) {
+    loop {
+        let jobs = app.take_jobs();
+        if jobs.is_empty() {
+            return;
+        }
+        for job in jobs {
+            update(app, Action::Solved(Ok(worker::solve(&job))));
+        }
+    }
+}
+
+fn key_with(app: &mut App, code: KeyCode, modifiers: KeyModifiers) {
+    let event = Event::Key(KeyEvent::new(code, modifiers));
+    if let Some(action) = action_for_event(&app.mode, &event) {
+        update(app, action);
+    }
+}
+
+fn key(app: &mut App, code: KeyCode) {
+    key_with(app, code, KeyModifiers::NONE);
+}
+
+fn type_text(app: &mut App, text: &str) {
+    for c in text.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+/// Replaces the text of the open editor or prompt by `text` and presses Enter.
+fn enter_text(app: &mut App, text: &str) {
+    key_with(app, KeyCode::Char('u'), KeyModifiers::CONTROL);
+    type_text(app, text);
+    key(app, KeyCode::Enter);
+}
+
+fn queued_models(app: &mut App) -> Vec<ForceModel> {
+    app.take_jobs().into_iter().map(|j| j.model).collect()
+}
+
+#[test]
+fn opening_solves_the_checked_models_once() {
+    let mut a = app();
+    assert_eq!(
+        queued_models(&mut a),
+        [
+            ForceModel::Quasistatic,
+            ForceModel::Proposed,
+            ForceModel::HuntCrossley,
+            ForceModel::LankaraniNikravesh
+        ]
+    );
+    assert!(a.is_computing());
+    let mut b = app();
+    settle(&mut b);
+    assert!(!b.is_computing());
+    for model in b.checked_models() {
+        assert!(b.solutions.solution(model).is_some(), "{model}");
+    }
+    assert!(b.solutions.result(ForceModel::DryFriction).is_none());
+    assert!(!b.is_dirty());
+}
+
+#[test]
+fn arrows_and_tab_move_through_fields_then_models() {
+    let mut a = app();
+    assert_eq!(a.cursor, Cursor::Field(V0));
+    key(&mut a, KeyCode::Down);
+    assert_eq!(
+        a.cursor,
+        Cursor::Field(Field::Number(SceneKey::Restitution))
+    );
+    key(&mut a, KeyCode::BackTab);
+    key(&mut a, KeyCode::Up);
+    assert_eq!(
+        a.cursor,
+        Cursor::Field(Field::Number(SceneKey::Body(
+            BodyIndex::Two,
+            BodyField::Density
+        )))
+    );
+    // Past the last impact field come the models; landing on one focuses it.
+    for _ in 0..6 {
+        key(&mut a, KeyCode::Tab);
+    }
+    assert_eq!(a.cursor, Cursor::Model(ForceModel::Quasistatic));
+    assert_eq!(a.focused, ForceModel::Quasistatic);
+    // Up from the first row wraps to the last.
+    a.cursor = Cursor::Field(Field::Shape(BodyIndex::One));
+    key(&mut a, KeyCode::Up);
+    assert_eq!(a.cursor, Cursor::Model(ForceModel::LankaraniNikravesh));
+}
+
+#[test]
+fn enter_edits_and_commits_with_units() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Enter);
+    match &a.mode {
+        Mode::Editing(editor) => assert_eq!(editor.input.value(), "0.3 m/s"),
+        other => panic!("{other:?}"),
+    }
+    enter_text(&mut a, "500 mm/s");
+    assert!(matches!(a.mode, Mode::Normal));
+    assert_eq!(a.draft.scene.impact.v0, 0.5);
+    assert!(a.is_dirty());
+    assert_eq!(
+        queued_models(&mut a).len(),
+        4,
+        "every checked model depends on v₀"
+    );
+    assert_eq!(a.valid.as_ref().map(|v| v.scene.impact.v0), Some(0.5));
+}
+
+#[test]
+fn esc_cancels_an_edit() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Enter);
+    type_text(&mut a, "9");
+    key(&mut a, KeyCode::Esc);
+    assert!(matches!(a.mode, Mode::Normal));
+    assert_eq!(a.draft.scene.impact.v0, 0.3);
+    assert!(a.take_jobs().is_empty());
+    assert!(!a.is_dirty());
+}
+
+#[test]
+fn unparsable_text_stays_in_the_editor_with_the_reason() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "fast");
+    match &a.mode {
+        Mode::Editing(editor) => {
+            assert_eq!(editor.error.as_deref(), Some("'fast' is not a number"));
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(a.draft.scene.impact.v0, 0.3);
+    assert!(a.take_jobs().is_empty());
+    // Fixing the text commits.
+    enter_text(&mut a, "0.2");
+    assert!(matches!(a.mode, Mode::Normal));
+    assert_eq!(a.draft.scene.impact.v0, 0.2);
+}
+
+#[test]
+fn an_invalid_value_turns_its_field_red_and_the_last_results_stay() {
+    let mut a = app();
+    settle(&mut a);
+    let nu = Field::Number(SceneKey::Body(BodyIndex::One, BodyField::PoissonRatio));
+    a.cursor = Cursor::Field(nu);
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "0.6");
+    assert_eq!(a.draft.scene.body1.material.poisson_ratio, 0.6);
+    let message = a.scene_error.as_ref().map(ToString::to_string);
+    assert_eq!(
+        message.as_deref(),
+        Some("body1.material.poisson_ratio must be in [0, 0.5), got 0.6")
+    );
+    assert_eq!(a.error_fields(), [nu]);
+    assert!(a.take_jobs().is_empty(), "an invalid scene solves nothing");
+    assert_eq!(
+        a.valid
+            .as_ref()
+            .map(|v| v.scene.body1.material.poisson_ratio),
+        Some(0.3)
+    );
+    assert!(a.solutions.solution(ForceModel::Proposed).is_some());
+    // Nudging back down makes it valid again; the physics did not change, so nothing is solved.
+    for _ in 0..10 {
+        key(&mut a, KeyCode::Left);
+    }
+    assert!((a.draft.scene.body1.material.poisson_ratio - 0.5).abs() < 1e-12);
+    assert!(a.scene_error.is_some(), "0.5 is still outside [0, 0.5)");
+    key(&mut a, KeyCode::Left);
+    assert!(a.scene_error.is_none());
+    assert_eq!(queued_models(&mut a).len(), 4, "ν = 0.49 is a new scene");
+}
+
+#[test]
+fn nudges_step_values_and_cycle_choices() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.draft.scene.impact.v0, 0.31);
+    key(&mut a, KeyCode::Char('-'));
+    key(&mut a, KeyCode::Char('-'));
+    assert_eq!(a.draft.scene.impact.v0, 0.29);
+    a.take_jobs();
+    a.cursor = Cursor::Field(Field::Method);
+    key(&mut a, KeyCode::Char('+'));
+    assert_eq!(a.draft.options.method.to_string(), "euler");
+    assert_eq!(queued_models(&mut a).len(), 4, "a new method re-solves");
+}
+
+#[test]
+fn view_changes_solve_nothing() {
+    let mut a = app();
+    settle(&mut a);
+    for code in [
+        KeyCode::Char(']'),
+        KeyCode::Char('['),
+        KeyCode::Char('c'),
+        KeyCode::Down,
+        KeyCode::Up,
+        KeyCode::Char('?'),
+        KeyCode::Esc,
+    ] {
+        key(&mut a, code);
+    }
+    assert_eq!(a.chart, ChartKind::VelocityDisplacement);
+    assert!(a.take_jobs().is_empty());
+    // Re-entering the same value solves nothing either.
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Enter);
+    assert!(a.take_jobs().is_empty());
+}
+
+#[test]
+fn checking_a_model_solves_only_that_model() {
+    let mut a = app();
+    settle(&mut a);
+    a.cursor = Cursor::Model(ForceModel::DryFriction);
+    key(&mut a, KeyCode::Char(' '));
+    assert!(a.is_checked(ForceModel::DryFriction));
+    assert_eq!(queued_models(&mut a), [ForceModel::DryFriction]);
+    key(&mut a, KeyCode::Enter);
+    assert!(!a.is_checked(ForceModel::DryFriction));
+    assert!(a.take_jobs().is_empty());
+    // Checking it again asks for nothing new: the same inputs are already being solved.
+    key(&mut a, KeyCode::Char(' '));
+    assert!(a.is_checked(ForceModel::DryFriction));
+    assert!(a.take_jobs().is_empty());
+}
+
+#[test]
+fn outcomes_of_superseded_requests_are_dropped() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Right);
+    let first = a.take_jobs();
+    key(&mut a, KeyCode::Right);
+    let second = a.take_jobs();
+    for job in &first {
+        update(&mut a, Action::Solved(Ok(worker::solve(job))));
+    }
+    assert!(
+        a.is_computing(),
+        "stale outcomes do not finish the recompute"
+    );
+    let old = a
+        .solutions
+        .solution(ForceModel::Proposed)
+        .map(|s| s.summary.x_max);
+    for job in &second {
+        update(&mut a, Action::Solved(Ok(worker::solve(job))));
+    }
+    assert!(!a.is_computing());
+    let new = a
+        .solutions
+        .solution(ForceModel::Proposed)
+        .map(|s| s.summary.x_max);
+    assert!(
+        new > old,
+        "v₀ 0.32 goes deeper than 0.3: {new:?} vs {old:?}"
+    );
+}
+
+#[test]
+fn presets_load_scenes_and_apply_materials_to_either_body() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Char('p'));
+    let Mode::Picker(picker) = &mut a.mode else {
+        panic!("{:?}", a.mode)
+    };
+    picker.select(EntryKind::Material, "aluminium-alloy");
+    key(&mut a, KeyCode::Char('2'));
+    assert!(matches!(a.mode, Mode::Normal));
+    assert_eq!(a.draft.scene.body2.material.name, "aluminium-alloy");
+    assert_eq!(a.draft.scene.body1.material.name, "steel");
+    assert_eq!(queued_models(&mut a).len(), 4);
+    key(&mut a, KeyCode::Char('p'));
+    let Mode::Picker(picker) = &mut a.mode else {
+        panic!("{:?}", a.mode)
+    };
+    picker.select(EntryKind::Scene, "steel-sphere-r5-plate");
+    key(&mut a, KeyCode::Enter);
+    assert_eq!(
+        a.draft.scene,
+        Registry::builtin()
+            .unwrap()
+            .scene("steel-sphere-r5-plate")
+            .unwrap()
+    );
+    assert!(!a.is_dirty());
+    assert!(a.message.as_ref().is_some_and(|m| !m.error));
+    // Esc closes the picker without loading anything.
+    key(&mut a, KeyCode::Char('p'));
+    key(&mut a, KeyCode::Esc);
+    assert!(matches!(a.mode, Mode::Normal));
+}
+
+fn temp_path(name: &str) -> std::path::PathBuf {
+    std::env::temp_dir().join(format!("hertz-tui-{}-{name}", std::process::id()))
+}
+
+#[test]
+fn save_writes_the_scene_to_a_path_and_clears_the_unsaved_mark() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Right);
+    assert!(a.is_dirty());
+    key(&mut a, KeyCode::Char('s'));
+    assert!(matches!(&a.mode, Mode::Prompt(p) if p.kind == PromptKind::Save));
+    let path = temp_path("saved.toml");
+    enter_text(&mut a, &path.display().to_string());
+    assert!(matches!(a.mode, Mode::Normal), "{:?}", a.message);
+    assert!(!a.is_dirty());
+    let reloaded = a.registry.scene(&path.display().to_string()).unwrap();
+    assert_eq!(reloaded.impact.v0, 0.31);
+    std::fs::remove_file(&path).unwrap();
+    // A bad target keeps the prompt open with the reason.
+    key(&mut a, KeyCode::Char('s'));
+    enter_text(&mut a, "Not A Name");
+    match &a.mode {
+        Mode::Prompt(p) => assert!(p.error.as_deref().unwrap().contains("kebab-case")),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn export_writes_the_focused_trajectory_as_csv() {
+    let mut a = app();
+    settle(&mut a);
+    key(&mut a, KeyCode::Char('e'));
+    match &a.mode {
+        Mode::Prompt(p) => {
+            assert_eq!(p.kind, PromptKind::Export(ForceModel::Proposed));
+            assert!(p.input.value().ends_with("-proposed.csv"));
+        }
+        other => panic!("{other:?}"),
+    }
+    let path = temp_path("proposed.csv");
+    enter_text(&mut a, &path.display().to_string());
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_file(&path).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("t_s,x_m,v_m_per_s,force_N"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() >= 1000);
+    let f_max = rows.iter().map(|r| r[3]).fold(f64::MIN, f64::max);
+    let summary = &a.solutions.solution(ForceModel::Proposed).unwrap().summary;
+    assert_eq!(f_max, summary.f_max, "the true peak is among the rows");
+    // An unchecked model has nothing to export.
+    a.focused = ForceModel::DryFriction;
+    key(&mut a, KeyCode::Char('e'));
+    assert!(matches!(a.mode, Mode::Normal));
+    assert!(a.message.as_ref().is_some_and(|m| m.error));
+}
+
+#[test]
+fn q_quits_except_while_typing_and_ctrl_c_always_quits() {
+    let mut a = app();
+    key(&mut a, KeyCode::Enter);
+    key(&mut a, KeyCode::Char('q'));
+    assert!(!a.quit);
+    match &a.mode {
+        Mode::Editing(editor) => assert!(editor.input.value().ends_with('q')),
+        other => panic!("{other:?}"),
+    }
+    key_with(&mut a, KeyCode::Char('c'), KeyModifiers::CONTROL);
+    assert!(a.quit);
+    let mut b = app();
+    key(&mut b, KeyCode::Char('q'));
+    assert!(b.quit);
+}
+
+#[test]
+fn help_opens_and_closes() {
+    let mut a = app();
+    key(&mut a, KeyCode::Char('?'));
+    assert!(matches!(a.mode, Mode::Help));
+    key(&mut a, KeyCode::Char('x'));
+    assert!(matches!(a.mode, Mode::Help), "other keys keep it open");
+    key(&mut a, KeyCode::Char('q'));
+    assert!(matches!(a.mode, Mode::Normal));
+    assert!(!a.quit, "q closes the help first");
+}
+
+#[test]
+fn shapes_change_the_rows_and_plane_on_plane_is_refused() {
+    let mut a = app();
+    settle(&mut a);
+    let radius = Field::Number(SceneKey::Body(BodyIndex::One, BodyField::Radius));
+    a.cursor = Cursor::Field(Field::Shape(BodyIndex::One));
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "plane");
+    // plane–plane has no contact law: both shapes are marked and nothing is solved.
+    assert_eq!(
+        a.error_fields(),
+        [Field::Shape(BodyIndex::One), Field::Shape(BodyIndex::Two)]
+    );
+    assert!(!a.rows().contains(&Cursor::Field(radius)));
+    assert!(a.take_jobs().is_empty());
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.draft.scene.body1.shape.name(), "cylinder");
+    assert!(a.rows().contains(&Cursor::Field(radius)));
+}

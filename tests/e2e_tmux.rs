@@ -1,0 +1,217 @@
+//! End to end: the real binary in a detached tmux session of fixed size with a UTF-8 locale. Edits
+//! v₀ with keystrokes, reads the pane with `capture-pane`, checks that the charts and the results
+//! changed, quits with `q` and checks that the terminal is restored (the shell's screen is back and
+//! the line discipline cooks input again). Waits on the screen's content, never on fixed sleeps.
+//!
+//! Needs tmux (CI installs it; locally `apt-get install -y tmux`). It is never skipped: without
+//! tmux it fails.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+use std::thread;
+use std::time::{Duration, Instant};
+
+use hertz_tui::model::ForceModel;
+use hertz_tui::model::impact::{SolveOptions, solve_impact};
+use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+use hertz_tui::ui::units::sig;
+
+const WIDTH: u16 = 100;
+const HEIGHT: u16 = 30;
+/// Overall limit of every wait; the polls themselves are 50 ms apart.
+const TIMEOUT: Duration = Duration::from_secs(60);
+const POLL: Duration = Duration::from_millis(50);
+
+/// A tmux server of its own (`-L`), killed on drop.
+struct Tmux {
+    socket: String,
+    config_home: PathBuf,
+}
+
+impl Tmux {
+    fn start() -> Tmux {
+        let id = std::process::id();
+        let config_home = std::env::temp_dir().join(format!("hertz-e2e-config-{id}"));
+        std::fs::create_dir_all(&config_home).unwrap();
+        let tmux = Tmux {
+            socket: format!("hertz-e2e-{id}"),
+            config_home,
+        };
+        let size = (WIDTH.to_string(), HEIGHT.to_string());
+        let out = tmux.run(&[
+            "-f",
+            "/dev/null",
+            "new-session",
+            "-d",
+            "-s",
+            "e2e",
+            "-x",
+            &size.0,
+            "-y",
+            &size.1,
+            "sh",
+        ]);
+        assert!(
+            out.status.success(),
+            "tmux new-session failed: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        tmux
+    }
+
+    fn run(&self, args: &[&str]) -> Output {
+        Command::new("tmux")
+            .arg("-L")
+            .arg(&self.socket)
+            .args(args)
+            .env("LANG", "C.UTF-8")
+            .env("LC_ALL", "C.UTF-8")
+            .env("XDG_CONFIG_HOME", &self.config_home)
+            .env_remove("NO_COLOR")
+            .output()
+            .unwrap_or_else(|e| {
+                panic!("cannot run tmux ({e}): install it, e.g. apt-get install -y tmux")
+            })
+    }
+
+    /// Types `keys` (tmux key names, or literal text with `-l`).
+    fn keys(&self, keys: &[&str]) {
+        let mut args = vec!["send-keys", "-t", "e2e"];
+        args.extend_from_slice(keys);
+        assert!(self.run(&args).status.success(), "send-keys {keys:?}");
+    }
+
+    fn literal(&self, text: &str) {
+        assert!(
+            self.run(&["send-keys", "-t", "e2e", "-l", text])
+                .status
+                .success()
+        );
+    }
+
+    fn screen(&self) -> String {
+        let out = self.run(&["capture-pane", "-p", "-t", "e2e"]);
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    }
+
+    /// Polls the pane until `ready` holds; panics with the last screen after the timeout.
+    fn wait_for(&self, what: &str, ready: impl Fn(&str) -> bool) -> String {
+        let start = Instant::now();
+        loop {
+            let screen = self.screen();
+            if ready(&screen) {
+                return screen;
+            }
+            if start.elapsed() > TIMEOUT {
+                panic!("timed out waiting for {what}; the screen was:\n{screen}");
+            }
+            thread::sleep(POLL);
+        }
+    }
+}
+
+impl Drop for Tmux {
+    fn drop(&mut self) {
+        let _ = self.run(&["kill-server"]);
+        let _ = std::fs::remove_dir_all(&self.config_home);
+    }
+}
+
+fn is_braille(c: char) -> bool {
+    ('\u{2801}'..='\u{28FF}').contains(&c)
+}
+
+/// The braille cells of the screen with their positions: the curves of the charts.
+fn curves(screen: &str) -> Vec<(usize, usize, char)> {
+    screen
+        .lines()
+        .enumerate()
+        .flat_map(|(row, line)| {
+            line.chars()
+                .enumerate()
+                .filter(|(_, c)| is_braille(*c))
+                .map(move |(col, c)| (row, col, c))
+        })
+        .collect()
+}
+
+/// The results row of a model, as drawn in the compact table.
+fn results_row<'a>(screen: &'a str, name: &str) -> &'a str {
+    screen
+        .lines()
+        .find(|l| l.contains(&format!("  {name}  ")) || l.contains(&format!(" {name}  ")))
+        .unwrap_or("")
+}
+
+/// x_max of the proposed model at `v0`, as the results table prints it (µm, 4 digits).
+fn expected_x_max(v0: f64) -> String {
+    let registry = Registry::builtin().unwrap();
+    let mut scene = registry.scene(DEFAULT_SCENE).unwrap();
+    scene.impact.v0 = v0;
+    let q = scene.quasistatic().unwrap();
+    let solution = solve_impact(
+        ForceModel::Proposed,
+        &scene.impact_params(&q),
+        &SolveOptions::default(),
+    )
+    .unwrap();
+    sig(solution.summary.x_max * 1e6, 4)
+}
+
+#[test]
+fn edit_v0_in_the_real_binary_and_quit_cleanly() {
+    let tmux = Tmux::start();
+    tmux.literal("echo before-$((40+2))");
+    tmux.keys(&["Enter"]);
+    tmux.wait_for("the shell to echo", |s| s.contains("before-42"));
+
+    let binary = env!("CARGO_BIN_EXE_hertz-tui");
+    tmux.literal(&format!("{binary}; echo exited-$?"));
+    tmux.keys(&["Enter"]);
+    let x_before = expected_x_max(0.3);
+    let before = tmux.wait_for("the explorer with its results", |s| {
+        s.contains("F(x) force–approach")
+            && results_row(s, "proposed").contains(&x_before)
+            && !s.contains("computing…")
+    });
+    assert!(
+        !before.contains("before-42"),
+        "the explorer uses the alternate screen"
+    );
+    assert!(!curves(&before).is_empty(), "braille curves are drawn");
+    assert!(before.contains("v₀     0.3 m/s"), "{before}");
+
+    // The cursor starts on v₀: Enter edits, Ctrl-U clears, type, Enter commits.
+    tmux.keys(&["Enter"]);
+    tmux.keys(&["C-u"]);
+    tmux.literal("50 mm/s");
+    tmux.keys(&["Enter"]);
+    let x_after = expected_x_max(0.05);
+    assert_ne!(x_before, x_after);
+    let after = tmux.wait_for("the results of v₀ = 0.05 m/s", |s| {
+        s.contains("v₀     0.05 m/s")
+            && results_row(s, "proposed").contains(&x_after)
+            && !s.contains("computing…")
+    });
+    assert_ne!(
+        results_row(&before, "proposed"),
+        results_row(&after, "proposed"),
+        "the results changed"
+    );
+    assert_ne!(curves(&before), curves(&after), "the charts changed");
+    assert!(after.contains('*'), "the unsaved mark shows after an edit");
+    assert!(after.contains("elastic") || after.contains("yield begins"));
+
+    tmux.keys(&["q"]);
+    let restored = tmux.wait_for("the shell after the explorer", |s| s.contains("exited-0"));
+    assert!(
+        restored.contains("before-42"),
+        "the primary screen is back:\n{restored}"
+    );
+    assert!(!restored.contains("F(x) force–approach"), "{restored}");
+    assert!(curves(&restored).is_empty(), "{restored}");
+    // Raw mode is off: Enter ends a line again, so the shell runs the command.
+    tmux.literal("echo after-$((1+1))");
+    tmux.keys(&["Enter"]);
+    tmux.wait_for("the shell to run a command", |s| s.contains("after-2"));
+}

@@ -1,0 +1,263 @@
+//! The explorer rendered into ratatui's TestBackend: snapshots of the default (Fig. 5) scene, an
+//! invalid field, the help and the too-small screen at 80×24 and 160×48, and checks of colour,
+//! NO_COLOR and markers.
+
+use std::time::Duration;
+
+use hertz_tui::model::ForceModel;
+use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+use hertz_tui::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use hertz_tui::ui::MarkerStyle;
+use hertz_tui::ui::action::Action;
+use hertz_tui::ui::app::{App, Cursor, update};
+use hertz_tui::ui::field::Field;
+use hertz_tui::ui::render::draw;
+use hertz_tui::ui::theme::Theme;
+use hertz_tui::ui::worker;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::buffer::Buffer;
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
+use ratatui::style::Color;
+
+/// The explorer on the built-in default scene, every solve done, with a fixed recompute time.
+fn app_with(marker: MarkerStyle, theme: Theme) -> App {
+    let registry = Registry::builtin().unwrap();
+    let scene = registry.scene(DEFAULT_SCENE).unwrap();
+    let mut app = App::new(scene, registry, marker, theme);
+    settle(&mut app);
+    app
+}
+
+fn app() -> App {
+    app_with(MarkerStyle::Braille, Theme { color: true })
+}
+
+fn settle(app: &mut App) {
+    loop {
+        let jobs = app.take_jobs();
+        if jobs.is_empty() {
+            break;
+        }
+        for job in jobs {
+            update(app, Action::Solved(Ok(worker::solve(&job))));
+        }
+    }
+    // A fixed stand-in for the measured time, so snapshots are deterministic.
+    app.last_recompute = Some(Duration::from_micros(1500));
+}
+
+fn press(app: &mut App, code: KeyCode) {
+    let event = Event::Key(KeyEvent::new(code, KeyModifiers::NONE));
+    if let Some(action) = hertz_tui::ui::keymap::action_for_event(&app.mode, &event) {
+        update(app, action);
+    }
+}
+
+fn render(app: &App, width: u16, height: u16) -> Terminal<TestBackend> {
+    let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
+    terminal.draw(|frame| draw(frame, app)).unwrap();
+    terminal
+}
+
+fn text(buffer: &Buffer) -> String {
+    let width = buffer.area.width as usize;
+    buffer
+        .content
+        .chunks(width)
+        .map(|row| row.iter().map(|c| c.symbol()).collect::<String>())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The app with body 1's ν set to 0.6 by keystrokes: invalid, and the last results stay.
+fn invalid_app() -> App {
+    let mut app = app();
+    app.cursor = Cursor::Field(Field::Number(SceneKey::Body(
+        BodyIndex::One,
+        BodyField::PoissonRatio,
+    )));
+    press(&mut app, KeyCode::Enter);
+    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
+    for c in "0.6".chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    press(&mut app, KeyCode::Enter);
+    app
+}
+
+#[test]
+fn default_scene_80x24() {
+    insta::assert_snapshot!(render(&app(), 80, 24).backend());
+}
+
+#[test]
+fn default_scene_160x48() {
+    insta::assert_snapshot!(render(&app(), 160, 48).backend());
+}
+
+#[test]
+fn invalid_field_80x24() {
+    insta::assert_snapshot!(render(&invalid_app(), 80, 24).backend());
+}
+
+#[test]
+fn invalid_field_160x48() {
+    insta::assert_snapshot!(render(&invalid_app(), 160, 48).backend());
+}
+
+#[test]
+fn help_80x24() {
+    let mut app = app();
+    press(&mut app, KeyCode::Char('?'));
+    insta::assert_snapshot!(render(&app, 80, 24).backend());
+}
+
+#[test]
+fn help_160x48() {
+    let mut app = app();
+    press(&mut app, KeyCode::Char('?'));
+    insta::assert_snapshot!(render(&app, 160, 48).backend());
+}
+
+#[test]
+fn too_small_79x24() {
+    insta::assert_snapshot!(render(&app(), 79, 24).backend());
+}
+
+#[test]
+fn too_small_60x10() {
+    insta::assert_snapshot!(render(&app(), 60, 10).backend());
+}
+
+#[test]
+fn every_size_from_the_minimum_up_draws_without_panicking() {
+    let app = app();
+    for (w, h) in [
+        (80, 24),
+        (81, 25),
+        (99, 31),
+        (119, 39),
+        (120, 40),
+        (200, 60),
+        (30, 5),
+        (1, 1),
+    ] {
+        let screen = text(render(&app, w, h).backend().buffer());
+        if w >= 80 && h >= 24 {
+            assert!(
+                screen.contains("F(x)") || screen.contains("F(t)"),
+                "{w}×{h}"
+            );
+            assert!(!screen.contains("NaN"), "{w}×{h}");
+        }
+    }
+}
+
+#[test]
+fn results_show_every_checked_model_and_the_hertz_estimate() {
+    let app = app();
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    for model in app.checked_models() {
+        assert!(screen.contains(model.label()), "{model}");
+        let x_max = app.solutions.solution(model).unwrap().summary.x_max;
+        let shown = hertz_tui::ui::units::sig(x_max * 1e6, 4);
+        assert!(screen.contains(&shown), "{model}: x_max {shown} µm");
+    }
+    assert!(screen.contains("Hertz estimate"));
+    assert!(screen.contains("yield begins"));
+    assert!(screen.contains("fits: proposed"));
+}
+
+#[test]
+fn invalid_field_is_red_with_the_model_message() {
+    let terminal = render(&invalid_app(), 160, 48);
+    let buffer = terminal.backend().buffer();
+    let screen = text(buffer);
+    let message = "body1.material.poisson_ratio must be in [0, 0.5), got 0.6";
+    let first_line = &message[..30];
+    assert!(screen.contains(first_line), "{screen}");
+    // The cells of the message are red.
+    let (row, line) = screen
+        .lines()
+        .enumerate()
+        .find(|(_, l)| l.contains(first_line))
+        .unwrap();
+    let col = line[..line.find(first_line).unwrap()].chars().count();
+    let cell = &buffer[(col as u16, row as u16)];
+    assert_eq!(cell.fg, Color::LightRed);
+}
+
+#[test]
+fn no_color_draws_without_colours() {
+    let app = app_with(MarkerStyle::Braille, Theme { color: false });
+    let terminal = render(&app, 160, 48);
+    let buffer = terminal.backend().buffer();
+    assert!(
+        buffer
+            .content
+            .iter()
+            .all(|c| matches!(c.fg, Color::Reset) && matches!(c.bg, Color::Reset)),
+        "NO_COLOR: no cell has a colour"
+    );
+    let coloured = render(&self::app(), 160, 48);
+    assert!(
+        coloured
+            .backend()
+            .buffer()
+            .content
+            .iter()
+            .any(|c| c.fg == Color::Yellow),
+        "the proposed model is drawn in yellow with colour on"
+    );
+}
+
+#[test]
+fn markers_follow_the_option() {
+    let braille = text(render(&app(), 160, 48).backend().buffer());
+    assert!(
+        braille
+            .chars()
+            .any(|c| ('\u{2801}'..='\u{28FF}').contains(&c))
+    );
+    let dot = text(
+        render(&app_with(MarkerStyle::Dot, Theme { color: true }), 160, 48)
+            .backend()
+            .buffer(),
+    );
+    assert!(!dot.chars().any(|c| ('\u{2801}'..='\u{28FF}').contains(&c)));
+    assert!(dot.contains('•'));
+    let block = text(
+        render(
+            &app_with(MarkerStyle::Block, Theme { color: true }),
+            160,
+            48,
+        )
+        .backend()
+        .buffer(),
+    );
+    assert!(block.contains('█'));
+}
+
+#[test]
+fn an_edit_changes_the_charts_and_the_results() {
+    let mut app = app();
+    let before = text(render(&app, 160, 48).backend().buffer());
+    press(&mut app, KeyCode::Enter);
+    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
+    for c in "0.05".chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    press(&mut app, KeyCode::Enter);
+    settle(&mut app);
+    let after = text(render(&app, 160, 48).backend().buffer());
+    assert_ne!(before, after);
+    let x_max = app
+        .solutions
+        .solution(ForceModel::Proposed)
+        .unwrap()
+        .summary
+        .x_max;
+    assert!(after.contains(&hertz_tui::ui::units::sig(x_max * 1e6, 4)));
+    assert!(after.contains("v₀     0.05 m/s"));
+}
