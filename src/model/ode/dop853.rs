@@ -12,6 +12,7 @@ use super::{OdeError, OdeSystem, Options, Segment, State, Stats};
 
 const ORDER: u32 = 8;
 
+/// DOP853 stepper state (Prince–Dormand 1981, after Hairer's DOP853).
 pub(super) struct Dop853 {
     /// f(t, y) at the current point (FSAL).
     f: State,

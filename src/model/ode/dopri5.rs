@@ -53,6 +53,7 @@ const D7: f64 = 69997945.0 / 29380423.0;
 /// The classical order that Hairer's starting-step heuristic uses for this pair.
 const ORDER: u32 = 5;
 
+/// DOPRI5 stepper state (Dormand–Prince 1980, after Hairer's DOPRI5).
 pub(super) struct Dopri5 {
     /// f(t, y) at the current point (first stage of the next step, FSAL).
     f: State,

@@ -61,8 +61,9 @@ impl EventTracker {
         // Interior sample times and states are shared by all events.
         let mut ts = [0.0; SUBDIVISIONS + 1];
         let mut ys = [State::zeros(); SUBDIVISIONS + 1];
+        // Index 0 is the step start, whose g values are remembered in `g_prev`; its state is
+        // never needed.
         ts[0] = t_a;
-        ys[0] = segment.eval(t_a);
         for k in 1..SUBDIVISIONS {
             ts[k] = t_a + (t_b - t_a) * (k as f64 / SUBDIVISIONS as f64);
             ys[k] = segment.eval(ts[k]);

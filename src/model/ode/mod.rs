@@ -43,9 +43,11 @@ pub trait OdeSystem {
 pub enum Method {
     /// Explicit Euler, order 1, fixed step.
     Euler,
-    /// Semi-implicit (symplectic) Euler, order 1, fixed step.
+    /// Semi-implicit (symplectic) Euler, order 1, fixed step. Assumes ẋ = v: reads only the
+    /// acceleration f(t, y)[1].
     SymplecticEuler,
-    /// Velocity Verlet, order 2, fixed step.
+    /// Velocity Verlet, order 2, fixed step. Assumes ẋ = v; a velocity-dependent acceleration is
+    /// evaluated at the end of the step with the predicted velocity v + h·a.
     Verlet,
     /// Classic Runge–Kutta, order 4, fixed step.
     Rk4,

@@ -100,6 +100,7 @@ fn eigen() -> Eigen {
     }
 }
 
+/// Radau IIA(5) stepper state (Hairer–Wanner II §IV.8, after Hairer's RADAU5).
 pub(super) struct Radau5 {
     /// f(t, y) at the current point (RADAU5's Y0).
     f0: State,
