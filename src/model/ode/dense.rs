@@ -217,7 +217,8 @@ impl DenseOutput {
         let Some(last) = self.segments.last() else {
             return State::zeros();
         };
-        let t = t.clamp(self.t_start(), self.end);
+        // max/min rather than clamp: never panics, even for hand-pushed segments out of order.
+        let t = t.max(self.t_start()).min(self.end);
         let i = self.segments.partition_point(|s| s.t_end() < t);
         self.segments.get(i).unwrap_or(last).eval(t)
     }
@@ -264,6 +265,20 @@ mod tests {
         assert_eq!(d.len(), 2);
         assert_eq!(d.t_end(), 1.25);
         assert!((d.eval(2.5)[0] - 1.25).abs() < 1e-15);
+    }
+
+    #[test]
+    fn out_of_order_segments_do_not_panic() {
+        // A caller may push segments by hand; evaluation must stay total.
+        let mut d = DenseOutput::new();
+        d.push(line(5.0, 1.0, 1.0));
+        d.push(line(0.0, 1.0, 1.0));
+        assert!(d.eval(3.0)[0].is_finite());
+        // A NaN time must not panic either (the result is meaningless and not checked).
+        let _ = d.eval(f64::NAN);
+        d.truncate_at(-1.0);
+        assert!(d.is_empty());
+        assert_eq!(d.eval(0.5), State::zeros());
     }
 
     #[test]
