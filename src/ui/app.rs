@@ -109,6 +109,8 @@ pub struct App {
     pub draft: Draft,
     /// The scene as last loaded or saved, for the unsaved-changes mark.
     saved: Scene,
+    /// The preset the scene was loaded from or saved as, if any.
+    pub preset: Option<String>,
     pub registry: Registry,
     /// Why the draft scene is invalid, if it is; the results of `valid` stay on screen meanwhile.
     pub scene_error: Option<ModelError>,
@@ -144,9 +146,15 @@ impl App {
         for model in DEFAULT_CHECKED {
             checked[model_index(model)] = true;
         }
+        let preset = registry
+            .scenes()
+            .iter()
+            .find(|info| registry.scene(&info.name).is_ok_and(|s| s == scene))
+            .map(|info| info.name.clone());
         let mut app = App {
             draft: Draft::new(scene.clone(), SolveOptions::default()),
             saved: scene,
+            preset,
             registry,
             scene_error: None,
             valid: None,
@@ -390,15 +398,17 @@ fn normal(app: &mut App, action: Action) {
         Action::Help => app.mode = Mode::Help,
         Action::Presets => {
             let mut picker = Picker::new(&app.registry);
-            picker.select(EntryKind::Scene, &app.draft.scene.name);
+            if let Some(preset) = &app.preset {
+                picker.select(EntryKind::Scene, preset);
+            }
             app.mode = Mode::Picker(picker);
         }
         Action::Save => {
             let name = &app.draft.scene.name;
-            let suggestion = if is_kebab_case(name) {
-                name.clone()
-            } else {
-                kebab_case(name)
+            let suggestion = match &app.preset {
+                Some(preset) => preset.clone(),
+                None if is_kebab_case(name) => name.clone(),
+                None => kebab_case(name),
             };
             app.mode = Mode::Prompt(Prompt {
                 kind: PromptKind::Save,
@@ -409,7 +419,8 @@ fn normal(app: &mut App, action: Action) {
         Action::Export => {
             let model = app.focused;
             if app.solutions.solution(model).is_some() {
-                let path = export::default_path(&app.draft.scene.name, model);
+                let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
+                let path = export::default_path(stem, model);
                 app.mode = Mode::Prompt(Prompt {
                     kind: PromptKind::Export(model),
                     input: Input::new(path.display().to_string()),
@@ -489,6 +500,7 @@ fn picking(app: &mut App, mut picker: Picker, action: Action) {
         EntryKind::Scene => match app.registry.scene(&entry.name) {
             Ok(scene) => {
                 app.load_scene(scene);
+                app.preset = Some(entry.name.clone());
                 app.say(format!("loaded scene {}", entry.name), false);
             }
             Err(e) => app.say(e.to_string(), true),
@@ -548,19 +560,20 @@ fn save(app: &mut App, text: &str) -> Result<String, String> {
         return Err("type a preset name or a path ending in .toml".into());
     }
     let is_path = text.contains(['/', '\\']) || text.ends_with(".toml");
-    let mut scene = app.draft.scene.clone();
+    let scene = app.draft.scene.clone();
     let written = if is_path {
         let path = expand_home(text);
         app.registry
             .save_scene(&scene, None, SaveTarget::Path(&path))
             .map_err(|e| e.to_string())?
     } else {
-        scene.name = text.to_string();
-        app.registry
+        let path = app
+            .registry
             .save_scene(&scene, None, SaveTarget::UserPreset { name: text })
-            .map_err(|e| e.to_string())?
+            .map_err(|e| e.to_string())?;
+        app.preset = Some(text.to_string());
+        path
     };
-    app.draft.scene.name = scene.name.clone();
     app.saved = scene;
     if let Ok(registry) = Registry::load_from(app.registry.user_dir()) {
         app.registry = registry;

@@ -440,3 +440,36 @@ fn shapes_change_the_rows_and_plane_on_plane_is_refused() {
     assert_eq!(a.draft.scene.body1.shape.name(), "cylinder");
     assert!(a.rows().contains(&Cursor::Field(radius)));
 }
+
+#[test]
+fn saving_as_a_user_preset_lists_it_in_the_picker() {
+    let dir = temp_path("presets");
+    let registry = Registry::load_from(Some(&dir)).unwrap();
+    let scene = registry
+        .scene(crate::model::presets::DEFAULT_SCENE)
+        .unwrap();
+    let mut a = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+    assert_eq!(
+        a.preset.as_deref(),
+        Some(crate::model::presets::DEFAULT_SCENE)
+    );
+    key(&mut a, KeyCode::Char('s'));
+    match &a.mode {
+        Mode::Prompt(p) => assert_eq!(p.input.value(), crate::model::presets::DEFAULT_SCENE),
+        other => panic!("{other:?}"),
+    }
+    enter_text(&mut a, "my-fig5");
+    assert!(matches!(a.mode, Mode::Normal), "{:?}", a.message);
+    assert!(dir.join("scenes/my-fig5.toml").is_file());
+    assert_eq!(a.preset.as_deref(), Some("my-fig5"));
+    key(&mut a, KeyCode::Char('p'));
+    let Mode::Picker(picker) = &a.mode else {
+        panic!("{:?}", a.mode)
+    };
+    let selected = picker.selected().unwrap();
+    assert_eq!(
+        (selected.name.as_str(), selected.origin.as_str()),
+        ("my-fig5", "user")
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

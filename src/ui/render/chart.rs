@@ -12,7 +12,7 @@ use crate::ui::app::{App, ChartKind};
 use crate::ui::plot::{Pieces, Series, dash, plot};
 use crate::ui::theme::{LinePattern, Role};
 
-use super::common::{pane, span};
+use super::common::{model_name, pane, span};
 
 /// Columns taken by the y labels and axis line, and rows by the x labels and axis line.
 const Y_AXIS_COLUMNS: u16 = 7;
@@ -30,6 +30,20 @@ fn drawn_models(app: &App) -> Vec<ForceModel> {
         models.push(focused);
     }
     models
+}
+
+/// The legend of the drawn models: line sample and short name in the model's style.
+fn legend(app: &App, models: &[ForceModel]) -> Line<'static> {
+    let mut spans = Vec::new();
+    for &model in ForceModel::ALL.iter().filter(|m| models.contains(m)) {
+        let style = app.theme.model_style(model);
+        spans.push(span(
+            format!(" {} ", LinePattern::of(model).sample()),
+            style,
+        ));
+        spans.push(span(format!("{} ", model_name(model, 9)), style));
+    }
+    Line::from(spans)
 }
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App, kind: ChartKind, roomy: bool) {
@@ -113,6 +127,11 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, kind: ChartKind, roomy: 
                 .data(std::slice::from_ref(peak)),
         );
     }
+    let block = if roomy {
+        block.title_bottom(legend(app, &models))
+    } else {
+        block
+    };
     let axis_style = theme.style(Role::Muted);
     let chart = Chart::new(datasets)
         .block(block)

@@ -155,8 +155,10 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
                     }
                     _ => (field.display(&app.draft), Role::Normal),
                 };
+                let editing = matches!(&app.mode, Mode::Editing(e) if e.field == *field);
+                let label_role = if editing { Role::Cursor } else { Role::Label };
                 let mut line = Line::from(vec![
-                    Span::styled(label, theme.style(Role::Label)),
+                    Span::styled(label, theme.style(label_role)),
                     Span::styled(value, theme.style(value_role)),
                 ]);
                 if under_cursor && !matches!(app.mode, Mode::Editing(_)) {

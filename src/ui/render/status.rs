@@ -14,15 +14,15 @@ use crate::ui::units;
 fn hints(mode: &Mode) -> &'static [(&'static str, &'static str)] {
     match mode {
         Mode::Normal => &[
+            ("?", "help"),
+            ("q", "quit"),
             ("↑↓", "move"),
             ("Enter", "edit"),
             ("←→", "nudge"),
             ("Space", "model"),
-            ("?", "help"),
             ("p", "presets"),
             ("s", "save"),
             ("e", "export"),
-            ("q", "quit"),
         ],
         Mode::Editing(_) => &[("Enter", "commit"), ("Esc", "cancel")],
         Mode::Help => &[("Esc", "close")],
