@@ -1,20 +1,17 @@
-//! The explorer's state and its state machine: `update(&mut App, Action)`. No terminal here.
+//! The explorer's state; its transitions are in [`update`](super::update). No terminal here.
 
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use tui_input::Input;
 
 use crate::model::impact::SolveOptions;
-use crate::model::presets::{Registry, SaveTarget, is_kebab_case, kebab_case};
+use crate::model::presets::Registry;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 
-use super::action::Action;
-use super::export;
-use super::field::{self, Draft, Field, Nudge, Section};
+use super::field::{self, Draft, Field, Section};
 use super::marker::MarkerStyle;
-use super::picker::{EntryKind, Picker};
+use super::picker::Picker;
 use super::solutions::{Job, Solutions};
 use super::theme::Theme;
 
@@ -74,7 +71,7 @@ impl ChartKind {
         ChartKind::ForceTime,
     ];
 
-    fn next(self) -> ChartKind {
+    pub(super) fn next(self) -> ChartKind {
         let i = ChartKind::ALL.iter().position(|&c| c == self).unwrap_or(0);
         ChartKind::ALL[(i + 1) % ChartKind::ALL.len()]
     }
@@ -108,7 +105,7 @@ const DEFAULT_CHECKED: [ForceModel; 4] = [
 pub struct App {
     pub draft: Draft,
     /// The scene as last loaded or saved, for the unsaved-changes mark.
-    saved: Scene,
+    pub(super) saved: Scene,
     /// The preset the scene was loaded from or saved as, if any.
     pub preset: Option<String>,
     pub registry: Registry,
@@ -116,7 +113,7 @@ pub struct App {
     pub scene_error: Option<ModelError>,
     pub valid: Option<Valid>,
     pub solutions: Solutions,
-    checked: [bool; 5],
+    pub(super) checked: [bool; 5],
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -127,12 +124,12 @@ pub struct App {
     pub message: Option<Message>,
     /// Wall time of the last complete recompute (estimate and solves).
     pub last_recompute: Option<Duration>,
-    recompute_started: Option<Instant>,
+    pub(super) recompute_started: Option<Instant>,
     outbox: Vec<Job>,
     pub quit: bool,
 }
 
-fn model_index(model: ForceModel) -> usize {
+pub(super) fn model_index(model: ForceModel) -> usize {
     ForceModel::ALL
         .iter()
         .position(|&m| m == model)
@@ -233,7 +230,7 @@ impl App {
     }
 
     /// The body a material from the picker goes to by default: the one under the cursor.
-    fn cursor_body(&self) -> BodyIndex {
+    pub(super) fn cursor_body(&self) -> BodyIndex {
         match self.cursor {
             Cursor::Field(f) => match f.section() {
                 Section::Body(index) => index,
@@ -243,7 +240,7 @@ impl App {
         }
     }
 
-    fn say(&mut self, text: impl Into<String>, error: bool) {
+    pub(super) fn say(&mut self, text: impl Into<String>, error: bool) {
         self.message = Some(Message {
             text: text.into(),
             error,
@@ -251,7 +248,7 @@ impl App {
     }
 
     /// Re-evaluates the estimate of the draft and requests the solves whose inputs changed.
-    fn recompute(&mut self) {
+    pub(super) fn recompute(&mut self) {
         let start = Instant::now();
         match self.draft.scene.quasistatic() {
             Ok(quasistatic) => {
@@ -269,7 +266,7 @@ impl App {
         self.keep_cursor_on_a_row();
     }
 
-    fn request_solves(&mut self, start: Instant) {
+    pub(super) fn request_solves(&mut self, start: Instant) {
         let Some(valid) = &self.valid else {
             return;
         };
@@ -289,7 +286,7 @@ impl App {
     }
 
     /// After a shape change hides the field under the cursor, falls back to the body's shape.
-    fn keep_cursor_on_a_row(&mut self) {
+    pub(super) fn keep_cursor_on_a_row(&mut self) {
         if let Cursor::Field(f) = self.cursor
             && !self.rows().contains(&self.cursor)
         {
@@ -300,7 +297,7 @@ impl App {
         }
     }
 
-    fn move_cursor(&mut self, forward: bool) {
+    pub(super) fn move_cursor(&mut self, forward: bool) {
         let rows = self.rows();
         let n = rows.len();
         let i = rows.iter().position(|&r| r == self.cursor).unwrap_or(0);
@@ -315,7 +312,7 @@ impl App {
         }
     }
 
-    fn toggle(&mut self, model: ForceModel) {
+    pub(super) fn toggle(&mut self, model: ForceModel) {
         let i = model_index(model);
         self.checked[i] = !self.checked[i];
         self.focused = model;
@@ -324,278 +321,9 @@ impl App {
         }
     }
 
-    fn load_scene(&mut self, scene: Scene) {
+    pub(super) fn load_scene(&mut self, scene: Scene) {
         self.draft = Draft::new(scene.clone(), self.draft.options);
         self.saved = scene;
         self.recompute();
     }
-}
-
-/// Advances the state machine by one action.
-pub fn update(app: &mut App, action: Action) {
-    match action {
-        Action::Quit => app.quit = true,
-        Action::Resize => {}
-        Action::Solved(report) => solved(app, report),
-        action => {
-            app.message = None;
-            match std::mem::replace(&mut app.mode, Mode::Normal) {
-                Mode::Normal => normal(app, action),
-                Mode::Editing(editor) => editing(app, editor, action),
-                Mode::Help => {
-                    if !matches!(action, Action::Cancel | Action::Enter) {
-                        app.mode = Mode::Help;
-                    }
-                }
-                Mode::Picker(picker) => picking(app, picker, action),
-                Mode::Prompt(prompt) => prompting(app, prompt, action),
-            }
-        }
-    }
-}
-
-fn solved(app: &mut App, report: super::worker::Report) {
-    match report {
-        Ok(outcome) => {
-            if app.solutions.accept(outcome) && !app.solutions.any_pending() {
-                app.last_recompute = app.recompute_started.take().map(|s| s.elapsed());
-            }
-        }
-        // The worker only reports errors for solver panics; the runtime ends the app on them.
-        Err(message) => app.say(message, true),
-    }
-}
-
-fn normal(app: &mut App, action: Action) {
-    match action {
-        Action::Up => app.move_cursor(false),
-        Action::Down => app.move_cursor(true),
-        Action::Nudge(direction) => match app.cursor {
-            Cursor::Field(field) => {
-                if field.nudge(direction, &mut app.draft) {
-                    app.recompute();
-                }
-            }
-            Cursor::Model(_) => app.focused = step_model(app.focused, direction),
-        },
-        Action::Enter => match app.cursor {
-            Cursor::Field(field) => {
-                let text = field.edit_text(&app.draft);
-                app.mode = Mode::Editing(Editor {
-                    field,
-                    input: Input::new(text),
-                    error: None,
-                });
-            }
-            Cursor::Model(model) => app.toggle(model),
-        },
-        Action::ToggleModel => match app.cursor {
-            Cursor::Model(model) => app.toggle(model),
-            Cursor::Field(_) => app.toggle(app.focused),
-        },
-        Action::FocusModel(direction) => app.focused = step_model(app.focused, direction),
-        Action::CycleChart => app.chart = app.chart.next(),
-        Action::Help => app.mode = Mode::Help,
-        Action::Presets => {
-            let mut picker = Picker::new(&app.registry);
-            if let Some(preset) = &app.preset {
-                picker.select(EntryKind::Scene, preset);
-            }
-            app.mode = Mode::Picker(picker);
-        }
-        Action::Save => {
-            let name = &app.draft.scene.name;
-            let suggestion = match &app.preset {
-                Some(preset) => preset.clone(),
-                None if is_kebab_case(name) => name.clone(),
-                None => kebab_case(name),
-            };
-            app.mode = Mode::Prompt(Prompt {
-                kind: PromptKind::Save,
-                input: Input::new(suggestion),
-                error: None,
-            });
-        }
-        Action::Export => {
-            let model = app.focused;
-            if app.solutions.solution(model).is_some() {
-                let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
-                let path = export::default_path(stem, model);
-                app.mode = Mode::Prompt(Prompt {
-                    kind: PromptKind::Export(model),
-                    input: Input::new(path.display().to_string()),
-                    error: None,
-                });
-            } else {
-                app.say(
-                    format!(
-                        "no solution of {} to export: check it with Space",
-                        model.label()
-                    ),
-                    true,
-                );
-            }
-        }
-        Action::Cancel
-        | Action::Input(_)
-        | Action::ApplyMaterialTo(_)
-        | Action::Quit
-        | Action::Resize
-        | Action::Solved(_) => {}
-    }
-}
-
-fn step_model(model: ForceModel, direction: Nudge) -> ForceModel {
-    let n = ForceModel::ALL.len();
-    let i = model_index(model);
-    ForceModel::ALL[match direction {
-        Nudge::Up => (i + 1) % n,
-        Nudge::Down => (i + n - 1) % n,
-    }]
-}
-
-fn editing(app: &mut App, mut editor: Editor, action: Action) {
-    match action {
-        Action::Input(request) => {
-            editor.input.handle(request);
-            app.mode = Mode::Editing(editor);
-        }
-        Action::Enter => {
-            let mut draft = app.draft.clone();
-            match editor.field.apply(editor.input.value(), &mut draft) {
-                Ok(()) => {
-                    app.draft = draft;
-                    app.recompute();
-                }
-                Err(reason) => {
-                    editor.error = Some(reason);
-                    app.mode = Mode::Editing(editor);
-                }
-            }
-        }
-        Action::Cancel => {}
-        _ => app.mode = Mode::Editing(editor),
-    }
-}
-
-fn picking(app: &mut App, mut picker: Picker, action: Action) {
-    let target = match action {
-        Action::Up | Action::Down => {
-            picker.step(matches!(action, Action::Down));
-            app.mode = Mode::Picker(picker);
-            return;
-        }
-        Action::Enter => app.cursor_body(),
-        Action::ApplyMaterialTo(index) => index,
-        Action::Cancel => return,
-        _ => {
-            app.mode = Mode::Picker(picker);
-            return;
-        }
-    };
-    let Some(entry) = picker.selected().cloned() else {
-        return;
-    };
-    match entry.kind {
-        EntryKind::Scene => match app.registry.scene(&entry.name) {
-            Ok(scene) => {
-                app.load_scene(scene);
-                app.preset = Some(entry.name.clone());
-                app.say(format!("loaded scene {}", entry.name), false);
-            }
-            Err(e) => app.say(e.to_string(), true),
-        },
-        EntryKind::Material => match app.registry.material(&entry.name) {
-            Ok(material) => {
-                let body = match target {
-                    BodyIndex::One => &mut app.draft.scene.body1,
-                    BodyIndex::Two => &mut app.draft.scene.body2,
-                };
-                body.material = material;
-                app.recompute();
-                let n = if target == BodyIndex::One { 1 } else { 2 };
-                app.say(format!("{} applied to body {n}", entry.name), false);
-            }
-            Err(e) => app.say(e.to_string(), true),
-        },
-    }
-}
-
-fn prompting(app: &mut App, mut prompt: Prompt, action: Action) {
-    match action {
-        Action::Input(request) => {
-            prompt.input.handle(request);
-            app.mode = Mode::Prompt(prompt);
-        }
-        Action::Enter => {
-            let text = prompt.input.value().trim().to_string();
-            let outcome = match prompt.kind {
-                PromptKind::Save => save(app, &text),
-                PromptKind::Export(model) => export_model(app, model, &text),
-            };
-            match outcome {
-                Ok(news) => app.say(news, false),
-                Err(reason) => {
-                    prompt.error = Some(reason);
-                    app.mode = Mode::Prompt(prompt);
-                }
-            }
-        }
-        Action::Cancel => {}
-        _ => app.mode = Mode::Prompt(prompt),
-    }
-}
-
-/// `~/…` with the home folder expanded.
-fn expand_home(text: &str) -> PathBuf {
-    match (text.strip_prefix("~/"), std::env::var_os("HOME")) {
-        (Some(rest), Some(home)) => PathBuf::from(home).join(rest),
-        _ => PathBuf::from(text),
-    }
-}
-
-/// Saves the draft as a user preset (a kebab-case name) or to a path (with `/` or `.toml`).
-fn save(app: &mut App, text: &str) -> Result<String, String> {
-    if text.is_empty() {
-        return Err("type a preset name or a path ending in .toml".into());
-    }
-    let is_path = text.contains(['/', '\\']) || text.ends_with(".toml");
-    let scene = app.draft.scene.clone();
-    let written = if is_path {
-        let path = expand_home(text);
-        app.registry
-            .save_scene(&scene, None, SaveTarget::Path(&path))
-            .map_err(|e| e.to_string())?
-    } else {
-        let path = app
-            .registry
-            .save_scene(&scene, None, SaveTarget::UserPreset { name: text })
-            .map_err(|e| e.to_string())?;
-        app.preset = Some(text.to_string());
-        path
-    };
-    app.saved = scene;
-    if let Ok(registry) = Registry::load_from(app.registry.user_dir()) {
-        app.registry = registry;
-    }
-    Ok(format!("saved {}", written.display()))
-}
-
-fn export_model(app: &App, model: ForceModel, text: &str) -> Result<String, String> {
-    if text.is_empty() {
-        return Err("type a file name".into());
-    }
-    let solution = app
-        .solutions
-        .solution(model)
-        .ok_or_else(|| format!("no solution of {} to export", model.label()))?;
-    let path = expand_home(text);
-    let samples = solution.trajectory.samples(export::EXPORT_SAMPLES);
-    export::write(&path, &samples)?;
-    Ok(format!(
-        "exported {} ({} rows) to {}",
-        model.name(),
-        samples.len(),
-        path.display()
-    ))
 }

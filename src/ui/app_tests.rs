@@ -3,13 +3,14 @@
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
 use super::action::Action;
-use super::app::{App, ChartKind, Cursor, Mode, PromptKind, update};
+use super::app::{App, ChartKind, Cursor, Mode, PromptKind};
 use super::field::Field;
 use super::keymap::action_for_event;
 use super::marker::MarkerStyle;
 use super::picker::EntryKind;
 use super::testing::fig5_scene;
 use super::theme::Theme;
+use super::update::update;
 use super::worker;
 use crate::model::ForceModel;
 use crate::model::presets::Registry;

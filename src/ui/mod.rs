@@ -1,6 +1,6 @@
 //! The terminal explorer (ratatui + crossterm) over the model layer.
 //!
-//! [`app`] holds the state and `update(&mut App, Action)`; [`keymap`] turns keys into actions;
+//! [`app`] holds the state and [`update`] its transitions, `update(&mut App, Action)`; [`keymap`] turns keys into actions;
 //! [`render`] draws one pane per pure function; [`worker`] solves off the UI thread; [`runtime`]
 //! ties them to the terminal. The UI holds no physics: every number comes from `crate::model`.
 
@@ -23,6 +23,7 @@ mod testing;
 pub mod theme;
 pub mod ticks;
 pub mod units;
+pub mod update;
 pub mod worker;
 
 pub use marker::MarkerStyle;

@@ -9,9 +9,10 @@ use ratatui::DefaultTerminal;
 use ratatui::crossterm::event;
 
 use super::action::Action;
-use super::app::{App, update};
+use super::app::App;
 use super::keymap::action_for_event;
 use super::render;
+use super::update::update;
 use super::worker::{Report, Worker};
 
 /// What wakes the loop.
