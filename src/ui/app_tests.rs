@@ -386,6 +386,19 @@ fn export_writes_the_focused_trajectory_as_csv() {
     let f_max = rows.iter().map(|r| r[3]).fold(f64::MIN, f64::max);
     let summary = &a.solutions.solution(ForceModel::Proposed).unwrap().summary;
     assert_eq!(f_max, summary.f_max, "the true peak is among the rows");
+    // A model being solved exports nothing until its solve is done.
+    key(&mut a, KeyCode::Right);
+    key(&mut a, KeyCode::Char('e'));
+    assert!(matches!(a.mode, Mode::Normal));
+    assert!(
+        a.message
+            .as_ref()
+            .is_some_and(|m| m.text.contains("being solved"))
+    );
+    settle(&mut a);
+    key(&mut a, KeyCode::Char('e'));
+    assert!(matches!(a.mode, Mode::Prompt(_)));
+    key(&mut a, KeyCode::Esc);
     // An unchecked model has nothing to export.
     a.focused = ForceModel::DryFriction;
     key(&mut a, KeyCode::Char('e'));

@@ -102,7 +102,12 @@ fn normal(app: &mut App, action: Action) {
         }
         Action::Export => {
             let model = app.focused;
-            if app.solutions.solution(model).is_some() {
+            if app.solutions.is_pending(model) {
+                app.say(
+                    format!("{} is being solved: export when it is done", model.label()),
+                    true,
+                );
+            } else if app.solutions.solution(model).is_some() {
                 let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
                 let path = export::default_path(stem, model);
                 app.mode = Mode::Prompt(Prompt {

@@ -32,16 +32,21 @@ fn drawn_models(app: &App) -> Vec<ForceModel> {
     models
 }
 
-/// The legend of the drawn models: line sample and short name in the model's style.
-fn legend(app: &App, models: &[ForceModel]) -> Line<'static> {
+/// The legend of the drawn models: line sample and short name in the model's style, as many
+/// entries as fit in `width` columns.
+fn legend(app: &App, models: &[ForceModel], width: usize) -> Line<'static> {
     let mut spans = Vec::new();
+    let mut used = 0;
     for &model in ForceModel::ALL.iter().filter(|m| models.contains(m)) {
+        let sample = format!(" {} ", LinePattern::of(model).sample());
+        let name = format!("{} ", model_name(model, 9));
+        used += sample.chars().count() + name.chars().count();
+        if used > width {
+            break;
+        }
         let style = app.theme.model_style(model);
-        spans.push(span(
-            format!(" {} ", LinePattern::of(model).sample()),
-            style,
-        ));
-        spans.push(span(format!("{} ", model_name(model, 9)), style));
+        spans.push(span(sample, style));
+        spans.push(span(name, style));
     }
     Line::from(spans)
 }
@@ -128,7 +133,11 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, kind: ChartKind, roomy: 
         );
     }
     let block = if roomy {
-        block.title_bottom(legend(app, &models))
+        block.title_bottom(legend(
+            app,
+            &models,
+            usize::from(area.width.saturating_sub(2)),
+        ))
     } else {
         block
     };

@@ -78,14 +78,16 @@ pub fn flow<'a>(
     for item in items {
         let item_width: usize = item.iter().map(Span::width).sum();
         let fits = used > 0 && used + gap.width() + item_width <= width;
-        if fits {
-            let line = lines.last_mut().expect("a line exists when used > 0");
-            line.push(gap.clone());
-            line.extend(item);
-            used += gap.width() + item_width;
-        } else {
-            lines.push(item);
-            used = item_width;
+        match lines.last_mut() {
+            Some(line) if fits => {
+                line.push(gap.clone());
+                line.extend(item);
+                used += gap.width() + item_width;
+            }
+            _ => {
+                lines.push(item);
+                used = item_width;
+            }
         }
     }
     lines.truncate(max_lines);
