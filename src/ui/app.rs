@@ -259,16 +259,20 @@ impl App {
                     quasistatic,
                     params,
                 });
-                self.request_solves(start);
+                if !self.request_solves(start) && !self.solutions.any_pending() {
+                    // Only the estimate was recomputed.
+                    self.last_recompute = Some(start.elapsed());
+                }
             }
             Err(error) => self.scene_error = Some(error),
         }
         self.keep_cursor_on_a_row();
     }
 
-    pub(super) fn request_solves(&mut self, start: Instant) {
+    /// Queues the solves of checked models whose inputs changed; returns whether any was queued.
+    pub(super) fn request_solves(&mut self, start: Instant) -> bool {
         let Some(valid) = &self.valid else {
-            return;
+            return false;
         };
         let params = valid.params;
         let mut queued = false;
@@ -280,9 +284,8 @@ impl App {
         }
         if queued {
             self.recompute_started = Some(start);
-        } else if !self.solutions.any_pending() {
-            self.last_recompute = Some(start.elapsed());
         }
+        queued
     }
 
     /// After a shape change hides the field under the cursor, falls back to the body's shape.
@@ -317,6 +320,7 @@ impl App {
         self.checked[i] = !self.checked[i];
         self.focused = model;
         if self.checked[i] {
+            // A cached result needs no solve, and then there is no recompute time to report.
             self.request_solves(Instant::now());
         }
     }
