@@ -82,9 +82,12 @@ pub(crate) mod tests {
         assert!((eta / 2.546e-11 - 1.0).abs() < 5e-4, "{eta}");
     }
 
+    /// A field name and a way to spoil it.
+    type Spoiler = (&'static str, fn(&mut Material));
+
     #[test]
     fn validation_names_each_bad_field() {
-        let cases: [(&str, fn(&mut Material)); 6] = [
+        let cases: [Spoiler; 6] = [
             ("youngs_modulus", |m| m.youngs_modulus = -1.0),
             ("poisson_ratio", |m| m.poisson_ratio = 0.5),
             ("poisson_ratio", |m| m.poisson_ratio = -0.1),
