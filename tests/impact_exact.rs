@@ -155,18 +155,31 @@ fn auto_reports_the_exact_solution_where_one_exists() {
             ForceModel::LankaraniNikravesh,
             ForceModel::DryFriction,
         ] {
-            let got = solve(model, &params, MethodChoice::Auto);
+            let opts = SolveOptions {
+                rtol: 1e-12,
+                atol: 1e-14,
+                ..SolveOptions::default()
+            };
+            let sol = solve_impact(model, &params, &opts).unwrap();
+            let got = &sol.summary;
             assert_eq!(got.method, MethodUsed::Exact, "{model}");
             let ex = exact(model, &params);
             // The quadratures of `auto` aim at 1e-14 here (rtol/100): the same numbers.
-            assert_matches(&got, &ex, 1e-12, &format!("auto {model}"));
-            // The curves drawn for it (DOP853) carry the exact energy balance.
-            assert!(
-                got.energy_residual < 1e-9,
-                "{model}: {}",
-                got.energy_residual
+            assert_matches(got, &ex, 1e-12, &format!("auto {model}"));
+            // No integration was needed for the numbers.
+            assert_eq!(
+                (got.steps, got.force_evals, got.energy_residual),
+                (0, 0, 0.0)
             );
-            assert!(got.steps > 0 && got.force_evals > 0);
+            // The curves, integrated when first sampled, pass through the exact extrema.
+            let traj = &sol.trajectory;
+            let at_x_max = traj.at(ex.t_x_max);
+            assert!(rel(at_x_max.x, ex.x_max) < 1e-9, "{model}: {}", at_x_max.x);
+            assert!(at_x_max.v.abs() < 1e-9 * params.v0);
+            let at_peak = traj.at(ex.t_f_max);
+            assert!(rel(at_peak.f, ex.f_max) < 1e-9, "{model}: {}", at_peak.f);
+            let end = traj.at(ex.t_contact);
+            assert!(rel(-end.v, ex.v_out) < 1e-9, "{model}: {}", end.v);
         }
         // The proposed model has no closed form: the adaptive integrator.
         let proposed = solve(ForceModel::Proposed, &params, MethodChoice::Auto);

@@ -62,6 +62,8 @@ pub fn dry_friction(params: &ImpactParams, p: f64, x_cut: f64, rtol: f64) -> Opt
         // of loading.
         f_max: law.force(x_max) + p * x_max,
         t_f_max: t_x_max,
+        x_f_max: x_max,
+        v_f_max: 0.0,
         t_contact: t_x_max + t_ref * unloading,
         v_out: v0 * v_out,
         x_residual: x_e * x_star,

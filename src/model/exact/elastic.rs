@@ -8,11 +8,14 @@ use crate::model::force::ImpactParams;
 pub fn elastic(params: &ImpactParams) -> ExactImpact {
     let (m, v0, law) = (params.mass, params.v0, params.law);
     let t_contact = law.contact_time(m, v0);
+    let x_max = law.max_approach(m, v0);
     ExactImpact {
-        x_max: law.max_approach(m, v0),
+        x_max,
         t_x_max: 0.5 * t_contact,
         f_max: law.max_force(m, v0),
         t_f_max: 0.5 * t_contact,
+        x_f_max: x_max,
+        v_f_max: 0.0,
         t_contact,
         v_out: v0,
         x_residual: 0.0,

@@ -16,6 +16,12 @@ use super::special::{unloading_root, y_minus_log1p};
 use super::{ExactImpact, elastic::elastic};
 use crate::model::force::ImpactParams;
 
+/// Below this exit value of w = 1 + αẋ the unloading time is integrated in x rather than in V:
+/// the force has then decayed by the factor w before the bodies reach x = 0, and they coast the
+/// rest of the way at an almost constant speed, all of which dt = m·dv/F crowds into the last
+/// ulps of V. The Hunt–Crossley and Lankarani–Nikravesh laws of the paper keep w > 0.3.
+const STRONG_DAMPING: f64 = 0.1;
+
 /// The scaled energy integral of one Hunt–Crossley-family impact.
 #[derive(Debug, Clone, Copy)]
 struct Integral {
@@ -56,6 +62,25 @@ impl Integral {
         } else {
             (self.c - y_minus_log1p(self.a * v), 1.0 + self.a * v)
         }
+    }
+
+    /// The unloading time ∫ dX/|V| from X = 0 to X_m, with V(X) the unloading root of
+    /// G(aV) = (a²/2)·(X_m^{n+1} − X^{n+1}) (the difference formed from d = X_m − X without
+    /// cancellation). Regular at X = 0 and an inverse square root at X_m: tanh-sinh handles both.
+    fn unloading_time_in_x(&self, rtol: f64) -> f64 {
+        let p = self.n + 1.0;
+        let x_m = (2.0 * self.c / (self.a * self.a)).powf(1.0 / p);
+        let half_a2 = 0.5 * self.a * self.a;
+        tanh_sinh(
+            |_, _, d| {
+                let drop = -x_m.powf(p) * (p * (-d / x_m).ln_1p()).exp_m1();
+                let (s, _) = unloading_root(half_a2 * drop);
+                self.a / s
+            },
+            0.0,
+            x_m,
+            rtol,
+        )
     }
 
     /// Scaled force f = Xⁿ·u, u = 1 + aV, f = F/(k·x_eⁿ) (eqs 19–20), X^{n+1} = 2D/a².
@@ -109,21 +134,27 @@ pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactI
         v_peak,
         rtol,
     );
-    let unloading = tanh_sinh(
-        |v, from_exit, _| {
-            let (d, u) = hc.d_unloading(v, from_exit);
-            hc.dt_dv(d, u)
-        },
-        -v_out,
-        0.0,
-        rtol,
-    );
+    let unloading = if w >= STRONG_DAMPING {
+        tanh_sinh(
+            |v, from_exit, _| {
+                let (d, u) = hc.d_unloading(v, from_exit);
+                hc.dt_dv(d, u)
+            },
+            -v_out,
+            0.0,
+            rtol,
+        )
+    } else {
+        hc.unloading_time_in_x(rtol)
+    };
 
     let exact = ExactImpact {
         x_max: x_e * (2.0 * c / (a * a)).powf(1.0 / (n + 1.0)),
         t_x_max: t_ref * (to_peak + peak_to_x_max),
         f_max: f_ref * hc.force(d_peak, 1.0 + a * v_peak),
         t_f_max: t_ref * to_peak,
+        x_f_max: x_e * (2.0 * d_peak / (a * a)).powf(1.0 / (n + 1.0)),
+        v_f_max: v0 * v_peak,
         t_contact: t_ref * (to_peak + peak_to_x_max + unloading),
         v_out: v0 * v_out,
         x_residual: 0.0,

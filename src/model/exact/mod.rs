@@ -24,6 +24,10 @@ pub struct ExactImpact {
     pub f_max: f64,
     /// Time of the peak force, s.
     pub t_f_max: f64,
+    /// Approach at the peak force, m.
+    pub x_f_max: f64,
+    /// Velocity ẋ at the peak force, m/s.
+    pub v_f_max: f64,
     /// Duration of contact, s.
     pub t_contact: f64,
     /// Exit speed |ẋ| when contact ends, m/s.
@@ -35,18 +39,21 @@ pub struct ExactImpact {
 }
 
 impl ExactImpact {
-    /// Every number finite and non-negative: what a caller may rely on before reporting it.
+    /// Every number finite, and all but the peak velocity non-negative: what a caller may rely on
+    /// before reporting it.
     pub fn is_valid(&self) -> bool {
-        [
-            self.x_max,
-            self.t_x_max,
-            self.f_max,
-            self.t_f_max,
-            self.t_contact,
-            self.v_out,
-            self.x_residual,
-        ]
-        .iter()
-        .all(|q| q.is_finite() && *q >= 0.0)
+        self.v_f_max.is_finite()
+            && [
+                self.x_max,
+                self.t_x_max,
+                self.f_max,
+                self.t_f_max,
+                self.x_f_max,
+                self.t_contact,
+                self.v_out,
+                self.x_residual,
+            ]
+            .iter()
+            .all(|q| q.is_finite() && *q >= 0.0)
     }
 }

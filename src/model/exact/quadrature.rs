@@ -80,6 +80,22 @@ pub fn tanh_sinh(mut f: impl FnMut(f64, f64, f64) -> f64, a: f64, b: f64, rtol: 
     estimate
 }
 
+/// Four-point Gauss–Legendre nodes on [−1, 1] (positive half; the rule is symmetric).
+pub const GL4_NODES: [f64; 2] = [0.339_981_043_584_856_3, 0.861_136_311_594_052_6];
+/// Weights matching [`GL4_NODES`].
+pub const GL4_WEIGHTS: [f64; 2] = [0.652_145_154_862_546_1, 0.347_854_845_137_453_9];
+
+/// ∫ₐᵇ f by four-point Gauss–Legendre: exact for polynomials of degree ≤ 7.
+pub fn gauss_legendre_4(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
+    let c = 0.5 * (a + b);
+    let r = 0.5 * (b - a);
+    let mut sum = 0.0;
+    for (x, w) in GL4_NODES.iter().zip(GL4_WEIGHTS) {
+        sum += w * (f(c - r * x) + f(c + r * x));
+    }
+    r * sum
+}
+
 /// Six-point Gauss–Legendre nodes on [−1, 1] (positive half; the rule is symmetric).
 pub const GL6_NODES: [f64; 3] = [
     0.238_619_186_083_196_9,
@@ -108,6 +124,15 @@ pub fn gauss_legendre_6(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
     use statrs::function::beta::beta;
+
+    #[test]
+    fn four_point_gauss_legendre_is_exact_to_degree_seven() {
+        let got = gauss_legendre_4(|x| x.powi(7) - 3.0 * x.powi(2), -1.0, 3.0);
+        let exact = (3f64.powi(8) - 1.0) / 8.0 - (27.0 + 1.0);
+        assert!((got / exact - 1.0).abs() < 1e-14, "{got} vs {exact}");
+        let deg8 = gauss_legendre_4(|x| x.powi(8), 0.0, 1.0);
+        assert!((deg8 * 9.0 - 1.0).abs() > 1e-6);
+    }
 
     #[test]
     fn gauss_legendre_is_exact_to_degree_eleven() {

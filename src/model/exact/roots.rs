@@ -80,6 +80,86 @@ pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> Option<f64> {
     Some(b)
 }
 
+/// The maximum of `f` on [a, b], assumed unimodal there, by golden-section search with parabolic
+/// steps (Brent's `fmin`), to a bracket of ~√ε relative width: f itself is then exact to ~ε.
+/// Returns (argmax, max); an end of the interval if f is monotone.
+pub fn brent_max(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
+    const GOLDEN: f64 = 0.381_966_011_250_105_1;
+    let (mut a, mut b) = (a.min(b), a.max(b));
+    let mut x = a + GOLDEN * (b - a);
+    let (mut w, mut v) = (x, x);
+    let mut fx = -f(x);
+    let (mut fw, mut fv) = (fx, fx);
+    let (mut d, mut e) = (0.0_f64, 0.0_f64);
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        let tol = f64::EPSILON.sqrt() * x.abs() + 1e-300;
+        if (x - m).abs() <= 2.0 * tol - 0.5 * (b - a) {
+            break;
+        }
+        let mut golden = true;
+        if e.abs() > tol {
+            // Parabola through (v, fv), (w, fw), (x, fx).
+            let r = (x - w) * (fx - fv);
+            let q = (x - v) * (fx - fw);
+            let mut p = (x - v) * q - (x - w) * r;
+            let mut q = 2.0 * (q - r);
+            if q > 0.0 {
+                p = -p;
+            } else {
+                q = -q;
+            }
+            if p.abs() < (0.5 * q * e).abs() && p > q * (a - x) && p < q * (b - x) {
+                e = d;
+                d = p / q;
+                let u = x + d;
+                if u - a < 2.0 * tol || b - u < 2.0 * tol {
+                    d = tol.copysign(m - x);
+                }
+                golden = false;
+            }
+        }
+        if golden {
+            e = if x < m { b - x } else { a - x };
+            d = GOLDEN * e;
+        }
+        let u = if d.abs() >= tol {
+            x + d
+        } else {
+            x + tol.copysign(d)
+        };
+        let fu = -f(u);
+        if fu <= fx {
+            if u < x {
+                b = x;
+            } else {
+                a = x;
+            }
+            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
+        } else {
+            if u < x {
+                a = u;
+            } else {
+                b = u;
+            }
+            if fu <= fw || w == x {
+                (v, fv, w, fw) = (w, fw, u, fu);
+            } else if fu <= fv || v == x || v == w {
+                (v, fv) = (u, fu);
+            }
+        }
+    }
+    // The ends, for a monotone f.
+    let (fa, fb) = (f(a), f(b));
+    if fa > -fx && fa >= fb {
+        (a, fa)
+    } else if fb > -fx {
+        (b, fb)
+    } else {
+        (x, -fx)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -90,6 +170,16 @@ mod tests {
         assert!((r - 2f64.sqrt()).abs() < 4e-16);
         let r = brent(|x| x.cos() - x, 0.0, 1.0).unwrap();
         assert!((r.cos() - r).abs() < 1e-15);
+    }
+
+    #[test]
+    fn maximises_a_smooth_peak() {
+        // sin peaks at π/2; the value is exact to ε even though the argument is only to √ε.
+        let (t, f) = brent_max(f64::sin, 0.3, 2.9);
+        assert!((t - std::f64::consts::FRAC_PI_2).abs() < 1e-7, "{t}");
+        assert!((f - 1.0).abs() < 1e-15);
+        // A monotone function peaks at an end.
+        assert_eq!(brent_max(|x| x, 0.0, 1.0), (1.0, 1.0));
     }
 
     #[test]

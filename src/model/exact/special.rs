@@ -30,7 +30,12 @@ pub fn unloading_root(c: f64) -> (f64, f64) {
     }
     if c > 1.0 {
         // w = e^{w − 1 − c} < e^{−2}: Newton on ln w − w + 1 + c = 0 from the fixed-point guess.
-        let mut w = (-lambert_w0(-(-(1.0 + c)).exp())).max((-1.0 - c).exp());
+        let floor = (-1.0 - c).exp();
+        if floor == 0.0 {
+            // e^{−1−c} underflows (c > 744): w is below the smallest double.
+            return (1.0, 0.0);
+        }
+        let mut w = (-lambert_w0(-floor)).max(floor);
         for _ in 0..50 {
             let step = (w.ln() - w + 1.0 + c) * w / (1.0 - w);
             w -= step;
@@ -117,6 +122,8 @@ mod tests {
             assert!(((w.ln() - w + 1.0 + c) / c).abs() < 1e-15, "{c}: {w}");
             assert!((s - (1.0 - w)).abs() <= f64::EPSILON);
         }
+        // Beyond the range of doubles w is 0 and s exactly 1, not NaN.
+        assert_eq!(unloading_root(800.0), (1.0, 0.0));
     }
 
     #[test]

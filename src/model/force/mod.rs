@@ -35,7 +35,8 @@ pub struct ImpactParams {
 
 impl ImpactParams {
     /// Checks m > 0, a valid power law (k > 0, n ≥ 1), v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0, all finite, and
-    /// that the elastic scales x_max and t_c are finite and non-zero (they scale the solver).
+    /// that the elastic scales x_max, x_max/v₀ and F_max are finite and non-zero (they scale the
+    /// solver; t_c is x_max/v₀ times a constant of n).
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("mass", self.mass)?;
         PowerLaw::new(self.law.k, self.law.n)?;
@@ -50,16 +51,16 @@ impl ImpactParams {
             |x| x >= 0.0,
         )?;
         let x_max = self.law.max_approach(self.mass, self.v0);
-        let t_c = self.law.contact_time(self.mass, self.v0);
+        let t_ref = x_max / self.v0;
         let f_max = self.law.force(x_max);
-        if [x_max, t_c, f_max]
+        if [x_max, t_ref, f_max]
             .iter()
             .any(|q| !(q.is_finite() && q.is_normal()))
         {
             return Err(ModelError::OutOfDomain {
                 formula: "elastic impact scales (eqs 5–7)",
                 detail: format!(
-                    "x_max = {x_max:e} m, t_c = {t_c:e} s, F_max = {f_max:e} N are not all finite and non-zero"
+                    "x_max = {x_max:e} m, x_max/v₀ = {t_ref:e} s, F_max = {f_max:e} N are not all finite and non-zero"
                 ),
             });
         }

@@ -47,16 +47,13 @@ impl ForceLaw for Proposed {
         self.b * abs_pow_nm1(x, self.params.law.n) * v
     }
 
-    /// (n·k·xⁿ⁻¹ + (n−1)·b·xⁿ⁻²·ẋ, b·xⁿ⁻¹) (eq 18 differentiated). xⁿ⁻² is singular at x = 0 for
-    /// n < 2; |x| is kept above the smallest normal number so the result stays finite.
+    /// (n·k·xⁿ⁻¹ + (n−1)·b·xⁿ⁻²·ẋ, b·xⁿ⁻¹) (eq 18 differentiated). xⁿ⁻² = xⁿ⁻¹/x is singular at
+    /// x = 0 for n < 2; |x| is kept above the smallest normal number so the result stays finite.
     fn partials(&self, x: f64, v: f64, _phase: Phase) -> (f64, f64) {
         let (k, n) = (self.params.law.k, self.params.law.n);
         let xnm1 = abs_pow_nm1(x, n);
-        let xnm2 = if n == 1.0 {
-            0.0
-        } else {
-            x.abs().max(f64::MIN_POSITIVE).powf(n - 2.0) * x.signum()
-        };
+        let ax = x.abs().max(f64::MIN_POSITIVE);
+        let xnm2 = abs_pow_nm1(ax, n) / ax * x.signum();
         (n * k * xnm1 + (n - 1.0) * self.b * xnm2 * v, self.b * xnm1)
     }
 

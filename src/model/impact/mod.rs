@@ -234,7 +234,7 @@ fn solve_with<L: ForceLaw>(
             };
             let run = phases::run(law, scales, &ro)?;
             let summary = summary::summarize(law, scales, &run, MethodUsed::Integrator(method));
-            let trajectory = Trajectory::new(any, *scales, run, &summary);
+            let trajectory = Trajectory::integrated(any, *scales, run, &summary);
             Ok(ImpactSolution {
                 summary,
                 trajectory,

@@ -1,75 +1,177 @@
 //! The continuous (t, x, v, F) curves of a solved impact, sampled on demand.
 
+use std::sync::OnceLock;
+
 use crate::model::force::{AnyLaw, ForceLaw, Phase};
 use crate::model::ode::{DenseOutput, State};
 
-use super::phases::Run;
+use super::phases::{self, Run, RunOptions};
 use super::scale::Scales;
 use super::{ImpactSummary, Sample};
 
-/// The curves of one impact. Sample it at the resolution the consumer can show.
-///
-/// Holds both phases' dense outputs (scaled variables) and the force law, so any t in the contact
-/// can be evaluated; and the extrema of the summary, so that sampled charts peak where the
-/// numbers say (for exact solutions, the exact values).
-#[derive(Debug, Clone)]
-pub struct Trajectory {
-    law: AnyLaw,
-    scales: Scales,
+/// Both phases' dense outputs, in scaled variables.
+#[derive(Debug, Clone, Default)]
+struct Curves {
     loading: DenseOutput,
     unloading: DenseOutput,
     /// Scaled time of the phase switch on the dense output.
     t_switch: f64,
+}
+
+impl From<Run> for Curves {
+    fn from(run: Run) -> Self {
+        Curves {
+            loading: run.loading,
+            unloading: run.unloading,
+            t_switch: run.t_switch,
+        }
+    }
+}
+
+/// The curves of one impact. Sample it at the resolution the consumer can show.
+///
+/// Holds both phases' dense outputs (scaled variables) and the force law, so any t in the contact
+/// can be evaluated; and the extrema of the summary, so that sampled charts peak where the numbers
+/// say (for exact solutions, the exact values). For an exact solution the curves are integrated by
+/// DOP853 at tight tolerance on first use, so that solves whose curves nobody draws (sweeps,
+/// reference values) cost only the exact solution.
+#[derive(Debug, Clone)]
+pub struct Trajectory {
+    law: AnyLaw,
+    scales: Scales,
+    curves: OnceLock<Curves>,
+    /// How to integrate the curves when they are first needed (exact solutions).
+    pending: Option<RunOptions>,
     /// End of contact, s.
     t_end: f64,
-    /// Extrema in time order: force peak, maximum compression (two samples where the force
-    /// jumps there), end of contact.
+    /// Extrema in time order: force peak, maximum compression (two samples where the force jumps
+    /// there), end of contact.
     marks: Vec<Sample>,
 }
 
 impl Trajectory {
-    /// The curves of `run` with the extrema of `summary` (which may come from an exact solution).
-    pub(crate) fn new(law: AnyLaw, scales: Scales, run: Run, summary: &ImpactSummary) -> Self {
-        let mut traj = Trajectory {
+    /// The curves of an integrated `run`, with the extrema of its `summary`.
+    pub(crate) fn integrated(
+        law: AnyLaw,
+        scales: Scales,
+        run: Run,
+        summary: &ImpactSummary,
+    ) -> Self {
+        let mut traj = Self::bare(law, scales, summary);
+        traj.curves = OnceLock::from(Curves::from(run));
+        let peak = traj.at(summary.t_f_max);
+        traj.mark(summary, (peak.x, peak.v));
+        traj
+    }
+
+    /// The curves of an exact solution `summary`, integrated with `curve` when first sampled;
+    /// `peak` is the state (x, ẋ) at the force peak.
+    pub(crate) fn deferred(
+        law: AnyLaw,
+        scales: Scales,
+        curve: RunOptions,
+        summary: &ImpactSummary,
+        peak: (f64, f64),
+    ) -> Self {
+        let mut traj = Self::bare(law, scales, summary);
+        traj.pending = Some(curve);
+        traj.mark(summary, peak);
+        traj
+    }
+
+    fn bare(law: AnyLaw, scales: Scales, summary: &ImpactSummary) -> Self {
+        Trajectory {
             law,
             scales,
-            loading: run.loading,
-            unloading: run.unloading,
-            t_switch: run.t_switch,
+            curves: OnceLock::new(),
+            pending: None,
             t_end: summary.t_contact,
             marks: Vec::with_capacity(4),
-        };
+        }
+    }
+
+    /// The extrema of `summary` as samples, in time order; `peak` is the state at the force peak.
+    fn mark(&mut self, summary: &ImpactSummary, (x_peak, v_peak): (f64, f64)) {
+        let law = self.law;
         let at_rest = |phase| Sample {
             t: summary.t_x_max,
             x: summary.x_max,
             v: 0.0,
             f: law.phase_force(summary.x_max, 0.0, phase),
         };
-        let peak = Sample {
-            f: summary.f_max,
-            ..traj.at(summary.t_f_max)
-        };
         let loading_end = at_rest(Phase::Loading);
-        if summary.t_f_max != summary.t_x_max {
-            traj.marks.push(peak);
-            traj.marks.push(loading_end);
-        } else {
-            traj.marks.push(Sample {
+        let mut marks = Vec::with_capacity(4);
+        if summary.t_f_max == summary.t_x_max {
+            marks.push(Sample {
                 f: summary.f_max,
                 ..loading_end
             });
+        } else {
+            marks.push(Sample {
+                t: summary.t_f_max,
+                x: x_peak,
+                v: v_peak,
+                f: summary.f_max,
+            });
+            marks.push(loading_end);
         }
         if law.switches_at_max_compression() {
-            traj.marks.push(at_rest(Phase::Unloading));
+            marks.push(at_rest(Phase::Unloading));
         }
-        traj.marks.push(Sample {
+        marks.push(Sample {
             t: summary.t_contact,
             x: summary.x_residual,
             v: -summary.v_out,
             f: law.force(summary.x_residual, -summary.v_out),
         });
-        traj.marks.sort_by(|a, b| a.t.total_cmp(&b.t));
-        traj
+        marks.sort_by(|a, b| a.t.total_cmp(&b.t));
+        self.marks = marks;
+    }
+
+    /// First contact: x = 0, ẋ = v₀.
+    fn start(&self) -> Sample {
+        let v0 = self.scales.v;
+        Sample {
+            t: 0.0,
+            x: 0.0,
+            v: v0,
+            f: self.law.force(0.0, v0),
+        }
+    }
+
+    /// The curves, integrating them first if this trajectory was deferred. A failed integration
+    /// leaves them empty, and the trajectory falls back to its extrema.
+    fn curves(&self) -> &Curves {
+        self.curves.get_or_init(|| match &self.pending {
+            Some(ro) => phases::run(&self.law, &self.scales, ro)
+                .map(Curves::from)
+                .unwrap_or_default(),
+            None => Curves::default(),
+        })
+    }
+
+    /// Scaled state and phase at time t (s), `None` without curves.
+    fn state_at(&self, t: f64) -> Option<(State, Phase)> {
+        let curves = self.curves();
+        if curves.loading.is_empty() || curves.unloading.is_empty() {
+            return None;
+        }
+        let tau = t / self.scales.t;
+        Some(if tau <= curves.t_switch {
+            (curves.loading.eval(tau), Phase::Loading)
+        } else if tau <= curves.unloading.t_end() {
+            (curves.unloading.eval(tau), Phase::Unloading)
+        } else {
+            // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
+            // below the integrator's resolution and it cut contact off): the bodies coast.
+            let t_curve = curves.unloading.t_end();
+            let end = curves.unloading.eval(t_curve);
+            let coast = end[1] * (tau - t_curve);
+            (
+                State::new((end[0] + coast).max(0.0), end[1]),
+                Phase::Unloading,
+            )
+        })
     }
 
     /// Duration of contact covered, s.
@@ -79,30 +181,29 @@ impl Trajectory {
 
     /// The state and force at time t in [0, t_end] (clamped to it).
     pub fn at(&self, t: f64) -> Sample {
-        let sc = &self.scales;
         let t = t.clamp(0.0, self.t_end);
-        let tau = t / sc.t;
-        let (y, phase) = if tau <= self.t_switch {
-            (self.loading.eval(tau), Phase::Loading)
-        } else if tau <= self.unloading.t_end() {
-            (self.unloading.eval(tau), Phase::Unloading)
-        } else {
-            // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
-            // below the integrator's resolution and it cut contact off): the bodies coast.
-            let end = self.unloading.eval(self.unloading.t_end());
-            let coast = end[1] * (tau - self.unloading.t_end());
-            (
-                State::new((end[0] + coast).max(0.0), end[1]),
-                Phase::Unloading,
-            )
+        let Some((y, phase)) = self.state_at(t) else {
+            return self.between_marks(t);
         };
-        let (x, v) = (y[0] * sc.x, y[1] * sc.v);
+        let (x, v) = (y[0] * self.scales.x, y[1] * self.scales.v);
         let f = if x > 0.0 {
             self.law.phase_force(x, v, phase)
         } else {
             0.0
         };
         Sample { t, x, v, f }
+    }
+
+    /// Without curves: linear between first contact and the extrema.
+    fn between_marks(&self, t: f64) -> Sample {
+        let mut prev = self.start();
+        for mark in &self.marks {
+            if mark.t >= t {
+                return lerp(&prev, mark, t);
+            }
+            prev = *mark;
+        }
+        prev
     }
 
     /// `n` samples evenly spaced in t over the contact, with the exact extrema
@@ -135,5 +236,20 @@ impl Trajectory {
     /// The extrema inserted by [`Trajectory::samples`], in time order.
     pub fn extrema(&self) -> &[Sample] {
         &self.marks
+    }
+}
+
+/// Linear interpolation between two samples at time t.
+fn lerp(a: &Sample, b: &Sample, t: f64) -> Sample {
+    let s = if b.t > a.t {
+        ((t - a.t) / (b.t - a.t)).clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    Sample {
+        t,
+        x: a.x + s * (b.x - a.x),
+        v: a.v + s * (b.v - a.v),
+        f: a.f + s * (b.f - a.f),
     }
 }

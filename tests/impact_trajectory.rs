@@ -1,0 +1,139 @@
+//! The curves of a solved impact: `at(t)` against the exact elastic motion, `samples(n)` with the
+//! extrema inserted, and the dry-friction jump at maximum compression drawn as two samples.
+
+use hertz_tui::model::PowerLaw;
+use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_impact};
+use hertz_tui::model::ode::Method;
+
+fn fig5(restitution: f64) -> ImpactParams {
+    ImpactParams {
+        mass: 0.033,
+        law: PowerLaw {
+            k: 1.465e10,
+            n: 1.5,
+        },
+        v0: 0.3,
+        restitution,
+        plastic_indentation: 2.3e-6,
+    }
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a / b - 1.0).abs()
+}
+
+#[test]
+fn elastic_curve_follows_the_incomplete_beta_solution() {
+    // t(x) = (x_max/v₀)·B(u; 1/(n+1), ½)/(n+1), u = (x/x_max)^{n+1} (physics notes §3): the
+    // trajectory of `auto` (exact numbers, DOP853 curves at rtol 1e-10) passes through
+    // (t(x), x, v(x)) to 1e-9 of x_max, v₀ and F_max.
+    let p = fig5(1.0);
+    let (m, v0, law) = (p.mass, p.v0, p.law);
+    let sol = solve_impact(ForceModel::Quasistatic, &p, &SolveOptions::default()).unwrap();
+    let x_max = law.max_approach(m, v0);
+    for frac in [0.05, 0.3, 0.6, 0.9, 0.999] {
+        let x = frac * x_max;
+        let t = law.loading_time_at(m, v0, x);
+        let s = sol.trajectory.at(t);
+        let f_max = law.force(x_max);
+        assert!((s.x - x).abs() < 1e-9 * x_max, "x at {frac}: {}", s.x);
+        let v = law.loading_velocity_at(m, v0, x);
+        assert!((s.v - v).abs() < 1e-9 * v0, "v at {frac}: {} vs {v}", s.v);
+        assert!((s.f - law.force(x)).abs() < 1e-9 * f_max, "F at {frac}");
+        // Unloading mirrors loading in time.
+        let back = sol.trajectory.at(sol.trajectory.t_end() - t);
+        assert!((back.x - x).abs() < 1e-9 * x_max, "x mirror at {frac}");
+        assert!((back.v + v).abs() < 1e-9 * v0, "v mirror at {frac}");
+    }
+}
+
+#[test]
+fn samples_are_even_in_time_with_the_extrema_inserted() {
+    let p = fig5(0.6);
+    for model in ForceModel::ALL {
+        for method in [
+            MethodChoice::Auto,
+            MethodChoice::Integrator(Method::Dopri5),
+            MethodChoice::Integrator(Method::Rk4),
+        ] {
+            let opts = SolveOptions {
+                method,
+                ..SolveOptions::default()
+            };
+            let sol = solve_impact(model, &p, &opts).unwrap();
+            let (s, traj) = (&sol.summary, &sol.trajectory);
+            let samples = traj.samples(50);
+            let what = format!("{model} {method}");
+            assert_eq!(samples.len(), 50 + traj.extrema().len() - 1, "{what}");
+            assert!(
+                samples.windows(2).all(|w| w[0].t <= w[1].t),
+                "{what}: time order"
+            );
+            assert_eq!((samples[0].t, samples[0].x), (0.0, 0.0));
+            let last = samples.last().unwrap();
+            assert_eq!(last.t, s.t_contact, "{what}");
+            assert_eq!(last.x, s.x_residual);
+            assert_eq!(-last.v, s.v_out);
+            // The chart's peaks are the summary's, exactly.
+            let f_peak = samples.iter().map(|q| q.f).fold(f64::MIN, f64::max);
+            let x_peak = samples.iter().map(|q| q.x).fold(f64::MIN, f64::max);
+            assert_eq!(f_peak, s.f_max, "{what}");
+            assert_eq!(x_peak, s.x_max, "{what}");
+            assert!(samples.iter().any(|q| q.t == s.t_f_max && q.f == s.f_max));
+            assert!(samples.iter().any(|q| q.t == s.t_x_max && q.v == 0.0));
+            // Even samples are at t_end·i/49 (the extrema sit between them).
+            let even: Vec<f64> = samples
+                .iter()
+                .map(|q| q.t)
+                .filter(|t| {
+                    ((t / s.t_contact * 49.0).round() / 49.0 * s.t_contact - t).abs() < 1e-18
+                })
+                .collect();
+            assert!(even.len() >= 48, "{what}: {} even samples", even.len());
+        }
+    }
+}
+
+#[test]
+fn dry_friction_force_jump_is_drawn_as_two_samples() {
+    // At ẋ = 0 the friction term flips from +P·x to −P·x: the chart gets both ends of the jump at
+    // t_x_max, loading first.
+    let p = ImpactParams {
+        v0: 0.03,
+        restitution: 0.9,
+        ..fig5(0.9)
+    };
+    let sol = solve_impact(ForceModel::DryFriction, &p, &SolveOptions::default()).unwrap();
+    let s = &sol.summary;
+    let at_switch: Vec<_> = sol
+        .trajectory
+        .samples(20)
+        .into_iter()
+        .filter(|q| q.t == s.t_x_max)
+        .collect();
+    assert_eq!(at_switch.len(), 2);
+    let p_fric = hertz_tui::model::force::dry_friction::DryFriction::new(&p).p();
+    assert_eq!(at_switch[0].f, s.f_max);
+    assert!(rel(at_switch[0].f - at_switch[1].f, 2.0 * p_fric * s.x_max) < 1e-12);
+    // `at` belongs to loading up to the switch and to unloading after it (the curves' own switch,
+    // within 1e-10 of the exact t_x_max).
+    let before = sol.trajectory.at(s.t_x_max * (1.0 - 1e-9));
+    let after = sol.trajectory.at(s.t_x_max * (1.0 + 1e-9));
+    assert!(rel(before.f, s.f_max) < 1e-9);
+    assert!(rel(before.f - after.f, 2.0 * p_fric * s.x_max) < 1e-6);
+}
+
+#[test]
+fn at_clamps_to_the_contact_and_small_requests_are_served() {
+    let p = fig5(0.6);
+    let sol = solve_impact(ForceModel::HuntCrossley, &p, &SolveOptions::default()).unwrap();
+    let traj = &sol.trajectory;
+    assert_eq!(traj.at(-1.0).t, 0.0);
+    assert_eq!(traj.at(1.0).t, traj.t_end());
+    // n = 0 and n = 1 still include the extrema; every sample is finite.
+    assert_eq!(traj.samples(0).len(), traj.extrema().len());
+    let one = traj.samples(1);
+    assert_eq!(one[0].t, 0.0);
+    assert!(one.iter().all(|q| q.f.is_finite() && q.x.is_finite()));
+}
