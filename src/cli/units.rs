@@ -69,7 +69,11 @@ pub fn scientific(value: f64, unit: &str) -> String {
     if !value.is_finite() {
         return NOT_A_NUMBER.into();
     }
-    let text = format!("{value:.3e}");
+    let text = if value == 0.0 {
+        "0".to_string()
+    } else {
+        format!("{value:.3e}")
+    };
     if unit.is_empty() {
         text
     } else {
@@ -134,6 +138,7 @@ mod tests {
     fn scientific_and_significant() {
         assert_eq!(scientific(1.465e10, "N/m^1.5"), "1.465e10 N/m^1.5");
         assert_eq!(scientific(9.1e-12, ""), "9.100e-12");
+        assert_eq!(scientific(0.0, ""), "0");
         assert_eq!(significant(0.61234, 4), "0.6123");
         assert_eq!(significant(1.5, 4), "1.500");
         assert_eq!(significant(99.999, 4), "100.0");
