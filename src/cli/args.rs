@@ -6,6 +6,7 @@ use crate::model::ForceModel;
 use crate::model::impact::MethodChoice;
 use crate::model::overrides::Override;
 use crate::model::presets::DEFAULT_SCENE;
+use crate::model::scene_key::SceneKey;
 use crate::ui::MarkerStyle;
 
 /// Explore impact contact forces: Hertz contact, dry friction, Hunt–Crossley, Lankarani–Nikravesh
@@ -32,11 +33,16 @@ pub enum Command {
     List,
     /// Evaluate a scene: the quasistatic Hertz estimate and the impact of each force model.
     Solve(SolveArgs),
+    /// Speed against accuracy: every method over a ladder of tolerances or step sizes, errors
+    /// against the exact (or DOP853 rtol 1e-13) solution; --stability: largest stable steps.
+    Bench(BenchArgs),
+    /// Vary one scene key over a range and solve every point (in parallel; rows in order).
+    Sweep(SweepArgs),
 }
 
-/// Options of `hertz-tui solve`.
+/// The scene a headless command works on.
 #[derive(Debug, Args)]
-pub struct SolveArgs {
+pub struct SceneSelection {
     /// A preset name (see `hertz-tui list`) or the path of a scene file.
     #[arg(long, value_name = "NAME|PATH")]
     pub scene: String,
@@ -44,6 +50,13 @@ pub struct SolveArgs {
     /// body1.shape=plane, body1.material=aluminium-alloy, body1.material.youngs_modulus=7e10.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
+}
+
+/// Options of `hertz-tui solve`.
+#[derive(Debug, Args)]
+pub struct SolveArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
     /// Output format; csv prints the trajectory t,x,v,F of the one --model given.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
@@ -68,14 +81,67 @@ pub struct SolveArgs {
     pub points: u32,
 }
 
+/// Options of `hertz-tui bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// The force model to measure: quasistatic, dry-friction, proposed, hunt-crossley,
+    /// lankarani-nikravesh.
+    #[arg(long = "model", value_name = "MODEL")]
+    pub model: ForceModel,
+    /// Instead of the work-precision ladder: per fixed-step method, the measured largest stable
+    /// step next to the theoretical bound h·ω.
+    #[arg(long)]
+    pub stability: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
+
+/// Options of `hertz-tui sweep`.
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// The numeric scene key to vary, e.g. impact.v0, impact.restitution, body1.radius,
+    /// body2.material.youngs_modulus.
+    #[arg(long, value_name = "KEY")]
+    pub param: SceneKey,
+    /// First value, SI units.
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub from: f64,
+    /// Last value, SI units.
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub to: f64,
+    /// Number of points, both ends included.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(2..=10_000_000))]
+    pub points: u32,
+    /// Space the points geometrically (bounds of one sign).
+    #[arg(long)]
+    pub log: bool,
+    /// Force model (repeatable; default all five).
+    #[arg(long = "model", value_name = "MODEL")]
+    pub models: Vec<ForceModel>,
+    /// Solution method of every impact (default auto).
+    #[arg(long, value_name = "METHOD", default_value = "auto")]
+    pub method: MethodChoice,
+    /// Relative tolerance of the adaptive methods (default 1e-8).
+    #[arg(long, value_name = "R", value_parser = positive_number, allow_hyphen_values = true)]
+    pub rtol: Option<f64>,
+    /// Output format (table, json or csv).
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    pub format: Format,
+}
+
 /// How `solve` prints its results.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Format {
     /// Aligned tables with units.
     Table,
-    /// One JSON object: scene, quasistatic, impacts (SI units).
+    /// JSON, SI units (solve: one object with scene, quasistatic, impacts; bench, sweep: rows).
     Json,
-    /// The trajectory t,x,v,F of one model (SI units).
+    /// Comma-separated, SI units (solve: the trajectory t,x,v,F of one model; bench, sweep: rows).
     Csv,
 }
 

@@ -1,17 +1,19 @@
 //! Headless subcommands over the model layer.
 
 pub mod args;
+pub mod bench;
 mod csv;
 pub mod error;
 mod layout;
 mod list;
 mod report;
 pub mod solve;
+pub mod sweep;
 pub mod units;
 
 use std::io::Write;
 
-pub use args::{Cli, Command, Format, SolveArgs};
+pub use args::{BenchArgs, Cli, Command, Format, SceneSelection, SolveArgs, SweepArgs};
 pub use error::CliError;
 
 use crate::model::presets::Registry;
@@ -44,6 +46,8 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
                 csv::render(&solution, args.points as usize).map_err(CliError::Usage)?
             }
         },
+        Command::Bench(args) => bench::run(args, &registry)?,
+        Command::Sweep(args) => sweep::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

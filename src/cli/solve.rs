@@ -2,7 +2,7 @@
 
 use serde::Serialize;
 
-use super::args::SolveArgs;
+use super::args::{SceneSelection, SolveArgs};
 use super::error::CliError;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
@@ -106,8 +106,8 @@ pub fn solve_options(args: &SolveArgs) -> SolveOptions {
 }
 
 /// The scene the arguments name, with their overrides applied.
-pub fn load_scene(args: &SolveArgs, registry: &Registry) -> Result<Scene, CliError> {
-    Ok(registry.scene_with(&args.scene, &args.overrides)?)
+pub fn load_scene(source: &SceneSelection, registry: &Registry) -> Result<Scene, CliError> {
+    Ok(registry.scene_with(&source.scene, &source.overrides)?)
 }
 
 /// The models to solve: those given, else all five.
@@ -121,7 +121,7 @@ pub fn models(args: &SolveArgs) -> Vec<ForceModel> {
 
 /// Solves the scene for every requested model; a failing model becomes a row with `error` set.
 pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliError> {
-    let scene = load_scene(args, registry)?;
+    let scene = load_scene(&args.source, registry)?;
     let quasistatic = scene.quasistatic()?;
     let params = scene.impact_params(&quasistatic);
     let options = solve_options(args);
@@ -149,7 +149,7 @@ pub fn trajectory(args: &SolveArgs, registry: &Registry) -> Result<ImpactSolutio
             ));
         }
     };
-    let scene = load_scene(args, registry)?;
+    let scene = load_scene(&args.source, registry)?;
     let quasistatic = scene.quasistatic()?;
     let options = solve_options(args);
     impact::solve_impact(model, &scene.impact_params(&quasistatic), &options)

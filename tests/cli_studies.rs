@@ -1,0 +1,261 @@
+//! The real binary's `bench` (work-precision, --stability) and `sweep` subcommands.
+
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+/// Runs the binary with an empty user-preset folder so only the built-ins count.
+fn run(args: &[&str]) -> Output {
+    let empty = std::env::temp_dir().join(format!("hertz-tui-cli-studies-{}", std::process::id()));
+    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
+        .args(args)
+        .env("XDG_CONFIG_HOME", &empty)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout_json(output: &Output) -> Value {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).expect("stdout is JSON")
+}
+
+const FIG5: &str = "fig5-steel-sphere-r10-plate";
+
+#[test]
+fn bench_rows_cover_every_method_with_the_documented_fields() {
+    let rows = stdout_json(&run(&[
+        "bench",
+        "--scene",
+        FIG5,
+        "--model",
+        "hunt-crossley",
+        "--format",
+        "json",
+    ]));
+    let rows = rows.as_array().expect("an array of rows");
+    for method in [
+        "euler",
+        "symplectic-euler",
+        "verlet",
+        "rk4",
+        "dopri5",
+        "dop853",
+        "radau5",
+    ] {
+        assert!(
+            rows.iter().any(|r| r["method"] == method),
+            "no row for {method}"
+        );
+    }
+    for row in rows {
+        assert!(
+            row.get("rtol").is_some() != row.get("dt").is_some(),
+            "{row}"
+        );
+        for key in [
+            "error_x_max",
+            "error_f_max",
+            "error_t_contact",
+            "error_v_out",
+            "force_evals",
+            "seconds_per_solve",
+        ] {
+            assert!(row.get(key).is_some(), "{key} missing in {row}");
+        }
+    }
+    // Hunt–Crossley has an exact solution: DOPRI5 at rtol 1e-8 lands within 1e-6 of it on every number.
+    let dopri5 = rows
+        .iter()
+        .find(|r| r["method"] == "dopri5" && r["rtol"].as_f64() == Some(1e-8))
+        .expect("a dopri5 row at rtol 1e-8");
+    for key in [
+        "error_x_max",
+        "error_f_max",
+        "error_t_contact",
+        "error_v_out",
+    ] {
+        let e = dopri5[key].as_f64().expect("a number");
+        assert!(e < 1e-6, "{key} = {e}");
+    }
+    // Fixed-step rungs halve: consecutive dt of one method differ by exactly 2.
+    let rk4: Vec<f64> = rows
+        .iter()
+        .filter(|r| r["method"] == "rk4")
+        .filter_map(|r| r["dt"].as_f64())
+        .collect();
+    assert!(rk4.len() >= 2);
+    for pair in rk4.windows(2) {
+        assert!((pair[0] / pair[1] - 2.0).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn bench_stability_puts_measurement_next_to_the_h_omega_bound() {
+    let rows = stdout_json(&run(&[
+        "bench",
+        "--scene",
+        FIG5,
+        "--model",
+        "quasistatic",
+        "--stability",
+        "--format",
+        "json",
+    ]));
+    let rows = rows.as_array().expect("an array of rows");
+    assert_eq!(rows.len(), 4);
+    // ω_max of the Fig. 5 scene: √(1.5·k·x_max^{1/2}/m) = 4.507e4 rad/s.
+    let omega = rows[0]["omega_max"].as_f64().unwrap();
+    assert!((omega / 4.507e4 - 1.0).abs() < 1e-3, "{omega}");
+    for row in rows {
+        let measured = row["measured_h_omega"].as_f64().expect("a measured step");
+        match row["bound_h_omega"].as_f64() {
+            // A single impact tolerates less than the linear bound on the symplectic methods
+            // (their modified energy is off by 1/(1 − (hω/2)²)), and about the bound on RK4.
+            Some(bound) => assert!(
+                measured > 0.4 * bound && measured < 1.3 * bound,
+                "{}: measured h·ω {measured} against bound {bound}",
+                row["method"]
+            ),
+            // Explicit Euler gains (1 + (hω)²) per step: bounded only far below the others.
+            None => assert!(measured < 0.3, "euler: {measured}"),
+        }
+    }
+}
+
+#[test]
+fn sweep_csv_rows_follow_the_hertz_scaling_in_order() {
+    let output = run(&[
+        "sweep",
+        "--scene",
+        FIG5,
+        "--param",
+        "impact.v0",
+        "--from",
+        "0.01",
+        "--to",
+        "1",
+        "--points",
+        "21",
+        "--log",
+        "--model",
+        "quasistatic",
+        "--model",
+        "hunt-crossley",
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = String::from_utf8(output.stdout).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header[0], "impact.v0");
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (p_max, x_max) = (column("p_max"), column("quasistatic.x_max"));
+    let e_out = column("hunt-crossley.e_out");
+    // Each row as [v0, p_max, quasistatic x_max, hunt-crossley e_out].
+    let rows: Vec<[f64; 4]> = lines
+        .map(|l| {
+            let cells: Vec<&str> = l.split(',').collect();
+            [0, p_max, x_max, e_out].map(|c| cells[c].parse::<f64>().expect("a number"))
+        })
+        .collect();
+    assert_eq!(rows.len(), 21);
+    for pair in rows.windows(2) {
+        assert!(pair[1][0] > pair[0][0], "rows out of order");
+    }
+    let (first, last) = (&rows[0], &rows[20]);
+    // p₀ ∝ v₀^{2/5} (eq 9 with eq 6) and x_max ∝ v₀^{4/5} (eq 5) over two decades.
+    assert!((last[1] / first[1] / 100f64.powf(0.4) - 1.0).abs() < 1e-9);
+    assert!((last[2] / first[2] / 100f64.powf(0.8) - 1.0).abs() < 1e-9);
+    // Hunt–Crossley with a = (1 − e)/v₀ re-derived at each v₀ gives the same e_out at every v₀.
+    assert!((last[3] - first[3]).abs() < 1e-9);
+}
+
+#[test]
+fn sweep_json_marks_invalid_points_without_failing_the_rest() {
+    // e must lie in (0, 1]: the sweep from 0.5 to 1.5 has invalid points past 1.
+    let report = stdout_json(&run(&[
+        "sweep",
+        "--scene",
+        FIG5,
+        "--param",
+        "impact.restitution",
+        "--from",
+        "0.5",
+        "--to",
+        "1.5",
+        "--points",
+        "3",
+        "--model",
+        "proposed",
+        "--format",
+        "json",
+    ]));
+    assert_eq!(report["param"], "impact.restitution");
+    let rows = report["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert!(rows[0]["error"].is_null() && rows[1]["error"].is_null());
+    let message = rows[2]["error"]
+        .as_str()
+        .expect("the e = 1.5 row has an error");
+    assert!(message.contains("impact.restitution"), "{message}");
+}
+
+#[test]
+fn sweep_refuses_keys_that_do_not_exist_or_do_not_apply() {
+    let unknown = run(&[
+        "sweep",
+        "--scene",
+        FIG5,
+        "--param",
+        "impact.vo",
+        "--from",
+        "0.1",
+        "--to",
+        "1",
+        "--points",
+        "3",
+    ]);
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&unknown.stderr).contains("impact.vo"));
+    let plane = run(&[
+        "sweep",
+        "--scene",
+        FIG5,
+        "--param",
+        "body2.radius",
+        "--from",
+        "0.1",
+        "--to",
+        "1",
+        "--points",
+        "3",
+    ]);
+    assert_eq!(plane.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&plane.stderr);
+    assert!(
+        stderr.contains("body2.radius does not apply: the body is a plane"),
+        "{stderr}"
+    );
+    let log = run(&[
+        "sweep",
+        "--scene",
+        FIG5,
+        "--param",
+        "impact.v0",
+        "--from",
+        "0",
+        "--to",
+        "1",
+        "--points",
+        "3",
+        "--log",
+    ]);
+    assert_eq!(log.status.code(), Some(2));
+}
