@@ -228,6 +228,33 @@ mod tests {
     }
 
     #[test]
+    fn hunt_crossley_restitution_to_1e12_for_every_e() {
+        // e_out = (1 + W₀(−e^{−(1+C)}))/a, a = (3/2)(1 − e), from mpmath at 90 digits with the
+        // doubles' e; near e = 1 the branch point would cost the Lambert-W form half its digits.
+        let p = fig5(0.033);
+        for &(e, e_out) in &[
+            (0.05, 0.501_447_028_551_835_2),
+            (0.3, 0.581_288_041_808_573_7),
+            (0.9, 0.909_015_741_349_202_3),
+            (0.99, 0.990_098_912_841_307_9),
+            (0.999_999, 0.999_999_000_001_000),
+            (0.999_999_999_999, 0.999_999_999_999_000_1),
+        ] {
+            let params = ImpactParams {
+                restitution: e,
+                ..p
+            };
+            let alpha = 1.5 * (1.0 - e) / p.v0;
+            let ex = hysteresis(&params, alpha, 1e-12).unwrap();
+            assert!(
+                rel(ex.v_out / p.v0, e_out) < 1e-12,
+                "e = {e}: {}",
+                ex.v_out / p.v0
+            );
+        }
+    }
+
+    #[test]
     fn vanishing_damping_tends_to_elastic() {
         // a = 1.5e-12: every number within ~a of the elastic one, and e_out = 1 − 2a/3.
         let p = fig5(0.033);

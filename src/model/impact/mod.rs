@@ -96,10 +96,15 @@ impl From<MethodUsed> for String {
 }
 
 /// Where the compressive-only rule ended contact early: the law turned tensile (F < 0) at x > 0.
+/// Dry friction always does near x = 0 (k·xⁿ − P·x < 0 below (P/k)^{1/(n−1)}); the Hunt–Crossley
+/// family only through an integrator's error (see `exact::hysteresis`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TensileCutoff {
+    /// When, s.
     pub t: f64,
+    /// The approach left, m.
     pub x: f64,
+    /// ẋ at separation (≤ 0), m/s.
     pub v: f64,
 }
 
@@ -108,12 +113,15 @@ pub struct TensileCutoff {
 pub struct ImpactSummary {
     pub model: ForceModel,
     pub method: MethodUsed,
+    /// Maximum approach (at ẋ = 0), m.
     pub x_max: f64,
     /// Time of maximum compression (ẋ = 0), s.
     pub t_x_max: f64,
+    /// The true force peak (where dF/dt = 0 on the dense output, or where the force jumps), N.
     pub f_max: f64,
     /// Time of the force peak, s.
     pub t_f_max: f64,
+    /// Duration of contact, s.
     pub t_contact: f64,
     /// Exit speed |ẋ| when contact ends, m/s.
     pub v_out: f64,
@@ -123,10 +131,15 @@ pub struct ImpactSummary {
     pub x_residual: f64,
     /// ½m(v₀² − v_out²), J.
     pub energy_dissipated: f64,
-    /// |½m(v₀² − v_out²) − ∮F dx| / (½m v₀²).
+    /// |½m(v₀² − v_out²) − ∮F dx| / (½m v₀²), ∮F dx by quadrature on the dense output. Zero for
+    /// exact solutions, whose v_out is the energy balance itself.
     pub energy_residual: f64,
+    /// Accepted steps (zero for exact solutions). Work counters include an abandoned DOPRI5
+    /// attempt when `auto` switched to Radau5.
     pub steps: usize,
+    /// Rejected steps.
     pub rejected_steps: usize,
+    /// Force evaluations of the integration (right-hand sides, Jacobians' included).
     pub force_evals: usize,
     /// Set when the compressive-only rule fired.
     pub tensile_cutoff: Option<TensileCutoff>,
