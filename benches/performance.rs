@@ -1,7 +1,7 @@
 //! Performance budget of issue 5: one impact per model (auto, and DOPRI5 at rtol 1e-8),
 //! a 1000-point v₀ sweep, and one full edit cycle of the explorer.
 //!
-//! Run with `cargo bench --bench performance`.
+//! Run with `cargo bench --bench performance` (one group: `cargo bench --bench performance -- edit`).
 
 use std::hint::black_box;
 
@@ -13,6 +13,16 @@ use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
 use hertz_tui::model::scene::Scene;
 use hertz_tui::model::scene_key::SceneKey;
 use hertz_tui::model::study::sweep::{SweepSpec, sweep};
+use hertz_tui::ui::MarkerStyle;
+use hertz_tui::ui::action::Action;
+use hertz_tui::ui::app::App;
+use hertz_tui::ui::field::Nudge;
+use hertz_tui::ui::render::draw;
+use hertz_tui::ui::theme::Theme;
+use hertz_tui::ui::update::update;
+use hertz_tui::ui::worker;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
 
 fn default_scene() -> Scene {
     let registry = Registry::load().expect("built-in presets load");
@@ -61,5 +71,48 @@ fn sweeps(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, impacts, sweeps);
+/// Solves every queued job on this thread, as the worker would: the edit cycle measures the work.
+fn solve_queued(app: &mut App) -> usize {
+    let jobs = app.take_jobs();
+    let solved = jobs.len();
+    for job in jobs {
+        update(app, Action::Solved(Ok(worker::solve(&job))));
+    }
+    solved
+}
+
+/// One full edit cycle of the explorer: v₀ nudged (by →/← on the v₀ field, alternately, so every
+/// edit changes the inputs), the five models recomputed, and every pane rendered into a 160×48
+/// TestBackend, all on this thread.
+fn edit_cycle(c: &mut Criterion) {
+    let registry = Registry::builtin().expect("built-in presets load");
+    let scene = registry
+        .scene(DEFAULT_SCENE)
+        .expect("default scene resolves");
+    let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+    for model in ForceModel::ALL {
+        if !app.is_checked(model) {
+            app.focused = model;
+            update(&mut app, Action::ToggleModel);
+        }
+    }
+    app.focused = ForceModel::Proposed;
+    solve_queued(&mut app);
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).expect("a test backend");
+    let mut up = true;
+    c.bench_function("edit/cycle/5-models/160x48", |b| {
+        b.iter(|| {
+            let direction = if up { Nudge::Up } else { Nudge::Down };
+            up = !up;
+            update(&mut app, Action::Nudge(direction));
+            let solved = solve_queued(&mut app);
+            assert_eq!(solved, ForceModel::ALL.len(), "every model is recomputed");
+            terminal
+                .draw(|frame| draw(frame, black_box(&app)))
+                .expect("drawing into a test backend");
+        })
+    });
+}
+
+criterion_group!(benches, impacts, sweeps, edit_cycle);
 criterion_main!(benches);

@@ -1,7 +1,8 @@
 //! End to end: the real binary in a detached tmux session of fixed size with a UTF-8 locale. Edits
 //! v₀ with keystrokes, reads the pane with `capture-pane`, checks that the charts and the results
-//! changed, quits with `q` and checks that the terminal is restored (the shell's screen is back and
-//! the line discipline cooks input again). Waits on the screen's content, never on fixed sleeps.
+//! changed, opens the stability view (tab 3) and halves its step, comes back, quits with `q` and
+//! checks that the terminal is restored (the shell's screen is back and the line discipline cooks
+//! input again). Waits on the screen's content, never on fixed sleeps.
 //!
 //! Needs tmux (CI installs it; locally `apt-get install -y tmux`). It is never skipped: without
 //! tmux it fails.
@@ -201,6 +202,35 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
     assert_ne!(curves(&before), curves(&after), "the charts changed");
     assert!(after.contains('*'), "the unsaved mark shows after an edit");
     assert!(after.contains("elastic") || after.contains("yield begins"));
+
+    // Tab 3: every fixed-step method at the RK4 critical step, judged, its bounds measured, all
+    // off the UI thread.
+    tmux.keys(&["3"]);
+    let stability = tmux.wait_for("the stability view with verdicts and bounds", |s| {
+        s.contains("Methods at this step")
+            && s.contains("symplectic-euler")
+            && s.contains("h·ω_max = 2.83")
+            && (s.contains("stable") || s.contains("diverged at t =") || s.contains("drift"))
+            && !s.contains("computing…")
+            && !s.contains("measuring…")
+    });
+    assert!(
+        stability.contains("auto: the rk4 critical step"),
+        "{stability}"
+    );
+    assert!(
+        !stability.contains("Hertz estimate"),
+        "the explorer's results are gone: {stability}"
+    );
+    // ← halves the step: the methods run again at h·ω_max = √2.
+    tmux.keys(&["Left"]);
+    tmux.wait_for("the methods at half the step", |s| {
+        s.contains("h·ω_max = 1.41") && !s.contains("computing…")
+    });
+    tmux.keys(&["1"]);
+    tmux.wait_for("the explorer again", |s| {
+        s.contains("F(x) force–approach") && results_row(s, "proposed").contains(&x_after)
+    });
 
     tmux.keys(&["q"]);
     let restored = tmux.wait_for("the shell after the explorer", |s| s.contains("exited-0"));

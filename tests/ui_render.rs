@@ -1,6 +1,6 @@
 //! The explorer rendered into ratatui's TestBackend: snapshots of the default (Fig. 5) scene, an
-//! invalid field, the help and the too-small screen at 80×24 and 160×48, and checks of colour,
-//! NO_COLOR and markers.
+//! invalid field, the help and the too-small screen at 80×24 and 160×48, of the work-precision,
+//! stability and sweep views at 160×48, and checks of colour, NO_COLOR and markers.
 
 use std::time::Duration;
 
@@ -12,6 +12,8 @@ use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::{App, Cursor};
 use hertz_tui::ui::field::Field;
 use hertz_tui::ui::render::draw;
+use hertz_tui::ui::studies::{self, StudyOutcome, StudyResult, WorkPrecisionData};
+use hertz_tui::ui::tab::Tab;
 use hertz_tui::ui::theme::Theme;
 use hertz_tui::ui::update::update;
 use hertz_tui::ui::worker;
@@ -34,18 +36,57 @@ fn app() -> App {
     app_with(MarkerStyle::Braille, Theme { color: true })
 }
 
+/// Solves and studies everything queued on this thread, as the workers would, then puts fixed
+/// stand-ins in place of the measured wall times so that snapshots are deterministic.
 fn settle(app: &mut App) {
     loop {
         let jobs = app.take_jobs();
-        if jobs.is_empty() {
+        let studies = app.take_studies();
+        if jobs.is_empty() && studies.is_empty() {
             break;
         }
         for job in jobs {
             update(app, Action::Solved(Ok(worker::solve(&job))));
         }
+        for job in studies {
+            if let Some(outcome) = studies::run(&job, &|| false) {
+                update(app, Action::Studied(Ok(without_wall_times(outcome))));
+            }
+        }
     }
-    // A fixed stand-in for the measured time, so snapshots are deterministic.
     app.last_recompute = Some(Duration::from_micros(1500));
+}
+
+/// Stand-in for a measured time per solve: 25 ns per force evaluation.
+fn stand_in_seconds(force_evals: usize) -> f64 {
+    force_evals as f64 * 25e-9
+}
+
+/// The outcome with every wall time replaced by [`stand_in_seconds`].
+fn without_wall_times(mut outcome: StudyOutcome) -> StudyOutcome {
+    match &mut outcome.result {
+        StudyResult::WorkPrecision(Ok(data)) => {
+            let mut fixed = WorkPrecisionData::clone(data);
+            for row in &mut fixed.rows {
+                row.seconds_per_solve = row.force_evals.map(stand_in_seconds);
+            }
+            *data = std::sync::Arc::new(fixed);
+        }
+        StudyResult::Current(Ok(point)) => {
+            point.seconds_per_solve = stand_in_seconds(point.force_evals);
+        }
+        _ => {}
+    }
+    outcome
+}
+
+/// The app on `tab` at 160×48, its studies done.
+fn app_on(tab: Tab) -> App {
+    let mut app = app();
+    update(&mut app, Action::Resize(160, 48));
+    update(&mut app, Action::Tab(tab));
+    settle(&mut app);
+    app
 }
 
 fn press(app: &mut App, code: KeyCode) {
@@ -167,7 +208,7 @@ fn results_show_every_checked_model_and_the_hertz_estimate() {
     }
     assert!(screen.contains("Hertz estimate"));
     assert!(screen.contains("yield begins"));
-    assert!(screen.contains("fits: proposed"));
+    assert!(screen.contains("use: proposed"));
 }
 
 #[test]
@@ -261,4 +302,49 @@ fn an_edit_changes_the_charts_and_the_results() {
         .x_max;
     assert!(after.contains(&hertz_tui::ui::units::sig(x_max * 1e6, 4)));
     assert!(after.contains("v₀     0.05 m/s"));
+}
+
+#[test]
+fn work_precision_160x48() {
+    let app = app_on(Tab::WorkPrecision);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(
+        screen.contains("log₁₀ error against log₁₀ s per solve"),
+        "{screen}"
+    );
+    assert!(screen.contains("log₁₀ force evaluations"));
+    for method in ["dopri5", "dop853", "radau5", "rk4", "verlet"] {
+        assert!(screen.contains(method), "{method} in the legend");
+    }
+    assert!(screen.contains("explorer's solve"));
+    assert!(screen.contains('█'), "the explorer's solve is marked");
+    assert!(!screen.contains("NaN") && !screen.contains("computing…"));
+    insta::assert_snapshot!(render(&app, 160, 48).backend());
+}
+
+#[test]
+fn stability_160x48() {
+    let app = app_on(Tab::Stability);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(screen.contains("auto: the rk4 critical step"), "{screen}");
+    assert!(screen.contains("h·ω_max = 2.83"), "{screen}");
+    for method in ["euler", "symplectic-euler", "verlet", "rk4"] {
+        assert!(screen.contains(method), "{method}");
+    }
+    assert!(screen.contains("diverged at t = ") || screen.contains("energy drift"));
+    assert!(!screen.contains("measuring…") && !screen.contains("NaN"));
+    insta::assert_snapshot!(render(&app, 160, 48).backend());
+}
+
+#[test]
+fn sweep_160x48() {
+    let app = app_on(Tab::Sweep);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(screen.contains("e_out against v₀"), "{screen}");
+    assert!(
+        screen.contains("v_y") && screen.contains("v_p"),
+        "onset rules labelled"
+    );
+    assert!(!screen.contains("NaN") && !screen.contains("computing…"));
+    insta::assert_snapshot!(render(&app, 160, 48).backend());
 }

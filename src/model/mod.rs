@@ -14,6 +14,7 @@ pub mod power_law;
 pub mod presets;
 pub mod pressure;
 pub mod quasistatic;
+pub mod recommend;
 pub mod scene;
 pub mod scene_file;
 pub mod scene_key;

@@ -5,6 +5,8 @@ use tui_input::InputRequest;
 use crate::model::scene_key::BodyIndex;
 
 use super::field::Nudge;
+use super::study_worker::StudyReport;
+use super::tab::Tab;
 use super::worker::Report;
 
 /// One step of the state machine, from a key, the terminal or the solver.
@@ -28,14 +30,18 @@ pub enum Action {
     FocusModel(Nudge),
     /// Shows the next chart where only one fits.
     CycleChart,
+    /// Shows a view: the explorer or a study.
+    Tab(Tab),
     Help,
     Presets,
     Save,
     Export,
     /// Applies the material selected in the picker to a body.
     ApplyMaterialTo(BodyIndex),
-    /// The terminal changed size: redraw.
-    Resize,
+    /// The terminal has this many columns and rows: redraw (and size sweeps to it).
+    Resize(u16, u16),
     /// The solver finished a job (or failed).
     Solved(Report),
+    /// The study worker finished a study (or panicked).
+    Studied(StudyReport),
 }

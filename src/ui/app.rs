@@ -5,14 +5,20 @@ use std::time::{Duration, Instant};
 use tui_input::Input;
 
 use crate::model::impact::SolveOptions;
+use crate::model::ode::Method;
 use crate::model::presets::Registry;
 use crate::model::scene_key::{BodyIndex, SceneKey};
+use crate::model::study::stability::critical_step;
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 
 use super::field::{self, Draft, Field, Section};
 use super::marker::MarkerStyle;
 use super::picker::Picker;
+use super::render::layout;
 use super::solutions::{Job, Solutions};
+use super::studies::{Studies, StudyJob, StudyKind, StudySpec};
+use super::sweep_settings::{SweepField, SweepSettings};
+use super::tab::Tab;
 use super::theme::Theme;
 
 /// Where the cursor is: on a form field or on a model of the checklist.
@@ -22,10 +28,21 @@ pub enum Cursor {
     Model(ForceModel),
 }
 
+/// What a line editor edits.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EditTarget {
+    /// A field of the explorer's form.
+    Field(Field),
+    /// The step of the stability view.
+    Step,
+    /// A row of the sweep form.
+    Sweep(SweepField),
+}
+
 /// A field being edited.
 #[derive(Debug, Clone)]
 pub struct Editor {
-    pub field: Field,
+    pub target: EditTarget,
     pub input: Input,
     /// Why the last commit was refused (the text did not parse).
     pub error: Option<String>,
@@ -117,6 +134,17 @@ pub struct App {
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
+    /// The view shown.
+    pub tab: Tab,
+    /// Results of the studies of tabs 2–4.
+    pub studies: Studies,
+    /// The step of the stability view, s; `None` follows the scene (the RK4 critical step).
+    pub step: Option<f64>,
+    pub sweep: SweepSettings,
+    /// The row of the sweep form under the cursor.
+    pub sweep_cursor: SweepField,
+    /// Terminal size (columns, rows), for sizing sweeps to their chart; (0, 0) until known.
+    pub screen: (u16, u16),
     /// The chart shown first (alone where only one fits).
     pub chart: ChartKind,
     pub marker: MarkerStyle,
@@ -126,6 +154,7 @@ pub struct App {
     pub last_recompute: Option<Duration>,
     pub(super) recompute_started: Option<Instant>,
     outbox: Vec<Job>,
+    study_outbox: Vec<StudyJob>,
     pub quit: bool,
 }
 
@@ -160,6 +189,12 @@ impl App {
             focused: ForceModel::Proposed,
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
+            tab: Tab::Explorer,
+            studies: Studies::default(),
+            step: None,
+            sweep: SweepSettings::default(),
+            sweep_cursor: SweepField::Parameter,
+            screen: (0, 0),
             chart: ChartKind::ForceDisplacement,
             marker,
             theme,
@@ -167,6 +202,7 @@ impl App {
             last_recompute: None,
             recompute_started: None,
             outbox: Vec::new(),
+            study_outbox: Vec::new(),
             quit: false,
         };
         for warning in app.registry.warnings() {
@@ -182,6 +218,11 @@ impl App {
     /// The solves requested since the last call, for the worker.
     pub fn take_jobs(&mut self) -> Vec<Job> {
         std::mem::take(&mut self.outbox)
+    }
+
+    /// The studies requested since the last call, for the study worker.
+    pub fn take_studies(&mut self) -> Vec<StudyJob> {
+        std::mem::take(&mut self.study_outbox)
     }
 
     pub fn is_checked(&self, model: ForceModel) -> bool {
@@ -204,6 +245,86 @@ impl App {
     /// Whether any solve is running.
     pub fn is_computing(&self) -> bool {
         self.solutions.any_pending()
+    }
+
+    /// The studies the shown tab draws.
+    pub fn tab_studies(&self) -> &'static [StudyKind] {
+        match self.tab {
+            Tab::Explorer => &[],
+            Tab::WorkPrecision => &[StudyKind::WorkPrecision, StudyKind::Current],
+            Tab::Stability => &[StudyKind::Runs, StudyKind::Bounds],
+            Tab::Sweep => &[StudyKind::Sweep],
+        }
+    }
+
+    /// Whether a study of the shown tab is running.
+    pub fn is_studying(&self) -> bool {
+        self.tab_studies()
+            .iter()
+            .any(|&k| self.studies.is_pending(k))
+    }
+
+    /// The step of the stability view: the user's, else the RK4 critical step of the last valid
+    /// scene (the largest step at which RK4 is stable in theory).
+    pub fn stability_step(&self) -> Option<f64> {
+        self.step.or_else(|| {
+            self.valid
+                .as_ref()
+                .and_then(|v| critical_step(Method::Rk4, &v.params))
+        })
+    }
+
+    /// The most points the sweep chart shows distinctly: one per braille dot column (two per
+    /// terminal column), one per column with the other markers.
+    pub fn sweep_max_points(&self) -> usize {
+        let (width, height) = self.screen;
+        let columns = layout::sweep_plot_columns(ratatui::layout::Rect::new(0, 0, width, height));
+        usize::from(columns) * usize::from(self.marker.dots_per_cell())
+    }
+
+    /// Requests the studies of the shown tab whose inputs changed (nothing for the explorer).
+    pub(super) fn request_studies(&mut self) {
+        let Some(valid) = &self.valid else {
+            return;
+        };
+        let model = self.focused;
+        let params = valid.params;
+        let specs = match self.tab {
+            Tab::Explorer => Vec::new(),
+            Tab::WorkPrecision => vec![
+                StudySpec::WorkPrecision { model, params },
+                StudySpec::Current {
+                    model,
+                    params,
+                    options: self.draft.options,
+                },
+            ],
+            Tab::Stability => {
+                let mut specs = vec![StudySpec::Bounds { model, params }];
+                if let Some(dt) = self.stability_step() {
+                    specs.insert(0, StudySpec::Runs { model, params, dt });
+                }
+                specs
+            }
+            Tab::Sweep => match self.sweep.spec(
+                &valid.scene,
+                self.checked_models(),
+                self.draft.options,
+                self.sweep_max_points(),
+            ) {
+                Ok(spec) => vec![StudySpec::Sweep {
+                    scene: Box::new(valid.scene.clone()),
+                    spec: Box::new(spec),
+                }],
+                // The view says why; there is nothing to compute.
+                Err(_) => Vec::new(),
+            },
+        };
+        for spec in specs {
+            if let Some(job) = self.studies.request(spec) {
+                self.study_outbox.push(job);
+            }
+        }
     }
 
     /// The cursor stops, in order: the visible fields, then the models.

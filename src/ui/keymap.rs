@@ -8,9 +8,14 @@ use crate::model::scene_key::BodyIndex;
 use super::action::Action;
 use super::app::Mode;
 use super::field::Nudge;
+use super::tab::Tab;
 
 /// The key bindings, as the help screen lists them: (keys, what they do).
 pub const BINDINGS: &[(&str, &str)] = &[
+    (
+        "1 2 3 4",
+        "views: explorer · work–precision · stability · sweep",
+    ),
     ("↑ ↓  Tab  S-Tab", "move between fields and models"),
     (
         "Enter",
@@ -32,6 +37,12 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "save the scene (preset name, or a path ending in .toml)",
     ),
     ("e", "export the focused model's trajectory as CSV"),
+    ("in 2", "work–precision of every method, focused model"),
+    (
+        "in 3",
+        "Enter types the step (auto: rk4 critical); ← → ½× 2×",
+    ),
+    ("in 4", "↑ ↓ rows; ← → change; Enter types or switches"),
     ("?", "this help"),
     ("Esc", "close · cancel · clear the message"),
     ("q  Ctrl-C", "quit"),
@@ -50,7 +61,7 @@ pub fn action_for_event(mode: &Mode, event: &Event) -> Option<Action> {
         Event::Key(key) if matches!(key.kind, KeyEventKind::Press | KeyEventKind::Repeat) => {
             action_for_key(mode, event, *key)
         }
-        Event::Resize(_, _) => Some(Action::Resize),
+        Event::Resize(width, height) => Some(Action::Resize(*width, *height)),
         _ => None,
     }
 }
@@ -103,6 +114,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,
+        KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })
 }

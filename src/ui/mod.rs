@@ -5,8 +5,9 @@
 //! ties them to the terminal. The UI holds no physics: every number comes from `crate::model`.
 
 pub mod action;
-pub mod advice;
 pub mod app;
+#[cfg(test)]
+mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
 pub mod export;
@@ -18,13 +19,20 @@ pub mod plot;
 pub mod render;
 mod runtime;
 pub mod solutions;
+pub mod studies;
+pub mod study_worker;
+pub mod sweep_plot;
+pub mod sweep_settings;
+pub mod tab;
 #[cfg(test)]
 mod testing;
 pub mod theme;
 pub mod ticks;
 pub mod units;
 pub mod update;
+mod update_tabs;
 pub mod worker;
+pub mod wp_plot;
 
 pub use marker::MarkerStyle;
 

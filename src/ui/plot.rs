@@ -9,10 +9,11 @@ use super::theme::LinePattern;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
 
-/// One model's samples and its exact extrema.
+/// One solution's samples and its exact extrema, under a key that says whose they are (a force
+/// model in the explorer; a method or the reference in the stability view).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    pub model: ForceModel,
+pub struct Series<K = ForceModel> {
+    pub model: K,
     pub samples: Vec<Sample>,
     /// (x, F) at the force peak.
     pub force_peak_x: (f64, f64),
@@ -22,9 +23,9 @@ pub struct Series {
     pub deepest: (f64, f64),
 }
 
-impl Series {
+impl<K> Series<K> {
     /// `n` samples of the solution (evenly in t, the true extrema inserted by the trajectory).
-    pub fn sample(model: ForceModel, solution: &ImpactSolution, n: usize) -> Series {
+    pub fn sample(model: K, solution: &ImpactSolution, n: usize) -> Series<K> {
         let s = &solution.summary;
         let at_peak = solution.trajectory.at(s.t_f_max);
         Series {
@@ -39,8 +40,8 @@ impl Series {
 
 /// A curve in display units.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Curve {
-    pub model: ForceModel,
+pub struct Curve<K = ForceModel> {
+    pub model: K,
     pub points: Vec<(f64, f64)>,
     /// The extremum this chart marks (F_max or x_max), exact.
     pub peak: (f64, f64),
@@ -48,12 +49,12 @@ pub struct Curve {
 
 /// Everything a chart draws.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Plot {
+pub struct Plot<K = ForceModel> {
     pub x: NiceAxis,
     pub y: NiceAxis,
     pub x_title: String,
     pub y_title: String,
-    pub curves: Vec<Curve>,
+    pub curves: Vec<Curve<K>>,
 }
 
 impl ChartKind {
@@ -84,7 +85,7 @@ impl ChartKind {
         }
     }
 
-    fn peak(self, series: &Series) -> (f64, f64) {
+    fn peak<K>(self, series: &Series<K>) -> (f64, f64) {
         match self {
             ChartKind::ForceDisplacement => series.force_peak_x,
             ChartKind::ForceTime => series.force_peak_t,
@@ -99,9 +100,14 @@ fn finite(p: &(f64, f64)) -> bool {
 
 /// The chart of `kind` over `series`, with at most the given numbers of axis labels. Non-finite
 /// points are dropped (never drawn, never NaN on an axis).
-pub fn plot(kind: ChartKind, series: &[Series], max_x_labels: usize, max_y_labels: usize) -> Plot {
+pub fn plot<K: Copy>(
+    kind: ChartKind,
+    series: &[Series<K>],
+    max_x_labels: usize,
+    max_y_labels: usize,
+) -> Plot<K> {
     // Curves in SI first, to find the ranges.
-    let raw: Vec<Curve> = series
+    let raw: Vec<Curve<K>> = series
         .iter()
         .map(|s| Curve {
             model: s.model,
@@ -279,7 +285,8 @@ mod tests {
 
     #[test]
     fn no_series_still_gives_axes() {
-        let p = plot(ChartKind::ForceTime, &[], 5, 5);
+        let none: &[Series] = &[];
+        let p = plot(ChartKind::ForceTime, none, 5, 5);
         assert!(p.curves.is_empty());
         assert!(p.x.bounds[1] > p.x.bounds[0] && p.y.bounds[1] > p.y.bounds[0]);
     }

@@ -1,5 +1,6 @@
-//! The event loop: blocks until a key, a resize or a solver report arrives, updates, redraws.
-//! Input is read on its own thread and solves run on the worker, so neither blocks the other.
+//! The event loop: blocks until a key, a resize or a solver or study report arrives, updates,
+//! redraws. Input is read on its own thread, solves run on the worker and studies on the study
+//! worker, so none blocks another.
 
 use std::sync::mpsc::{self, Sender};
 use std::thread;
@@ -12,6 +13,7 @@ use super::action::Action;
 use super::app::App;
 use super::keymap::action_for_event;
 use super::render;
+use super::study_worker::{StudyReport, StudyWorker};
 use super::update::update;
 use super::worker::{Report, Worker};
 
@@ -19,6 +21,7 @@ use super::worker::{Report, Worker};
 enum Wake {
     Terminal(event::Event),
     Solver(Report),
+    Study(StudyReport),
     InputFailed(String),
 }
 
@@ -47,11 +50,22 @@ pub fn event_loop(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::R
     let reports = events.clone();
     let worker = Worker::spawn(move |report| reports.send(Wake::Solver(report)).is_ok())
         .wrap_err("cannot start the solver thread")?;
+    let study_reports = events.clone();
+    let studies = StudyWorker::spawn(move |report| study_reports.send(Wake::Study(report)).is_ok())
+        .wrap_err("cannot start the study thread")?;
     drop(events);
+    // The sweep view sizes its sweeps to the chart: the app needs the size before any resize.
+    let size = terminal.size().wrap_err("cannot read the terminal size")?;
+    update(&mut app, Action::Resize(size.width, size.height));
     loop {
         for job in app.take_jobs() {
             if !worker.submit(job) {
                 return Err(eyre!("the solver thread stopped"));
+            }
+        }
+        for job in app.take_studies() {
+            if !studies.submit(job) {
+                return Err(eyre!("the study thread stopped"));
             }
         }
         terminal.draw(|frame| render::draw(frame, &app))?;
@@ -68,6 +82,8 @@ pub fn event_loop(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::R
                 }
                 Wake::Solver(Err(message)) => return Err(eyre!(message)),
                 Wake::Solver(report) => update(&mut app, Action::Solved(report)),
+                Wake::Study(Err(message)) => return Err(eyre!(message)),
+                Wake::Study(report) => update(&mut app, Action::Studied(report)),
                 Wake::InputFailed(message) => {
                     return Err(eyre!("cannot read the terminal: {message}"));
                 }

@@ -3,6 +3,7 @@
 use ratatui::style::{Color, Modifier, Style};
 
 use crate::model::ForceModel;
+use crate::model::ode::Method;
 
 /// How a model's curve is drawn, so that curves stay distinct without colour (the paper's Fig. 5
 /// draws the proposed model solid, Hunt–Crossley dotted and Lankarani–Nikravesh dashed).
@@ -13,6 +14,8 @@ pub enum LinePattern {
     Dashed,
     DashDot,
     LongDash,
+    ShortDash,
+    DashDotDot,
 }
 
 impl LinePattern {
@@ -26,6 +29,20 @@ impl LinePattern {
         }
     }
 
+    /// The pattern of an integration method (work-precision and stability views): seven
+    /// patterns for seven methods, so that every line stays distinct without colour.
+    pub fn of_method(method: Method) -> LinePattern {
+        match method {
+            Method::Dopri5 => LinePattern::Solid,
+            Method::Dop853 => LinePattern::Dashed,
+            Method::Radau5 => LinePattern::Dotted,
+            Method::Euler => LinePattern::DashDot,
+            Method::SymplecticEuler => LinePattern::LongDash,
+            Method::Verlet => LinePattern::ShortDash,
+            Method::Rk4 => LinePattern::DashDotDot,
+        }
+    }
+
     /// A four-cell sample of the pattern for legends.
     pub fn sample(self) -> &'static str {
         match self {
@@ -34,6 +51,8 @@ impl LinePattern {
             LinePattern::Dashed => "╴╴╴╴",
             LinePattern::DashDot => "─·─·",
             LinePattern::LongDash => "── ─",
+            LinePattern::ShortDash => "╌╌╌╌",
+            LinePattern::DashDotDot => "─··─",
         }
     }
 
@@ -45,6 +64,8 @@ impl LinePattern {
             LinePattern::Dashed => &[(5.0, 4.0)],
             LinePattern::DashDot => &[(7.0, 3.0), (0.0, 3.0)],
             LinePattern::LongDash => &[(14.0, 5.0)],
+            LinePattern::ShortDash => &[(2.0, 2.0)],
+            LinePattern::DashDotDot => &[(7.0, 3.0), (0.0, 3.0), (0.0, 3.0)],
         }
     }
 }
@@ -124,6 +145,26 @@ impl Theme {
     pub fn model_style(self, model: ForceModel) -> Style {
         Style::default().fg(self.model_color(model))
     }
+
+    /// The colour of an integration method's line.
+    pub fn method_color(self, method: Method) -> Color {
+        if !self.color {
+            return Color::Reset;
+        }
+        match method {
+            Method::Dopri5 => Color::Yellow,
+            Method::Dop853 => Color::LightCyan,
+            Method::Radau5 => Color::LightMagenta,
+            Method::Euler => Color::LightRed,
+            Method::SymplecticEuler => Color::LightGreen,
+            Method::Verlet => Color::LightBlue,
+            Method::Rk4 => Color::Magenta,
+        }
+    }
+
+    pub fn method_style(self, method: Method) -> Style {
+        Style::default().fg(self.method_color(method))
+    }
 }
 
 #[cfg(test)]
@@ -151,6 +192,20 @@ mod tests {
                 assert_ne!(theme.model_color(*a), theme.model_color(*b));
                 assert_ne!(LinePattern::of(*a), LinePattern::of(*b));
                 assert_ne!(LinePattern::of(*a).sample(), LinePattern::of(*b).sample());
+            }
+        }
+    }
+
+    #[test]
+    fn methods_differ_in_colour_and_pattern() {
+        let theme = Theme { color: true };
+        for (i, a) in Method::ALL.iter().enumerate() {
+            for b in &Method::ALL[i + 1..] {
+                assert_ne!(theme.method_color(*a), theme.method_color(*b));
+                assert_ne!(LinePattern::of_method(*a), LinePattern::of_method(*b));
+                let (sa, sb) = (LinePattern::of_method(*a), LinePattern::of_method(*b));
+                assert_ne!(sa.sample(), sb.sample());
+                assert_ne!(sa.pieces(), sb.pieces());
             }
         }
     }

@@ -1,7 +1,8 @@
 //! Chart axes in engineering units with round ticks.
 //!
 //! ratatui spreads axis labels evenly over the bounds, so the bounds are chosen as whole multiples
-//! of a round step (1, 2, 2.5 or 5 × 10ᵏ) and every label then sits exactly on its value.
+//! of a round step (1, 2, 2.5 or 5 × 10ᵏ) and every label then sits exactly on its value. A log
+//! axis plots log₁₀ of the display value, its bounds on whole decades and its labels at decades.
 
 use super::units::{self, Prefix, Unit};
 
@@ -14,6 +15,68 @@ pub struct NiceAxis {
     pub prefix: Prefix,
     /// SI value of one display unit: divide SI values by it to plot them.
     pub scale: f64,
+    /// Plotted as log₁₀ of the display value.
+    pub log: bool,
+}
+
+impl NiceAxis {
+    /// Where an SI value goes on this axis (non-finite where a log axis has no place for it).
+    pub fn to_display(&self, value_si: f64) -> f64 {
+        let value = value_si / self.scale;
+        if self.log { value.log10() } else { value }
+    }
+}
+
+/// A log axis covering [lo, hi] (SI, both > 0) with at most `max_labels` labels (at least 2): the
+/// bounds are log₁₀ of display values. A range of whole decades (v₀/100 … 10·v₀) is the axis
+/// itself, labelled every decade or few from `lo`; any other range is widened to whole decades of
+/// the unit and labelled at them.
+pub fn log_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
+    let (lo, hi) = if lo > 0.0 && hi >= lo && hi.is_finite() {
+        (lo, hi)
+    } else {
+        (1.0, 10.0)
+    };
+    let prefix = units::engineering_prefix(hi, unit);
+    let scale = prefix.factor * unit.si_per_unit;
+    let max_intervals = (max_labels.max(2) - 1) as f64;
+    let decades = (hi / lo).log10();
+    let whole = decades.round();
+    if whole >= 1.0 && (decades - whole).abs() < 1e-9 {
+        let per_label = (whole / max_intervals).ceil();
+        if whole % per_label == 0.0 {
+            let first = (lo / scale).log10();
+            let intervals = (whole / per_label) as usize;
+            let labels = (0..=intervals)
+                .map(|i| units::sig(lo / scale * 10f64.powf(i as f64 * per_label), 3))
+                .collect();
+            return NiceAxis {
+                bounds: [first, first + whole],
+                labels,
+                prefix,
+                scale,
+                log: true,
+            };
+        }
+    }
+    let first = ((lo / scale).log10() + 1e-9).floor();
+    let mut last = ((hi / scale).log10() - 1e-9).ceil();
+    if last <= first {
+        last = first + 1.0;
+    }
+    let decades_per_label = ((last - first) / max_intervals).ceil().max(1.0);
+    let intervals = ((last - first) / decades_per_label).ceil();
+    let last = first + intervals * decades_per_label;
+    let labels = (0..=intervals as usize)
+        .map(|i| units::sig(10f64.powf(first + i as f64 * decades_per_label), 3))
+        .collect();
+    NiceAxis {
+        bounds: [first, last],
+        labels,
+        prefix,
+        scale,
+        log: true,
+    }
 }
 
 const MANTISSAS: [f64; 4] = [1.0, 2.0, 2.5, 5.0];
@@ -59,6 +122,7 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
         labels,
         prefix,
         scale,
+        log: false,
     }
 }
 
@@ -109,7 +173,7 @@ fn decimals_of(step: f64) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ui::units::{METRE, METRE_PER_SECOND, NEWTON, SECOND};
+    use crate::ui::units::{METRE, METRE_PER_SECOND, NEWTON, PASCAL, SECOND};
 
     fn values(axis: &NiceAxis) -> Vec<f64> {
         axis.labels.iter().map(|l| l.parse().unwrap()).collect()
@@ -195,6 +259,37 @@ mod tests {
         assert_eq!(axis.labels, ["0", "250", "500"]);
         let axis = nice_axis(0.0, 403.3, NEWTON, 6);
         assert_eq!(axis.labels, ["0", "100", "200", "300", "400", "500"]);
+    }
+
+    #[test]
+    fn log_axes_span_whole_decades_of_the_display_unit() {
+        // A v₀ sweep from 3 mm/s to 3 m/s: three whole decades, the axis itself.
+        let axis = log_axis(0.003, 3.0, METRE_PER_SECOND, 8);
+        assert!((axis.bounds[0] - 0.003f64.log10()).abs() < 1e-12);
+        assert!((axis.bounds[1] - 3f64.log10()).abs() < 1e-12);
+        assert_eq!(axis.labels, ["0.003", "0.03", "0.3", "3"]);
+        assert_eq!(
+            log_axis(0.003, 3.0, METRE_PER_SECOND, 2).labels,
+            ["0.003", "3"]
+        );
+        // Otherwise widened to whole decades, labels at each.
+        let axis = log_axis(0.002, 3.0, METRE_PER_SECOND, 8);
+        assert_eq!(axis.bounds, [-3.0, 1.0]);
+        assert_eq!(axis.labels, ["0.001", "0.01", "0.1", "1", "10"]);
+        assert!((axis.to_display(0.3) - 0.3f64.log10()).abs() < 1e-12);
+        assert!(axis.to_display(0.0).is_infinite() && axis.to_display(-1.0).is_nan());
+        // With few labels, several decades per label, still on whole decades.
+        let axis = log_axis(2e-6, 9e-2, METRE, 3);
+        assert_eq!(axis.prefix.symbol, "m");
+        assert_eq!(axis.bounds, [-3.0, 3.0]);
+        assert_eq!(axis.labels, ["0.001", "1", "1000"]);
+        // Whole decades are not widened; degenerate input still gives an axis.
+        assert_eq!(log_axis(1e9, 1e11, PASCAL, 5).bounds, [0.0, 2.0]);
+        assert_eq!(log_axis(1e9, 1e11, PASCAL, 5).labels, ["1", "10", "100"]);
+        let flat = log_axis(5.0, 5.0, NEWTON, 5);
+        assert!(flat.bounds[1] > flat.bounds[0]);
+        let bad = log_axis(-1.0, f64::NAN, NEWTON, 5);
+        assert!(bad.bounds[1] > bad.bounds[0]);
     }
 
     #[test]

@@ -9,18 +9,28 @@ use crate::model::presets::{Registry, SaveTarget, is_kebab_case, kebab_case};
 use crate::model::scene_key::BodyIndex;
 
 use super::action::Action;
-use super::app::{App, Cursor, Editor, Mode, Prompt, PromptKind, model_index};
+use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
 use super::export;
 use super::field::Nudge;
 use super::picker::{EntryKind, Picker};
+use super::study_worker::StudyReport;
+use super::tab::Tab;
+use super::update_tabs;
 use super::worker::Report;
 
 /// Advances the state machine by one action.
 pub fn update(app: &mut App, action: Action) {
+    transition(app, action);
+    // Whatever changed, the shown tab asks for the studies it lacks (same inputs ask nothing).
+    app.request_studies();
+}
+
+fn transition(app: &mut App, action: Action) {
     match action {
         Action::Quit => app.quit = true,
-        Action::Resize => {}
+        Action::Resize(width, height) => app.screen = (width, height),
         Action::Solved(report) => solved(app, report),
+        Action::Studied(report) => studied(app, report),
         action => {
             app.message = None;
             match std::mem::replace(&mut app.mode, Mode::Normal) {
@@ -50,8 +60,27 @@ fn solved(app: &mut App, report: Report) {
     }
 }
 
+fn studied(app: &mut App, report: StudyReport) {
+    match report {
+        Ok(outcome) => {
+            app.studies.accept(outcome);
+        }
+        // Only a panic of a study reports an error; the runtime ends the app on it.
+        Err(message) => app.say(message, true),
+    }
+}
+
 fn normal(app: &mut App, action: Action) {
+    let action = match app.tab {
+        Tab::Explorer => action,
+        // The study tabs take the keys that act on their own settings; the rest is shared.
+        _ => match update_tabs::study_tab(app, action) {
+            Some(action) => action,
+            None => return,
+        },
+    };
     match action {
+        Action::Tab(tab) => app.tab = tab,
         Action::Up => app.move_cursor(false),
         Action::Down => app.move_cursor(true),
         Action::Nudge(direction) => match app.cursor {
@@ -66,7 +95,7 @@ fn normal(app: &mut App, action: Action) {
             Cursor::Field(field) => {
                 let text = field.edit_text(&app.draft);
                 app.mode = Mode::Editing(Editor {
-                    field,
+                    target: EditTarget::Field(field),
                     input: Input::new(text),
                     error: None,
                 });
@@ -129,8 +158,9 @@ fn normal(app: &mut App, action: Action) {
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit
-        | Action::Resize
-        | Action::Solved(_) => {}
+        | Action::Resize(..)
+        | Action::Solved(_)
+        | Action::Studied(_) => {}
     }
 }
 
@@ -150,16 +180,19 @@ fn editing(app: &mut App, mut editor: Editor, action: Action) {
             app.mode = Mode::Editing(editor);
         }
         Action::Enter => {
-            let mut draft = app.draft.clone();
-            match editor.field.apply(editor.input.value(), &mut draft) {
-                Ok(()) => {
-                    app.draft = draft;
-                    app.recompute();
+            let committed = match editor.target {
+                EditTarget::Field(field) => {
+                    let mut draft = app.draft.clone();
+                    field.apply(editor.input.value(), &mut draft).map(|()| {
+                        app.draft = draft;
+                        app.recompute();
+                    })
                 }
-                Err(reason) => {
-                    editor.error = Some(reason);
-                    app.mode = Mode::Editing(editor);
-                }
+                target => update_tabs::commit(app, target, editor.input.value()),
+            };
+            if let Err(reason) = committed {
+                editor.error = Some(reason);
+                app.mode = Mode::Editing(editor);
             }
         }
         Action::Cancel => {}

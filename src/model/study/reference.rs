@@ -2,7 +2,8 @@
 
 use crate::model::force::{ForceModel, ImpactParams};
 use crate::model::impact::{
-    ImpactError, ImpactSummary, MethodChoice, MethodUsed, SolveOptions, solve_impact,
+    ImpactError, ImpactSolution, ImpactSummary, MethodChoice, MethodUsed, SolveOptions,
+    solve_impact,
 };
 use crate::model::ode::Method;
 
@@ -11,6 +12,15 @@ pub const REFERENCE_RTOL: f64 = 1e-13;
 
 /// The exact solution where one exists, else DOP853 at rtol 1e-13.
 pub fn reference(model: ForceModel, params: &ImpactParams) -> Result<ImpactSummary, ImpactError> {
+    reference_solution(model, params).map(|solution| solution.summary)
+}
+
+/// [`reference`] with its curves, for drawing other solves over it (the exact solution's curves come
+/// from a tight-tolerance integrator, see [`MethodUsed::Exact`]).
+pub fn reference_solution(
+    model: ForceModel,
+    params: &ImpactParams,
+) -> Result<ImpactSolution, ImpactError> {
     let tight = SolveOptions {
         method: MethodChoice::Auto,
         rtol: REFERENCE_RTOL,
@@ -21,13 +31,13 @@ pub fn reference(model: ForceModel, params: &ImpactParams) -> Result<ImpactSumma
     if auto.summary.method == MethodUsed::Exact
         || auto.summary.method == MethodUsed::Integrator(Method::Dop853)
     {
-        return Ok(auto.summary);
+        return Ok(auto);
     }
     let dop853 = SolveOptions {
         method: MethodChoice::Integrator(Method::Dop853),
         ..tight
     };
-    Ok(solve_impact(model, params, &dop853)?.summary)
+    solve_impact(model, params, &dop853)
 }
 
 /// Relative errors of the four headline numbers against a reference.

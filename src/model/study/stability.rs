@@ -199,9 +199,21 @@ pub fn step_bounds(
     params: &ImpactParams,
     reference: &ImpactSummary,
 ) -> Vec<StepBound> {
+    step_bounds_until(model, params, reference, &|| false)
+}
+
+/// [`step_bounds`] that gives up between methods once `stop` returns true, with the methods measured
+/// so far (an interactive caller whose request was superseded throws them away).
+pub fn step_bounds_until(
+    model: ForceModel,
+    params: &ImpactParams,
+    reference: &ImpactSummary,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Vec<StepBound> {
     let omega_max = peak_angular_frequency(params);
     FIXED_STEP_METHODS
         .iter()
+        .take_while(|_| !stop())
         .map(|&method| StepBound {
             method,
             theoretical_dt: critical_step(method, params),
@@ -209,6 +221,12 @@ pub fn step_bounds(
             omega_max,
         })
         .collect()
+}
+
+/// h·ω_max: a step measured against the stiffest point of the impact, the number the bounds of
+/// [`stability_bound`] are stated in.
+pub fn step_ratio(dt: f64, params: &ImpactParams) -> f64 {
+    dt * peak_angular_frequency(params)
 }
 
 #[cfg(test)]
@@ -236,5 +254,9 @@ mod tests {
         };
         let dt = critical_step(Method::Verlet, &params).unwrap();
         assert!((dt - 2.0 * (2.0f64 / 8e6).sqrt()).abs() < 1e-15);
+        // At its own critical step, a method sits exactly on its bound.
+        assert!((step_ratio(dt, &params) - 2.0).abs() < 1e-12);
+        let rk4 = critical_step(Method::Rk4, &params).unwrap();
+        assert!((step_ratio(rk4, &params) - 8f64.sqrt()).abs() < 1e-12);
     }
 }

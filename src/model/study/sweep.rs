@@ -98,12 +98,22 @@ pub fn sweep_values(spec: &SweepSpec) -> Result<Vec<f64>, SweepError> {
 
 /// Solves every point of the sweep in parallel; rows come out in parameter order.
 pub fn sweep(base: &Scene, spec: &SweepSpec) -> Result<Vec<SweepRow>, SweepError> {
+    sweep_until(base, spec, &|| false).map(Option::unwrap_or_default)
+}
+
+/// [`sweep`] that gives up once `stop` returns true (checked before each point): `None` then, as an
+/// interactive caller whose request was superseded wants no partial sweep.
+pub fn sweep_until(
+    base: &Scene,
+    spec: &SweepSpec,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Result<Option<Vec<SweepRow>>, SweepError> {
     let values = sweep_values(spec)?;
     // Fail early on a key that does not apply to this scene's shapes.
     spec.key.set(&mut base.clone(), values[0])?;
     Ok(values
         .into_par_iter()
-        .map(|value| sweep_point(base, spec, value))
+        .map(|value| (!stop()).then(|| sweep_point(base, spec, value)))
         .collect())
 }
 
@@ -193,6 +203,40 @@ mod tests {
         let log = sweep_values(&spec(1e-3, 1e1, 5, true)).unwrap();
         assert!((log[1] / 1e-2 - 1.0).abs() < 1e-12);
         assert!((log[4] / 10.0 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_stopped_sweep_gives_nothing_and_an_unstopped_one_every_row() {
+        use crate::model::body::{Body, Shape};
+        use crate::model::material::tests::steel;
+        use crate::model::scene::ImpactConditions;
+        let scene = Scene {
+            name: "steel".into(),
+            body1: Body {
+                shape: Shape::Sphere { radius: 0.01 },
+                material: steel(),
+                mass: None,
+            },
+            body2: Body {
+                shape: Shape::Plane,
+                material: steel(),
+                mass: None,
+            },
+            impact: ImpactConditions {
+                v0: 0.3,
+                restitution: 0.6,
+                plastic_indentation: 2.3e-6,
+            },
+        };
+        let mut spec = spec(0.01, 1.0, 4, true);
+        spec.models = vec![ForceModel::Quasistatic];
+        assert_eq!(sweep_until(&scene, &spec, &|| true), Ok(None));
+        let rows = sweep_until(&scene, &spec, &|| false).unwrap().unwrap();
+        assert_eq!(rows.len(), 4);
+        assert!(
+            rows.iter()
+                .all(|r| r.impacts.len() == 1 && r.error.is_none())
+        );
     }
 
     #[test]

@@ -68,10 +68,24 @@ pub fn work_precision(
     params: &ImpactParams,
     timing: Timing,
 ) -> Result<(ImpactSummary, Vec<WorkPrecisionRow>), ImpactError> {
+    work_precision_until(model, params, timing, &|| false)
+}
+
+/// [`work_precision`] that gives up between rungs once `stop` returns true, with the rungs measured
+/// so far: an interactive caller whose request was superseded throws the partial ladder away.
+pub fn work_precision_until(
+    model: ForceModel,
+    params: &ImpactParams,
+    timing: Timing,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Result<(ImpactSummary, Vec<WorkPrecisionRow>), ImpactError> {
     let reference = reference(model, params)?;
     let mut rows = Vec::new();
     for method in ADAPTIVE_METHODS {
         for rtol in rtol_ladder() {
+            if stop() {
+                return Ok((reference, rows));
+            }
             let opts = SolveOptions {
                 method: MethodChoice::Integrator(method),
                 rtol,
@@ -90,10 +104,16 @@ pub fn work_precision(
         }
     }
     for method in FIXED_STEP_METHODS {
+        if stop() {
+            return Ok((reference, rows));
+        }
         let Some(largest) = largest_bounded_step(model, params, &reference, method) else {
             continue;
         };
         for halving in 0..=FIXED_STEP_HALVINGS {
+            if stop() {
+                return Ok((reference, rows));
+            }
             let dt = largest / f64::from(1u32 << halving);
             let opts = SolveOptions {
                 method: MethodChoice::Integrator(method),

@@ -6,7 +6,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
 
 use crate::model::scene_key::BodyIndex;
-use crate::ui::app::{App, Cursor, Mode};
+use crate::ui::app::{App, Cursor, EditTarget, Mode};
 use crate::ui::field::{self, Field, Section};
 use crate::ui::theme::Role;
 
@@ -51,7 +51,7 @@ fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
             );
         };
         match &app.mode {
-            Mode::Editing(editor) if editor.field == field => {
+            Mode::Editing(editor) if editor.target == EditTarget::Field(field) => {
                 if let Some(error) = &editor.error {
                     note(error, Role::Error);
                 }
@@ -133,7 +133,7 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
                 let label = format!(" {:<w$}", field.label(), w = LABEL_WIDTH - 1);
                 let under_cursor = app.cursor == Cursor::Field(*field);
                 let (value, value_role) = match &app.mode {
-                    Mode::Editing(editor) if editor.field == *field => {
+                    Mode::Editing(editor) if editor.target == EditTarget::Field(*field) => {
                         let scroll = editor.input.visual_scroll(value_width.saturating_sub(1));
                         let x = area.x
                             + (LABEL_WIDTH + editor.input.visual_cursor().saturating_sub(scroll))
@@ -155,7 +155,8 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
                     }
                     _ => (field.display(&app.draft), Role::Normal),
                 };
-                let editing = matches!(&app.mode, Mode::Editing(e) if e.field == *field);
+                let editing =
+                    matches!(&app.mode, Mode::Editing(e) if e.target == EditTarget::Field(*field));
                 let label_role = if editing { Role::Cursor } else { Role::Label };
                 let mut line = Line::from(vec![
                     Span::styled(label, theme.style(label_role)),

@@ -2,7 +2,9 @@
 
 mod chart;
 mod common;
+mod editable;
 mod form;
+mod graph;
 mod help;
 pub mod layout;
 mod models;
@@ -10,18 +12,44 @@ mod picker;
 mod prompt;
 mod regime;
 mod results;
+mod stability;
 mod status;
+mod sweep;
+mod tabs;
 mod too_small;
+mod work_precision;
 
 use ratatui::Frame;
 
 use super::app::{App, Mode};
+use super::tab::Tab;
 
 /// Draws the whole screen for `app`.
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
-    let Some(areas) = layout::layout(area, app.chart) else {
+    let Some(screen) = layout::screen(area) else {
         too_small::render(frame, area, app);
+        return;
+    };
+    tabs::render(frame, screen.tabs, app);
+    match app.tab {
+        Tab::Explorer => explorer(frame, app),
+        Tab::WorkPrecision => work_precision::render(frame, screen.body, app, screen.roomy),
+        Tab::Stability => stability::render(frame, screen.body, app, screen.roomy),
+        Tab::Sweep => sweep::render(frame, &screen, app),
+    }
+    status::render(frame, screen.status, app);
+    match &app.mode {
+        Mode::Help => help::render(frame, area, app),
+        Mode::Picker(picker) => picker::render(frame, area, app, picker),
+        Mode::Prompt(prompt) => prompt::render(frame, screen.status, app, prompt),
+        Mode::Normal | Mode::Editing(_) => {}
+    }
+}
+
+/// Tab 1: forms, models, charts, results and the regime line.
+fn explorer(frame: &mut Frame, app: &App) {
+    let Some(areas) = layout::layout(frame.area(), app.chart) else {
         return;
     };
     regime::render(frame, areas.info, app, areas.roomy);
@@ -31,11 +59,4 @@ pub fn draw(frame: &mut Frame, app: &App) {
         chart::render(frame, *rect, app, *kind, areas.roomy);
     }
     results::render(frame, areas.results, app, areas.roomy);
-    status::render(frame, areas.status, app);
-    match &app.mode {
-        Mode::Help => help::render(frame, area, app),
-        Mode::Picker(picker) => picker::render(frame, area, app, picker),
-        Mode::Prompt(prompt) => prompt::render(frame, areas.status, app, prompt),
-        Mode::Normal | Mode::Editing(_) => {}
-    }
 }

@@ -8,7 +8,7 @@ use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
 use crate::model::ForceModel;
-use crate::ui::advice::advise;
+use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
 use crate::ui::theme::{LinePattern, Role};
 
@@ -19,7 +19,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let fits: Vec<ForceModel> = app
         .valid
         .as_ref()
-        .map(|v| advise(&v.quasistatic, v.scene.impact.v0).fits)
+        .map(|v| recommend(&v.scene, &v.quasistatic).fits)
         .unwrap_or_default();
     let block = pane("Models · ✓ fits the regime", theme, roomy);
     let inner = block.inner(area);

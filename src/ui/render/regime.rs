@@ -1,5 +1,5 @@
-//! The regime line: v₀ against the yield-onset velocities, the wave criterion, and the models that
-//! fit the regime, with the reason.
+//! The regime line: v₀ against the yield-onset velocities, the wave criterion, the model the scene
+//! needs (the model layer's recommendation) and the others that fit, with the reason.
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -7,12 +7,21 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
-use crate::ui::advice::{advise, regime_name};
+use crate::model::recommend::recommend;
 use crate::ui::app::App;
 use crate::ui::theme::Role;
 use crate::ui::units::sig;
 
 use super::common::{flow, model_name, pane, wrap};
+
+/// A short name of a regime for the regime line.
+fn regime_name(regime: Regime) -> &'static str {
+    match regime {
+        Regime::Elastic => "elastic",
+        Regime::YieldBegins => "yield begins",
+        Regime::FullyPlastic => "fully plastic",
+    }
+}
 
 fn speed(v: f64) -> String {
     format!("{} m/s", sig(v, 3))
@@ -49,7 +58,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     };
     let onset = &valid.quasistatic.onset;
     let v0 = valid.scene.impact.v0;
-    let advice = advise(&valid.quasistatic, v0);
+    let advice = recommend(&valid.scene, &valid.quasistatic);
     let regime_role = match advice.regime {
         Regime::Elastic => Role::Good,
         Regime::YieldBegins => Role::Warning,
@@ -90,21 +99,27 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             }),
         ),
     ]);
-    let mut fits = vec![Span::styled("fits: ", theme.style(Role::Label))];
-    for (i, &model) in advice.fits.iter().enumerate() {
-        if i > 0 {
-            fits.push(Span::raw(", "));
+    items.push(vec![
+        Span::styled("use: ", theme.style(Role::Label)),
+        Span::styled(
+            model_name(advice.model, 19),
+            theme.model_style(advice.model),
+        ),
+        Span::styled(format!(" ({})", advice.gist), theme.style(Role::Normal)),
+    ]);
+    if advice.fits.len() > 1 {
+        let mut also = vec![Span::styled("also fit: ", theme.style(Role::Label))];
+        for (i, &model) in advice.fits[1..].iter().enumerate() {
+            if i > 0 {
+                also.push(Span::raw(", "));
+            }
+            also.push(Span::styled(
+                model_name(model, 19),
+                theme.model_style(model),
+            ));
         }
-        fits.push(Span::styled(
-            model_name(model, 19),
-            theme.model_style(model),
-        ));
+        items.push(also);
     }
-    fits.push(Span::styled(
-        format!(" ({})", advice.gist),
-        theme.style(Role::Normal),
-    ));
-    items.push(fits);
     let mut lines = flow(items, width, max_lines, Span::raw("  ·  "));
     let mean_pressure = format!(
         "mean-pressure convention: v_y {}, v_p {}",

@@ -7,15 +7,42 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
 
 use crate::ui::app::{App, Mode};
+use crate::ui::tab::Tab;
 use crate::ui::theme::Role;
 use crate::ui::units;
 
-/// Key hints per mode: (key, action).
-fn hints(mode: &Mode) -> &'static [(&'static str, &'static str)] {
-    match mode {
-        Mode::Normal => &[
+/// Key hints per mode and tab: (key, action).
+fn hints(mode: &Mode, tab: Tab) -> &'static [(&'static str, &'static str)] {
+    match (mode, tab) {
+        (Mode::Normal, Tab::WorkPrecision) => &[
             ("?", "help"),
             ("q", "quit"),
+            ("1-4", "views"),
+            ("[ ]", "model"),
+            ("p", "presets"),
+        ],
+        (Mode::Normal, Tab::Stability) => &[
+            ("?", "help"),
+            ("q", "quit"),
+            ("1-4", "views"),
+            ("Enter", "step"),
+            ("←→", "½× 2×"),
+            ("[ ]", "model"),
+        ],
+        (Mode::Normal, Tab::Sweep) => &[
+            ("?", "help"),
+            ("q", "quit"),
+            ("1-4", "views"),
+            ("↑↓", "move"),
+            ("Enter", "edit"),
+            ("←→", "change"),
+            ("Space", "model"),
+            ("[ ]", "focus"),
+        ],
+        (Mode::Normal, Tab::Explorer) => &[
+            ("?", "help"),
+            ("q", "quit"),
+            ("1-4", "views"),
             ("↑↓", "move"),
             ("Enter", "edit"),
             ("←→", "nudge"),
@@ -24,14 +51,14 @@ fn hints(mode: &Mode) -> &'static [(&'static str, &'static str)] {
             ("s", "save"),
             ("e", "export"),
         ],
-        Mode::Editing(_) => &[("Enter", "commit"), ("Esc", "cancel")],
-        Mode::Help => &[("Esc", "close")],
-        Mode::Picker(_) => &[
+        (Mode::Editing(_), _) => &[("Enter", "commit"), ("Esc", "cancel")],
+        (Mode::Help, _) => &[("Esc", "close")],
+        (Mode::Picker(_), _) => &[
             ("Enter", "load / apply"),
             ("1 2", "material to body"),
             ("Esc", "close"),
         ],
-        Mode::Prompt(_) => &[("Enter", "write"), ("Esc", "cancel")],
+        (Mode::Prompt(_), _) => &[("Enter", "write"), ("Esc", "cancel")],
     }
 }
 
@@ -58,7 +85,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     if app.is_dirty() {
         left.push(Span::styled("*", theme.style(Role::Warning)));
     }
-    if app.is_computing() {
+    if app.is_computing() || app.is_studying() {
         left.push(Span::styled(" · computing…", theme.style(Role::Warning)));
     } else if let Some(elapsed) = app.last_recompute {
         left.push(Span::styled(
@@ -87,7 +114,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         None => {
             // As many hints as fit, in order.
             let mut used = 0;
-            hints(&app.mode)
+            hints(&app.mode, app.tab)
                 .iter()
                 .take_while(|(key, what)| {
                     used += key.chars().count() + what.chars().count() + 3;

@@ -1,0 +1,253 @@
+//! The simplest force model adequate for a scene, and why (the paper's §2, §4 and conclusion).
+//!
+//! The quasistatic estimate places v₀ against the yield-onset velocities (p₀ = 1.1·σ_y and 2.8·σ_y)
+//! and the wave criterion v₀ ≤ 10⁻⁵·√(E/ρ); the impact conditions say whether losses (e < 1) and a
+//! permanent indentation (x_pl > 0) are to be modelled. From these the paper's guidance follows:
+//! elastic Hertz while nothing yields; dry friction (§4.1) for very low speeds that lose energy
+//! without a dent; the proposed viscous model (§4.2) where a dent is expected; the Hunt–Crossley and
+//! Lankarani–Nikravesh hysteresis models where e is close to 1, the small losses they were derived
+//! for (at e = 0.6 both overshoot v₀e, Fig. 5).
+
+use crate::model::force::ForceModel;
+use crate::model::pressure::Regime;
+use crate::model::quasistatic::Quasistatic;
+use crate::model::scene::Scene;
+
+/// Restitution from which losses count as small: the hysteresis models (eqs 19–20) assume them.
+pub const NEAR_ELASTIC_RESTITUTION: f64 = 0.9;
+
+/// The model a scene needs, the models that fit its regime, and the reason.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Recommendation {
+    pub regime: Regime,
+    /// v₀ ≤ 10⁻⁵·√(E/ρ): the conclusion's criterion for no permanent indentation.
+    pub within_wave_limit: bool,
+    /// The simplest adequate model.
+    pub model: ForceModel,
+    /// Models valid in this regime, the recommended one first.
+    pub fits: Vec<ForceModel>,
+    /// The gist, for narrow screens.
+    pub gist: &'static str,
+    /// Why, in one line.
+    pub why: String,
+}
+
+/// The recommendation for `scene`, whose quasistatic estimate is `quasistatic`.
+pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
+    let impact = &scene.impact;
+    let (v0, e, x_pl) = (impact.v0, impact.restitution, impact.plastic_indentation);
+    let regime = quasistatic.regime(v0);
+    let within_wave_limit = v0 <= quasistatic.onset.v_wave_limit;
+    let lossless = e >= 1.0;
+    let near_elastic = e >= NEAR_ELASTIC_RESTITUTION;
+    let hysteresis = [ForceModel::LankaraniNikravesh, ForceModel::HuntCrossley];
+    let (model, others, gist, why): (ForceModel, Vec<ForceModel>, &'static str, String) =
+        match regime {
+            Regime::Elastic if lossless => (
+                ForceModel::Quasistatic,
+                Vec::new(),
+                "nothing yields or is lost",
+                "p₀ < 1.1·σ_y and e = 1: nothing yields and nothing is lost, elastic Hertz (eq 1) \
+                 is the whole story"
+                    .into(),
+            ),
+            Regime::Elastic if within_wave_limit => (
+                ForceModel::Quasistatic,
+                vec![ForceModel::DryFriction],
+                "no yield, no dent",
+                format!(
+                    "p₀ < 1.1·σ_y and v₀ ≤ 10⁻⁵·√(E/ρ): no yield, no dent; elastic Hertz (eq 1) \
+                     gives the force, dry friction (eq 15, §4.1) adds the loss e = {} if it matters",
+                    short(e)
+                ),
+            ),
+            Regime::Elastic => (
+                ForceModel::Quasistatic,
+                [ForceModel::DryFriction]
+                    .into_iter()
+                    .chain(hysteresis)
+                    .collect(),
+                "no yield; losses likely",
+                "p₀ < 1.1·σ_y: elastic Hertz (eq 1) gives the force, but v₀ > 10⁻⁵·√(E/ρ): \
+                 expect losses, which the dissipative models (eqs 15, 19, 20) carry"
+                    .into(),
+            ),
+            Regime::FullyPlastic => (
+                ForceModel::Proposed,
+                Vec::new(),
+                "beyond Hertz: all extrapolate",
+                "p₀ ≥ 2.8·σ_y: fully plastic, beyond Hertz theory: every model extrapolates; the \
+                 proposed model (eq 18), with its permanent indentation, least"
+                    .into(),
+            ),
+            Regime::YieldBegins if x_pl > 0.0 => (
+                ForceModel::Proposed,
+                hysteresis.to_vec(),
+                "yield begins, a dent is kept",
+                "p₀ ≥ 1.1·σ_y: yield begins and the given x_pl > 0 says the surface keeps a dent: \
+                 the proposed model (eq 18, §4.2) leaves it and exits near v₀e"
+                    .into(),
+            ),
+            Regime::YieldBegins if within_wave_limit => (
+                ForceModel::DryFriction,
+                hysteresis.to_vec(),
+                "loss without a dent",
+                "p₀ ≥ 1.1·σ_y, but v₀ ≤ 10⁻⁵·√(E/ρ) and x_pl = 0: energy is lost without a dent, \
+                 as dry friction (eq 15, §4.1) models it"
+                    .into(),
+            ),
+            Regime::YieldBegins if near_elastic => (
+                ForceModel::LankaraniNikravesh,
+                vec![ForceModel::HuntCrossley, ForceModel::Proposed],
+                "small losses",
+                format!(
+                    "p₀ ≥ 1.1·σ_y with e = {} close to 1 and x_pl = 0: small losses, which the \
+                     hysteresis damping of Lankarani–Nikravesh (eq 20) and Hunt–Crossley (eq 19) \
+                     was derived for",
+                    short(e)
+                ),
+            ),
+            Regime::YieldBegins => (
+                ForceModel::Proposed,
+                hysteresis.to_vec(),
+                "a dent expected: give x_pl",
+                format!(
+                    "p₀ ≥ 1.1·σ_y and v₀ > 10⁻⁵·√(E/ρ): a dent is expected and e = {} is far from 1 \
+                     (the hysteresis models overshoot v₀e): the proposed model (eq 18), given x_pl > 0 \
+                     (with 0 it is elastic)",
+                    short(e)
+                ),
+            ),
+        };
+    let fits = std::iter::once(model).chain(others).collect();
+    Recommendation {
+        regime,
+        within_wave_limit,
+        model,
+        fits,
+        gist,
+        why,
+    }
+}
+
+/// A restitution as the reason prints it: up to three significant digits.
+fn short(e: f64) -> String {
+    let text = format!("{e:.3}");
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::body::{Body, Shape};
+    use crate::model::material::tests::steel;
+    use crate::model::scene::ImpactConditions;
+
+    /// The Fig. 5 scene (steel sphere R = 10 mm on a steel plate) with the given impact conditions.
+    /// Table 1: v_y = 0.032 m/s, v_p = 0.326 m/s; wave limit 10⁻⁵·√(E/ρ) ≈ 0.0506 m/s.
+    fn steel_scene(v0: f64, restitution: f64, plastic_indentation: f64) -> Scene {
+        Scene {
+            name: "steel".into(),
+            body1: Body {
+                shape: Shape::Sphere { radius: 0.01 },
+                material: steel(),
+                mass: None,
+            },
+            body2: Body {
+                shape: Shape::Plane,
+                material: steel(),
+                mass: None,
+            },
+            impact: ImpactConditions {
+                v0,
+                restitution,
+                plastic_indentation,
+            },
+        }
+    }
+
+    fn at(v0: f64, e: f64, x_pl: f64) -> Recommendation {
+        let scene = steel_scene(v0, e, x_pl);
+        let q = scene.quasistatic().unwrap();
+        recommend(&scene, &q)
+    }
+
+    #[test]
+    fn below_yield_onset_elastic_hertz_and_the_wave_criterion() {
+        let lossless = at(0.01, 1.0, 0.0);
+        assert_eq!(lossless.regime, Regime::Elastic);
+        assert_eq!(lossless.model, ForceModel::Quasistatic);
+        assert_eq!(lossless.fits, [ForceModel::Quasistatic]);
+
+        // Fig. 4's scene: v₀ = 0.03 m/s, e = 0.9: Hertz, with dry friction for the loss.
+        let fig4 = at(0.03, 0.9, 0.0);
+        assert_eq!(fig4.regime, Regime::Elastic);
+        assert!(fig4.within_wave_limit);
+        assert_eq!(fig4.model, ForceModel::Quasistatic);
+        assert_eq!(
+            fig4.fits,
+            [ForceModel::Quasistatic, ForceModel::DryFriction]
+        );
+        assert!(fig4.why.contains("10⁻⁵·√(E/ρ)"), "{}", fig4.why);
+        assert!(fig4.why.contains("e = 0.9"), "{}", fig4.why);
+    }
+
+    #[test]
+    fn fig5_scene_needs_the_proposed_model_for_its_dent() {
+        let fig5 = at(0.3, 0.6, 2.3e-6);
+        assert_eq!(fig5.regime, Regime::YieldBegins);
+        assert!(!fig5.within_wave_limit);
+        assert_eq!(fig5.model, ForceModel::Proposed);
+        assert!(!fig5.fits.contains(&ForceModel::Quasistatic));
+        assert!(fig5.fits.contains(&ForceModel::HuntCrossley));
+        assert!(fig5.why.contains("dent"), "{}", fig5.why);
+    }
+
+    #[test]
+    fn above_yield_onset_the_dissipative_model_follows_the_losses() {
+        // Between v_y = 0.032 and the wave limit 0.0506 m/s, no dent given: dry friction (§4.1).
+        let slow = at(0.04, 0.8, 0.0);
+        assert_eq!(slow.regime, Regime::YieldBegins);
+        assert!(slow.within_wave_limit);
+        assert_eq!(slow.model, ForceModel::DryFriction);
+        // Past the wave limit with e close to 1 and no dent: hysteresis damping.
+        let near_elastic = at(0.2, 0.95, 0.0);
+        assert_eq!(near_elastic.model, ForceModel::LankaraniNikravesh);
+        assert!(near_elastic.fits.contains(&ForceModel::HuntCrossley));
+        assert!(
+            near_elastic.why.contains("e = 0.95"),
+            "{}",
+            near_elastic.why
+        );
+        // Past the wave limit with a small e and no dent given: the proposed model, asking for x_pl.
+        let lossy = at(0.2, 0.5, 0.0);
+        assert_eq!(lossy.model, ForceModel::Proposed);
+        assert!(lossy.why.contains("x_pl > 0"), "{}", lossy.why);
+        assert_eq!(lossy.gist, "a dent expected: give x_pl");
+    }
+
+    #[test]
+    fn fully_plastic_impacts_are_beyond_hertz() {
+        let fast = at(1.0, 0.6, 2.3e-6);
+        assert_eq!(fast.regime, Regime::FullyPlastic);
+        assert_eq!(fast.fits, [ForceModel::Proposed]);
+        assert!(fast.why.contains("beyond Hertz"));
+    }
+
+    #[test]
+    fn the_recommended_model_always_leads_the_fits() {
+        for v0 in [0.005, 0.02, 0.04, 0.1, 0.3, 0.5, 2.0] {
+            for e in [0.3, 0.6, 0.9, 1.0] {
+                for x_pl in [0.0, 1e-6] {
+                    let r = at(v0, e, x_pl);
+                    assert_eq!(r.fits[0], r.model, "v0 {v0} e {e} x_pl {x_pl}");
+                    assert!(!r.why.is_empty());
+                    let mut unique = r.fits.clone();
+                    unique.sort();
+                    unique.dedup();
+                    assert_eq!(unique.len(), r.fits.len(), "{:?}", r.fits);
+                }
+            }
+        }
+    }
+}

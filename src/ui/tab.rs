@@ -1,0 +1,64 @@
+//! The views of the explorer, one per digit key.
+
+/// A view: the explorer of issue 4, or one of the studies of issue 5.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Tab {
+    /// Forms, charts and results of the checked models.
+    Explorer,
+    /// Error against cost of every method for the focused model.
+    WorkPrecision,
+    /// Fixed-step methods at a chosen step over the reference.
+    Stability,
+    /// One output against one scene parameter for the checked models.
+    Sweep,
+}
+
+impl Tab {
+    pub const ALL: [Tab; 4] = [
+        Tab::Explorer,
+        Tab::WorkPrecision,
+        Tab::Stability,
+        Tab::Sweep,
+    ];
+
+    /// The key that opens the tab.
+    pub fn key(self) -> char {
+        match self {
+            Tab::Explorer => '1',
+            Tab::WorkPrecision => '2',
+            Tab::Stability => '3',
+            Tab::Sweep => '4',
+        }
+    }
+
+    /// The tab of a digit key, if any.
+    pub fn of_key(key: char) -> Option<Tab> {
+        Tab::ALL.into_iter().find(|t| t.key() == key)
+    }
+
+    /// The name on the tab bar.
+    pub fn title(self) -> &'static str {
+        match self {
+            Tab::Explorer => "explorer",
+            Tab::WorkPrecision => "work–precision",
+            Tab::Stability => "stability",
+            Tab::Sweep => "sweep",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn digits_one_to_four_open_the_tabs_in_order() {
+        let keys: String = Tab::ALL.iter().map(|t| t.key()).collect();
+        assert_eq!(keys, "1234");
+        for tab in Tab::ALL {
+            assert_eq!(Tab::of_key(tab.key()), Some(tab));
+        }
+        assert_eq!(Tab::of_key('5'), None);
+        assert_eq!(Tab::of_key('0'), None);
+    }
+}
