@@ -348,3 +348,23 @@ fn sweep_160x48() {
     assert!(!screen.contains("NaN") && !screen.contains("computing…"));
     insta::assert_snapshot!(render(&app, 160, 48).backend());
 }
+
+#[test]
+fn every_tab_draws_at_every_size_without_nan() {
+    for tab in [Tab::WorkPrecision, Tab::Stability, Tab::Sweep] {
+        let app = app_on(tab);
+        for (w, h) in [(80, 24), (100, 30), (120, 40), (200, 60), (30, 5)] {
+            let screen = text(render(&app, w, h).backend().buffer());
+            if std::env::var_os("SHOW_SCREENS").is_some() {
+                println!("{tab:?} {w}×{h}\n{screen}\n");
+            }
+            assert!(
+                !screen.contains("NaN") && !screen.contains("inf"),
+                "{tab:?} {w}×{h}"
+            );
+            if w >= 80 {
+                assert!(screen.contains(tab.title()), "{tab:?} {w}×{h}: the tab bar");
+            }
+        }
+    }
+}

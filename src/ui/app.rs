@@ -20,6 +20,7 @@ use super::studies::{Studies, StudyJob, StudyKind, StudySpec};
 use super::sweep_settings::{SweepField, SweepSettings};
 use super::tab::Tab;
 use super::theme::Theme;
+use super::wp_plot::Cost;
 
 /// Where the cursor is: on a form field or on a model of the checklist.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -143,6 +144,8 @@ pub struct App {
     pub sweep: SweepSettings,
     /// The row of the sweep form under the cursor.
     pub sweep_cursor: SweepField,
+    /// The work-precision chart shown where only one fits.
+    pub cost: Cost,
     /// Terminal size (columns, rows), for sizing sweeps to their chart; (0, 0) until known.
     pub screen: (u16, u16),
     /// The chart shown first (alone where only one fits).
@@ -194,6 +197,7 @@ impl App {
             step: None,
             sweep: SweepSettings::default(),
             sweep_cursor: SweepField::Parameter,
+            cost: Cost::Seconds,
             screen: (0, 0),
             chart: ChartKind::ForceDisplacement,
             marker,

@@ -14,6 +14,7 @@ use super::tab::Tab;
 use super::testing::fig5_scene;
 use super::theme::Theme;
 use super::update::update;
+use super::wp_plot::Cost;
 use crate::model::ForceModel;
 use crate::model::ode::Method;
 use crate::model::presets::Registry;
@@ -83,6 +84,21 @@ fn digits_switch_tabs_and_each_tab_asks_only_for_its_studies() {
     assert!(kinds(&mut a).is_empty());
     assert_eq!(a.tab, Tab::Explorer);
     assert!(!a.is_studying(), "the explorer shows no study");
+}
+
+#[test]
+fn c_switches_the_chart_of_the_shown_tab_only() {
+    let mut a = app();
+    let chart = a.chart;
+    key(&mut a, KeyCode::Char('2'));
+    assert_eq!(a.cost, Cost::Seconds);
+    key(&mut a, KeyCode::Char('c'));
+    assert_eq!(a.cost, Cost::ForceEvals);
+    assert_eq!(a.chart, chart, "the explorer's chart stays");
+    key(&mut a, KeyCode::Char('1'));
+    key(&mut a, KeyCode::Char('c'));
+    assert_ne!(a.chart, chart);
+    assert_eq!(a.cost, Cost::ForceEvals);
 }
 
 #[test]

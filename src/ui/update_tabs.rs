@@ -62,6 +62,10 @@ pub fn study_tab(app: &mut App, action: Action) -> Option<Action> {
             }
             None
         }
+        (Tab::WorkPrecision, Action::CycleChart) => {
+            app.cost = app.cost.other();
+            None
+        }
         // Nothing to move, nudge or edit in these tabs: the keys do nothing rather than reach
         // the explorer's hidden form.
         (

@@ -20,6 +20,14 @@ pub enum Cost {
 }
 
 impl Cost {
+    /// The other chart, for `c` where only one fits.
+    pub fn other(self) -> Cost {
+        match self {
+            Cost::Seconds => Cost::ForceEvals,
+            Cost::ForceEvals => Cost::Seconds,
+        }
+    }
+
     pub fn title(self) -> &'static str {
         match self {
             Cost::Seconds => "log₁₀ s per solve",

@@ -19,7 +19,7 @@ fn hints(mode: &Mode, tab: Tab) -> &'static [(&'static str, &'static str)] {
             ("q", "quit"),
             ("1-4", "views"),
             ("[ ]", "model"),
-            ("p", "presets"),
+            ("c", "chart"),
         ],
         (Mode::Normal, Tab::Stability) => &[
             ("?", "help"),

@@ -65,14 +65,23 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let inner = block.inner(head);
     frame.render_widget(block, head);
     frame.render_widget(Paragraph::new(header), inner);
-    let [a, b] = if area.width >= 120 {
-        Layout::horizontal([Constraint::Fill(1); 2]).areas(charts)
+    // Both charts side by side or stacked where they fit, else the one `c` picks.
+    let shown: Vec<(Cost, Rect)> = if area.width >= 120 {
+        let [a, b] = Layout::horizontal([Constraint::Fill(1); 2]).areas(charts);
+        vec![(Cost::Seconds, a), (Cost::ForceEvals, b)]
+    } else if charts.height >= 30 {
+        let [a, b] = Layout::vertical([Constraint::Fill(1); 2]).areas(charts);
+        vec![(Cost::Seconds, a), (Cost::ForceEvals, b)]
     } else {
-        Layout::vertical([Constraint::Fill(1); 2]).areas(charts)
+        vec![(app.cost, charts)]
     };
-    for (cost, rect) in [(Cost::Seconds, a), (Cost::ForceEvals, b)] {
+    let single = shown.len() == 1;
+    for (cost, rect) in shown {
         let g = diagram(&data, current, cost, rect, theme);
-        let heading = format!("log₁₀ error against {}", cost.title());
+        let mut heading = format!("log₁₀ error against {}", cost.title());
+        if single {
+            heading.push_str(" · c: the other chart");
+        }
         graph::render(
             frame,
             rect,
@@ -175,8 +184,10 @@ fn diagram(
         y_lo = y_lo.min(y);
         y_hi = y_hi.max(y);
     }
-    let max_x_labels = usize::from(area.width / 8).clamp(2, 10);
-    let max_y_labels = usize::from(area.height / 3).clamp(2, 8);
+    // Three labels at least: log axes cross zero freely, and two labels over a range across zero
+    // would need a step wider than the range.
+    let max_x_labels = usize::from(area.width / 8).clamp(3, 10);
+    let max_y_labels = usize::from(area.height / 3).clamp(3, 8);
     let x = nice_axis(x_lo, x_hi, units::DIMENSIONLESS, max_x_labels);
     let y = nice_axis(y_lo, y_hi, units::DIMENSIONLESS, max_y_labels);
     Graph {
