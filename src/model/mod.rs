@@ -7,6 +7,7 @@ pub mod exact;
 pub mod force;
 pub mod impact;
 pub mod material;
+pub mod numeric;
 pub mod ode;
 pub mod overrides;
 pub mod pair;

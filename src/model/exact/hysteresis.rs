@@ -11,10 +11,10 @@
 //! integrator's error can carry the state across it (the solver then ends contact there and says so).
 
 use super::quadrature::tanh_sinh;
-use super::roots::brent;
 use super::special::{unloading_root, y_minus_log1p};
 use super::{ExactImpact, elastic::elastic};
 use crate::model::force::ImpactParams;
+use crate::model::numeric::roots::brent;
 
 /// Below this exit value of w = 1 + αẋ the unloading time is integrated in x rather than in V:
 /// the force has then decayed by the factor w before the bodies reach x = 0, and they coast the

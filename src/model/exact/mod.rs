@@ -8,7 +8,6 @@ pub mod dry_friction;
 pub mod elastic;
 pub mod hysteresis;
 pub mod quadrature;
-pub mod roots;
 pub mod special;
 
 use serde::Serialize;

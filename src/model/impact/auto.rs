@@ -142,9 +142,9 @@ fn exact_summary<L: ForceLaw>(law: &L, sc: &Scales, exact: &ExactImpact) -> Impa
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::exact::roots::brent;
     use crate::model::force::elastic::Elastic;
     use crate::model::force::{ContactEnd, ForceModel, ImpactParams, Phase};
+    use crate::model::numeric::roots::brent;
     use crate::model::power_law::PowerLaw;
 
     /// A genuinely stiff test law: F = k·x + c·(ẋ + v_s), a heavily overdamped spring that, after

@@ -2,8 +2,8 @@
 //! dF/dt, not a sample near it) and the work ∮F dx (Gauss–Legendre on every step's interpolant).
 
 use crate::model::exact::quadrature::{gauss_legendre_4, gauss_legendre_6};
-use crate::model::exact::roots::brent_max;
 use crate::model::force::{ContactEnd, ForceLaw, Phase};
+use crate::model::numeric::roots::brent_max;
 use crate::model::ode::{DenseOutput, Segment, State};
 
 use super::phases::{End, Run};

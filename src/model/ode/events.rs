@@ -3,9 +3,10 @@
 //! Each event function is sampled at the step ends and at a few interior points of the step's
 //! interpolant, so that a double crossing inside one step (g dipping below zero and back) is not
 //! missed; the first sign change in the event's direction is then bracketed and its root located
-//! with Brent's method (Brent 1973, "Algorithms for minimization without derivatives", ch. 4).
+//! with Brent's zeroin (`model::numeric::roots`).
 
 use super::{Direction, Event, Segment, State};
+use crate::model::numeric::roots::zeroin;
 
 /// Interior sample points per step: the step is split into this many equal sub-intervals.
 const SUBDIVISIONS: usize = 4;
@@ -97,83 +98,18 @@ impl EventTracker {
     }
 }
 
-/// Brent's zeroin on [a, b] with g(a) = ga, g(b) = gb of opposite signs (or gb = 0), converged
-/// to |bracket| ≤ 4·ε·|t|. Returns the bracket end on the far side of the crossing (where g has
-/// already changed sign or is zero), so the returned point is never before the event.
-pub(super) fn locate(mut g: impl FnMut(f64) -> f64, a: f64, b: f64, ga: f64, gb: f64) -> f64 {
+/// The root of g on [a, b] with g(a) = ga, g(b) = gb of opposite signs (or gb = 0), by Brent's
+/// zeroin to |bracket| ≤ 4·ε·|t|. Returns the bracket end on the far side of the crossing (where g
+/// has already changed sign or is zero), so the returned point is never before the event.
+pub(super) fn locate(g: impl FnMut(f64) -> f64, a: f64, b: f64, ga: f64, gb: f64) -> f64 {
     if gb == 0.0 {
         return b;
     }
-    // `far` remembers which sign lies beyond the crossing: that of g(b).
-    let far_sign = gb.signum();
-    let (mut a, mut fa, mut b, mut fb) = (a, ga, b, gb);
-    let (mut c, mut fc) = (a, fa);
-    let mut d = b - a;
-    let mut e = d;
-    // Brent's method converges in well under 100 iterations for any f64 bracket; the cap only
-    // guarantees termination if g misbehaves (e.g. returns NaN).
-    for _ in 0..200 {
-        if fb.signum() == fc.signum() {
-            c = a;
-            fc = fa;
-            d = b - a;
-            e = d;
-        }
-        if fc.abs() < fb.abs() {
-            a = b;
-            b = c;
-            c = a;
-            fa = fb;
-            fb = fc;
-            fc = fa;
-        }
-        let tol = 2.0 * f64::EPSILON * b.abs() + f64::MIN_POSITIVE;
-        let m = 0.5 * (c - b);
-        if m.abs() <= tol || fb == 0.0 {
-            break;
-        }
-        if e.abs() >= tol && fa.abs() > fb.abs() {
-            // Inverse quadratic interpolation, or secant when only two points are distinct.
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * m * s;
-                q = 1.0 - s;
-            } else {
-                let qq = fa / fc;
-                let r = fb / fc;
-                p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0));
-                q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            } else {
-                p = -p;
-            }
-            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
-        a = b;
-        fa = fb;
-        b += if d.abs() > tol { d } else { tol.copysign(m) };
-        fb = g(b);
-        if fb.is_nan() {
-            break;
-        }
-    }
-    // b and c bracket the root; return the one on the far side.
-    if fb == 0.0 || fb.signum() == far_sign {
-        b
+    let bracket = zeroin(g, a, b, ga, gb);
+    if bracket.f_best == 0.0 || bracket.f_best.signum() == gb.signum() {
+        bracket.best
     } else {
-        c
+        bracket.other
     }
 }
 

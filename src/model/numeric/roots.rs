@@ -1,26 +1,25 @@
-//! Bracketed root finding (Brent's method) for scalar equations: force peaks, event times.
+//! Bracketed root finding and maximisation (Brent's methods) for scalar functions: event times,
+//! energy-integral roots, force peaks.
 
-/// A root of `f` in [a, b] where f(a) and f(b) differ in sign (or one is zero), found by Brent's
-/// method (inverse quadratic interpolation guarded by bisection) to an interval of ~2 ulp.
-/// Returns `None` if the ends do not bracket a root or `f` is non-finite there.
-pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> Option<f64> {
-    let (mut a, mut b) = (a, b);
-    let (mut fa, mut fb) = (f(a), f(b));
-    if !(fa.is_finite() && fb.is_finite()) {
-        return None;
-    }
-    if fa == 0.0 {
-        return Some(a);
-    }
-    if fb == 0.0 {
-        return Some(b);
-    }
-    if fa.signum() == fb.signum() {
-        return None;
-    }
+/// The final bracket of [`zeroin`]: `best` is the iterate with the smallest |f|, `other` lies on the
+/// opposite side of the root (they coincide in the limit).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bracket {
+    pub best: f64,
+    pub f_best: f64,
+    pub other: f64,
+}
+
+/// Brent's zeroin (Brent 1973, "Algorithms for minimization without derivatives", ch. 4): inverse
+/// quadratic interpolation guarded by bisection, on [a, b] with f(a) = fa and f(b) = fb of opposite
+/// signs, to a bracket of ≤ 4·ε·|root|. Stops early if f turns NaN (`f_best` is then NaN).
+pub fn zeroin(mut f: impl FnMut(f64) -> f64, a: f64, b: f64, fa: f64, fb: f64) -> Bracket {
+    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
     let (mut c, mut fc) = (a, fa);
     let mut d = b - a;
     let mut e = d;
+    // Brent's method converges in well under 100 iterations for any f64 bracket; the cap only
+    // guarantees termination if f misbehaves.
     for _ in 0..200 {
         if fb.signum() == fc.signum() {
             c = a;
@@ -39,9 +38,10 @@ pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> Option<f64> {
         let tol = 2.0 * f64::EPSILON * b.abs() + f64::MIN_POSITIVE;
         let m = 0.5 * (c - b);
         if m.abs() <= tol || fb == 0.0 {
-            return Some(b);
+            break;
         }
         if e.abs() >= tol && fa.abs() > fb.abs() {
+            // Inverse quadratic interpolation, or secant when only two points are distinct.
             let s = fb / fa;
             let (mut p, mut q) = if a == c {
                 (2.0 * m * s, 1.0 - s)
@@ -73,11 +73,35 @@ pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> Option<f64> {
         fa = fb;
         b += if d.abs() > tol { d } else { tol.copysign(m) };
         fb = f(b);
-        if !fb.is_finite() {
-            return None;
+        if fb.is_nan() {
+            break;
         }
     }
-    Some(b)
+    Bracket {
+        best: b,
+        f_best: fb,
+        other: c,
+    }
+}
+
+/// A root of `f` in [a, b] where f(a) and f(b) differ in sign (or one is zero), by [`zeroin`].
+/// Returns `None` if the ends do not bracket a root or `f` is non-finite on the way.
+pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> Option<f64> {
+    let (fa, fb) = (f(a), f(b));
+    if !(fa.is_finite() && fb.is_finite()) {
+        return None;
+    }
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    if fa.signum() == fb.signum() {
+        return None;
+    }
+    let bracket = zeroin(f, a, b, fa, fb);
+    bracket.f_best.is_finite().then_some(bracket.best)
 }
 
 /// The maximum of `f` on [a, b], assumed unimodal there, by golden-section search with parabolic
