@@ -114,5 +114,39 @@ fn edit_cycle(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, impacts, sweeps, edit_cycle);
+/// The two halves of the edit cycle apart: the recompute alone, and the drawing alone.
+fn edit_parts(c: &mut Criterion) {
+    let registry = Registry::builtin().expect("built-in presets load");
+    let scene = registry
+        .scene(DEFAULT_SCENE)
+        .expect("default scene resolves");
+    let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+    for model in ForceModel::ALL {
+        if !app.is_checked(model) {
+            app.focused = model;
+            update(&mut app, Action::ToggleModel);
+        }
+    }
+    app.focused = ForceModel::Proposed;
+    solve_queued(&mut app);
+    let mut up = true;
+    c.bench_function("edit/recompute/5-models", |b| {
+        b.iter(|| {
+            let direction = if up { Nudge::Up } else { Nudge::Down };
+            up = !up;
+            update(&mut app, Action::Nudge(direction));
+            solve_queued(&mut app)
+        })
+    });
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).expect("a test backend");
+    c.bench_function("edit/render/160x48", |b| {
+        b.iter(|| {
+            terminal
+                .draw(|frame| draw(frame, black_box(&app)))
+                .expect("drawing into a test backend");
+        })
+    });
+}
+
+criterion_group!(benches, impacts, sweeps, edit_cycle, edit_parts);
 criterion_main!(benches);

@@ -368,3 +368,23 @@ fn every_tab_draws_at_every_size_without_nan() {
         }
     }
 }
+
+#[test]
+fn no_color_holds_in_every_tab() {
+    for tab in [Tab::WorkPrecision, Tab::Stability, Tab::Sweep] {
+        let mut app = app_with(MarkerStyle::Braille, Theme { color: false });
+        update(&mut app, Action::Resize(160, 48));
+        update(&mut app, Action::Tab(tab));
+        settle(&mut app);
+        let terminal = render(&app, 160, 48);
+        assert!(
+            terminal
+                .backend()
+                .buffer()
+                .content
+                .iter()
+                .all(|c| c.fg == Color::Reset && c.bg == Color::Reset),
+            "{tab:?}: NO_COLOR, no cell has a colour"
+        );
+    }
+}

@@ -1,8 +1,10 @@
 //! The terminal explorer (ratatui + crossterm) over the model layer.
 //!
 //! [`app`] holds the state and [`update`] its transitions, `update(&mut App, Action)`; [`keymap`] turns keys into actions;
-//! [`render`] draws one pane per pure function; [`worker`] solves off the UI thread; [`runtime`]
-//! ties them to the terminal. The UI holds no physics: every number comes from `crate::model`.
+//! [`render`] draws one pane per pure function; [`worker`] solves off the UI thread and
+//! [`study_worker`] computes the [`studies`] of the other [`tab`]s (work-precision, stability,
+//! sweep) on a thread of its own; [`runtime`] ties them to the terminal. The UI holds no physics:
+//! every number comes from `crate::model`.
 
 pub mod action;
 pub mod app;

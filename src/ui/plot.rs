@@ -160,6 +160,50 @@ pub struct Pieces {
     pub dots: Vec<(f64, f64)>,
 }
 
+/// Largest gap between the points of a rastered run, in plot dots: one dot, so neighbours land in
+/// the same or adjacent dots on either axis and the line has no hole, and no thicker than a line.
+const RASTER_SPACING: f64 = 1.0;
+
+impl Pieces {
+    /// Every point the pattern draws, as one scatter: the runs filled in at most one plot dot
+    /// apart, then the single dots. One dataset per curve, rather than one per dash, keeps a chart
+    /// to a few canvas layers (ratatui allocates a whole grid per dataset).
+    pub fn raster(&self, dots_per_x: f64, dots_per_y: f64) -> Vec<(f64, f64)> {
+        let mut points = Vec::new();
+        for run in &self.runs {
+            points.extend(densify(run, dots_per_x, dots_per_y));
+        }
+        points.extend_from_slice(&self.dots);
+        points
+    }
+}
+
+/// `run` with points inserted so that neighbours are at most [`RASTER_SPACING`] plot dots apart.
+fn densify(run: &[(f64, f64)], dots_per_x: f64, dots_per_y: f64) -> Vec<(f64, f64)> {
+    let scaled =
+        dots_per_x > 0.0 && dots_per_y > 0.0 && dots_per_x.is_finite() && dots_per_y.is_finite();
+    if !scaled {
+        return run.to_vec();
+    }
+    let mut out = Vec::with_capacity(run.len());
+    for pair in run.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        let length = ((b.0 - a.0) * dots_per_x).hypot((b.1 - a.1) * dots_per_y);
+        // A non-finite length (a point off to infinity) gets no fill: the ends only.
+        let steps = if length.is_finite() {
+            (length / RASTER_SPACING).ceil().clamp(1.0, 1e5) as usize
+        } else {
+            1
+        };
+        out.extend((0..steps).map(|k| {
+            let s = k as f64 / steps as f64;
+            (a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s)
+        }));
+    }
+    out.extend(run.last().copied());
+    out
+}
+
 /// Cuts `points` by `pattern`, measuring lengths in plot dots: `dots_per_x` and `dots_per_y` are
 /// the dots per display unit of each axis.
 pub fn dash(
@@ -321,6 +365,28 @@ mod tests {
         let dash_dot = dash(&line, LinePattern::DashDot, 1.0, 1.0);
         assert!(!dash_dot.runs.is_empty() && !dash_dot.dots.is_empty());
         assert_eq!(dash_dot.dots[0], (10.0, 0.0));
+    }
+
+    #[test]
+    fn rasters_leave_no_gap_of_a_dot_and_keep_the_single_dots() {
+        // A diagonal 10 dots across and 20 up, then a dot.
+        let pieces = Pieces {
+            runs: vec![vec![(0.0, 0.0), (10.0, 20.0)]],
+            dots: vec![(30.0, 0.0)],
+        };
+        let points = pieces.raster(1.0, 1.0);
+        assert_eq!(points.first(), Some(&(0.0, 0.0)));
+        assert_eq!(points[points.len() - 2], (10.0, 20.0));
+        assert_eq!(points.last(), Some(&(30.0, 0.0)));
+        for w in points[..points.len() - 1].windows(2) {
+            let gap = (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1);
+            assert!(gap <= RASTER_SPACING + 1e-12, "{gap}");
+        }
+        // The same line over 2 dots per unit needs twice the points.
+        let finer = pieces.raster(2.0, 2.0);
+        assert!(finer.len() > 2 * points.len() - 10);
+        // Without a scale, the points as they are.
+        assert_eq!(pieces.raster(0.0, 1.0).len(), 3);
     }
 
     #[test]

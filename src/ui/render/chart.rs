@@ -106,30 +106,22 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, kind: ChartKind, roomy: 
         .collect();
     let marker = app.marker.marker();
     let mut datasets = Vec::new();
-    for (model, cut, peak) in &pieces {
-        let style = theme.model_style(*model);
-        for run in &cut.runs {
-            datasets.push(
-                Dataset::default()
-                    .marker(marker)
-                    .graph_type(GraphType::Line)
-                    .style(style)
-                    .data(run),
-            );
-        }
+    // One scatter per model: its dashes rastered, its dots and its exact peak.
+    let rasters: Vec<(ForceModel, Vec<(f64, f64)>)> = pieces
+        .iter()
+        .map(|(model, cut, peak)| {
+            let mut points = cut.raster(dots_per_x, dots_per_y);
+            points.push(*peak);
+            (*model, points)
+        })
+        .collect();
+    for (model, points) in &rasters {
         datasets.push(
             Dataset::default()
                 .marker(marker)
                 .graph_type(GraphType::Scatter)
-                .style(style)
-                .data(&cut.dots),
-        );
-        datasets.push(
-            Dataset::default()
-                .marker(marker)
-                .graph_type(GraphType::Scatter)
-                .style(style)
-                .data(std::slice::from_ref(peak)),
+                .style(theme.model_style(*model))
+                .data(points),
         );
     }
     let block = if roomy {

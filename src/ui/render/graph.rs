@@ -113,29 +113,24 @@ pub fn render(
             pattern: r.pattern,
         })
         .collect();
-    let pieces: Vec<_> = rule_lines
+    // One scatter per trace, its dashes rastered: a few canvas layers, not one per dash.
+    let rasters: Vec<_> = rule_lines
         .iter()
         .chain(&graph.traces)
-        .map(|t| (t.style, dash(&t.points, t.pattern, dots_per_x, dots_per_y)))
+        .map(|t| {
+            let cut = dash(&t.points, t.pattern, dots_per_x, dots_per_y);
+            (t.style, cut.raster(dots_per_x, dots_per_y))
+        })
         .collect();
     let chart_marker = marker.marker();
     let mut datasets = Vec::new();
-    for (style, cut) in &pieces {
-        for run in &cut.runs {
-            datasets.push(
-                Dataset::default()
-                    .marker(chart_marker)
-                    .graph_type(GraphType::Line)
-                    .style(*style)
-                    .data(run),
-            );
-        }
+    for (style, points) in &rasters {
         datasets.push(
             Dataset::default()
                 .marker(chart_marker)
                 .graph_type(GraphType::Scatter)
                 .style(*style)
-                .data(&cut.dots),
+                .data(points),
         );
     }
     for mark in &graph.marks {
