@@ -3,7 +3,7 @@
 use std::f64::consts::PI;
 use std::fmt;
 
-use super::error::{ModelError, require_positive};
+use super::error::{ModelError, require, require_positive};
 use super::material::Material;
 
 /// The geometry of a body near the contact.
@@ -77,10 +77,24 @@ impl Body {
             }
             Shape::Plane => {}
         }
-        if let Some(mass) = self.mass {
-            require_positive("mass", mass)?;
+        // The material first: a derived mass is only meaningful with a valid density.
+        self.material.validate().map_err(|e| e.within("material"))?;
+        match (self.mass, self.shape) {
+            (Some(mass), _) => {
+                require_positive("mass", mass)?;
+            }
+            (None, Shape::Plane) => {}
+            // density × volume can overflow or underflow even when each factor is valid.
+            (None, _) => {
+                require(
+                    "mass",
+                    self.mass(),
+                    "finite and > 0 when derived from density × volume (give `mass`)",
+                    |m| m > 0.0,
+                )?;
+            }
         }
-        self.material.validate().map_err(|e| e.within("material"))
+        Ok(())
     }
 
     /// Mass in kg: the given one, else density × volume (∞ for a plane).
@@ -123,6 +137,18 @@ mod tests {
         };
         assert!(plane.mass().is_infinite());
         assert!(plane.shape.radius().is_infinite());
+    }
+
+    #[test]
+    fn a_derived_mass_that_overflows_names_the_mass() {
+        let msg = sphere(1e300, steel()).validate().unwrap_err().to_string();
+        assert!(
+            msg.starts_with("mass must be finite and > 0 when derived from density × volume"),
+            "{msg}"
+        );
+        let mut given = sphere(1e300, steel());
+        given.mass = Some(1.0);
+        assert!(given.validate().is_ok());
     }
 
     #[test]

@@ -64,6 +64,16 @@ impl ImpactParams {
                 ),
             });
         }
+        let damping = self.law.k * self.plastic_indentation / (self.v0 * self.restitution);
+        if !damping.is_finite() {
+            return Err(ModelError::OutOfDomain {
+                formula: "proposed damping b = k·x_pl/(v₀·e) (eq 18)",
+                detail: format!(
+                    "impact.plastic_indentation = {:e} m gives b = {damping:e}; use a plastic indentation of the order of x_max = {x_max:e} m",
+                    self.plastic_indentation
+                ),
+            });
+        }
         Ok(())
     }
 }

@@ -217,3 +217,16 @@ fn invalid_parameters_are_refused_with_the_field_named() {
     }
     assert!(ForceModel::Proposed.law(&fig5()).is_ok());
 }
+
+#[test]
+fn an_infinite_proposed_damping_is_refused_naming_the_plastic_indentation() {
+    let mut p = fig5();
+    p.plastic_indentation = 1e300;
+    let msg = p.validate().unwrap_err().to_string();
+    assert!(
+        msg.starts_with(
+            "proposed damping b = k·x_pl/(v₀·e) (eq 18): impact.plastic_indentation = 1e300 m"
+        ),
+        "{msg}"
+    );
+}
