@@ -139,30 +139,19 @@ fn short(e: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::body::{Body, Shape};
-    use crate::model::material::tests::steel;
     use crate::model::scene::ImpactConditions;
+    use crate::model::scene::tests::fig5_scene;
 
     /// The Fig. 5 scene (steel sphere R = 10 mm on a steel plate) with the given impact conditions.
     /// Table 1: v_y = 0.032 m/s, v_p = 0.326 m/s; wave limit 10⁻⁵·√(E/ρ) ≈ 0.0506 m/s.
     fn steel_scene(v0: f64, restitution: f64, plastic_indentation: f64) -> Scene {
         Scene {
-            name: "steel".into(),
-            body1: Body {
-                shape: Shape::Sphere { radius: 0.01 },
-                material: steel(),
-                mass: None,
-            },
-            body2: Body {
-                shape: Shape::Plane,
-                material: steel(),
-                mass: None,
-            },
             impact: ImpactConditions {
                 v0,
                 restitution,
                 plastic_indentation,
             },
+            ..fig5_scene()
         }
     }
 

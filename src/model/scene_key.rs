@@ -196,29 +196,7 @@ pub enum SceneKeyError {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::material::tests::steel;
-    use crate::model::scene::ImpactConditions;
-
-    fn scene() -> Scene {
-        Scene {
-            name: "test".into(),
-            body1: Body {
-                shape: Shape::Sphere { radius: 0.01 },
-                material: steel(),
-                mass: None,
-            },
-            body2: Body {
-                shape: Shape::Plane,
-                material: steel(),
-                mass: None,
-            },
-            impact: ImpactConditions {
-                v0: 0.3,
-                restitution: 0.6,
-                plastic_indentation: 2.3e-6,
-            },
-        }
-    }
+    use crate::model::scene::tests::fig5_scene;
 
     #[test]
     fn every_key_round_trips_through_its_path() {
@@ -233,7 +211,7 @@ mod tests {
 
     #[test]
     fn set_then_get_and_shape_checks() {
-        let mut s = scene();
+        let mut s = fig5_scene();
         let radius: SceneKey = "body1.radius".parse().unwrap();
         radius.set(&mut s, 0.02).unwrap();
         assert_eq!(radius.get(&s), Some(0.02));

@@ -102,11 +102,23 @@ proptest! {
             Ok(fit) => {
                 prop_assert!(rel(fit.f_min, FIT_RANGE_LOWER_FRACTION * fit.f_max) < 1e-15);
                 prop_assert!(fit.a > 0.0 && fit.n >= 1.0 && fit.c.is_finite(), "{fit:?}");
-                let q = quasistatic::evaluate(&pair, v0).unwrap();
-                // The range ends at F_max, or below it at the yield onset.
-                prop_assert!(fit.f_max <= q.f_max * (1.0 + 1e-5), "{fit:?} vs {}", q.f_max);
-                for value in [q.x_max, q.f_max, q.t_contact, q.p_max, q.onset.v_yield] {
-                    prop_assert!(value.is_finite() && value > 0.0, "{q:?}");
+                match quasistatic::evaluate(&pair, v0) {
+                    Ok(q) => {
+                        // The range ends at F_max, or below it at the yield onset.
+                        prop_assert!(fit.f_max <= q.f_max * (1.0 + 1e-5), "{fit:?} vs {}", q.f_max);
+                        for value in [q.x_max, q.f_max, q.t_contact, q.p_max, q.onset.v_yield] {
+                            prop_assert!(value.is_finite() && value > 0.0, "{q:?}");
+                        }
+                    }
+                    // The quasistatic estimate refuses a fit outside the paper's 1 ≤ n ≤ 1.5 (short
+                    // cylinders, where the logarithms of eq 13/14 are small) and an F_max past the
+                    // formulas' force limit; nothing else.
+                    Err(err) => prop_assert!(
+                        matches!(err, ModelError::OutOfDomain { .. })
+                            && (!(1.0..=1.5).contains(&fit.n)
+                                || err.to_string().contains("up to which eq 13/14 holds")),
+                        "{err} with {fit:?}"
+                    ),
                 }
             }
             // Only an impact that leaves the domain of eq 13/14 before yielding is refused.

@@ -7,6 +7,7 @@ use super::super::pressure::YIELD_FACTOR;
 use super::PowerFit;
 use super::approach::LineContact;
 use super::fit::fit_line_contact;
+use crate::model::numeric::roots::brent;
 
 /// Lower end of the scene's fit range as a fraction of its upper end.
 ///
@@ -67,9 +68,22 @@ pub fn scene_fit(pair: &ContactPair, v0: f64) -> Result<PowerFit, ModelError> {
         }
         top = next_top;
     }
-    Err(ModelError::FitFailed(format!(
-        "the fit range did not settle in {MAX_REFITS} refits at v0 = {v0} m/s"
-    )))
+    // The refit map oscillated (its slope passes −1 for some extreme geometries): solve
+    // ln F_top(fit over [F/10, F]) = ln F by bracketed root finding on (0, ceiling] instead.
+    let mismatch = |f: f64| match fit_line_contact(&contact, FIT_RANGE_LOWER_FRACTION * f, f) {
+        Ok(fit) => {
+            let law = PowerLaw { k: fit.a, n: fit.n };
+            (law.max_force(mass, v0).min(yield_force) / f).ln()
+        }
+        Err(_) => f64::NAN,
+    };
+    let settled = brent(mismatch, ceiling * 1e-6, ceiling)
+        .and_then(|top| fit_line_contact(&contact, FIT_RANGE_LOWER_FRACTION * top, top).ok());
+    settled.ok_or_else(|| {
+        ModelError::FitFailed(format!(
+            "the fit range did not settle at v0 = {v0} m/s: no force F with F_max(fit over [F/10, F]) = F below {ceiling:e} N"
+        ))
+    })
 }
 
 /// F_max of an impact at v₀ under the power law through the two ends of its own range

@@ -207,27 +207,7 @@ mod tests {
 
     #[test]
     fn a_stopped_sweep_gives_nothing_and_an_unstopped_one_every_row() {
-        use crate::model::body::{Body, Shape};
-        use crate::model::material::tests::steel;
-        use crate::model::scene::ImpactConditions;
-        let scene = Scene {
-            name: "steel".into(),
-            body1: Body {
-                shape: Shape::Sphere { radius: 0.01 },
-                material: steel(),
-                mass: None,
-            },
-            body2: Body {
-                shape: Shape::Plane,
-                material: steel(),
-                mass: None,
-            },
-            impact: ImpactConditions {
-                v0: 0.3,
-                restitution: 0.6,
-                plastic_indentation: 2.3e-6,
-            },
-        };
+        let scene = crate::model::scene::tests::fig5_scene();
         let mut spec = spec(0.01, 1.0, 4, true);
         spec.models = vec![ForceModel::Quasistatic];
         assert_eq!(sweep_until(&scene, &spec, &|| true), Ok(None));
