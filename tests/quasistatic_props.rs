@@ -208,11 +208,15 @@ proptest! {
         let line = text.lines().find(|l| l.starts_with(&format!("{key} ="))).unwrap();
         let text = text.replacen(line, &format!("{key} = {value}"), 1);
         let registry = Registry::builtin().unwrap();
-        if let Ok(scene) = parse_scene("p.toml", &text, registry.material_catalog()) {
-            // Whatever parsed also validated: the quasistatic model must give finite numbers.
-            if let Ok(q) = scene.quasistatic() {
-                assert_finite_positive(&q);
-            }
+        match parse_scene("p.toml", &text, registry.material_catalog()) {
+            // Whatever parsed also validated: the quasistatic model gives finite numbers, or
+            // refuses an overflow by its domain.
+            Ok(scene) => match scene.quasistatic() {
+                Ok(q) => assert_finite_positive(&q),
+                Err(e) => prop_assert!(matches!(e, ModelError::OutOfDomain { .. }), "{e}"),
+            },
+            // A refusal is located in the file.
+            Err(e) => prop_assert!(e.to_string().starts_with("p.toml"), "{e}"),
         }
     }
 
@@ -230,7 +234,9 @@ proptest! {
     /// Random text is refused with a located error or parsed, never a panic.
     #[test]
     fn arbitrary_text_never_panics(text in "\\PC{0,200}") {
-        let _ = parse_scene("p.toml", &text, &BTreeMap::new());
+        if let Err(e) = parse_scene("p.toml", &text, &BTreeMap::new()) {
+            prop_assert!(e.to_string().starts_with("p.toml"), "{e}");
+        }
     }
 }
 
