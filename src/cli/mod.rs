@@ -2,7 +2,6 @@
 
 pub mod args;
 pub mod bench;
-mod csv;
 pub mod error;
 mod layout;
 mod list;
@@ -16,6 +15,7 @@ use std::io::Write;
 pub use args::{BenchArgs, Cli, Command, Format, SceneSelection, SolveArgs, SweepArgs};
 pub use error::CliError;
 
+use crate::format::csv::trajectory_csv;
 use crate::model::presets::Registry;
 
 /// Loads the presets and reports problems with user presets as warnings on stderr.
@@ -43,7 +43,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             }
             Format::Csv => {
                 let solution = solve::trajectory(args, &registry)?;
-                csv::render(&solution, args.points as usize).map_err(CliError::Usage)?
+                trajectory_csv(&solution, args.points as usize).map_err(CliError::Usage)?
             }
         },
         Command::Bench(args) => bench::run(args, &registry)?,

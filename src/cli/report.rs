@@ -3,7 +3,8 @@
 use super::layout::columns;
 use super::solve::{ImpactRow, SolveReport};
 use super::units::{
-    NOT_A_NUMBER, compact, compact_number, count, engineering, scientific, significant,
+    NOT_A_NUMBER, compact, compact_number, count, engineering, exact_number, scientific,
+    significant,
 };
 use crate::model::body::{Body, Shape};
 use crate::model::quasistatic::ContactGeometry;
@@ -48,7 +49,7 @@ fn body_line(body: &Body) -> String {
         "{geometry}{mass}; {} (E = {}, ν = {}, σy = {}, ρ = {} kg/m³)",
         m.name,
         compact(m.youngs_modulus, "Pa"),
-        compact_number(m.poisson_ratio, 4),
+        exact_number(m.poisson_ratio),
         compact(m.yield_stress, "Pa"),
         compact_number(m.density, 6)
     )
@@ -64,7 +65,7 @@ fn scene_section(scene: &Scene) -> String {
             format!(
                 "v0 = {}, e = {}, x_pl = {}",
                 compact(i.v0, "m/s"),
-                compact_number(i.restitution, 4),
+                exact_number(i.restitution),
                 compact(i.plastic_indentation, "m")
             ),
         ],

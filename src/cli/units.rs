@@ -1,102 +1,47 @@
-//! Human-readable numbers: engineering notation with SI prefixes (µm, kN, µs, mm/s).
+//! The command line's conventions over [`crate::format`], the one number formatter: 4 significant
+//! digits with trailing zeros in results (`1.710 kN`), without them in inputs (`10 mm`).
 
-/// Shown instead of a number that is not finite: a NaN is never printed as a result.
-pub const NOT_A_NUMBER: &str = "—";
+use crate::format::{self, Zeros};
 
-const PREFIXES: [(i32, &str); 10] = [
-    (-15, "f"),
-    (-12, "p"),
-    (-9, "n"),
-    (-6, "µ"),
-    (-3, "m"),
-    (0, ""),
-    (3, "k"),
-    (6, "M"),
-    (9, "G"),
-    (12, "T"),
-];
+pub use crate::format::NOT_A_NUMBER;
+
+/// Significant digits of a result.
+const DIGITS: usize = 4;
 
 /// `value` in engineering notation with 4 significant digits and an SI prefix on `unit`:
-/// 2.388e-5 m → "23.88 µm", 1710 N → "1.710 kN".
+/// 2.388e-5 m → "23.88 µm", 1710 N → "1.710 kN"; scientific beyond f … T (1.000e-300 m).
 pub fn engineering(value: f64, unit: &str) -> String {
-    if !value.is_finite() {
-        return NOT_A_NUMBER.into();
-    }
-    if value == 0.0 {
-        return format!("0 {unit}");
-    }
-    let mut exponent = (value.abs().log10() / 3.0).floor() as i32 * 3;
-    exponent = exponent.clamp(-15, 12);
-    let mut mantissa = value / 10f64.powi(exponent);
-    // Rounding to 4 digits can carry into the next prefix (999.96 → 1000 → 1.000 k).
-    if round_significant(mantissa.abs(), 4) >= 1000.0 && exponent < 12 {
-        exponent += 3;
-        mantissa = value / 10f64.powi(exponent);
-    }
-    let prefix = PREFIXES
-        .iter()
-        .find(|(e, _)| *e == exponent)
-        .map_or("", |(_, p)| *p);
-    format!("{} {prefix}{unit}", significant(mantissa, 4))
+    format::engineering(value, unit, DIGITS, Zeros::Keep)
 }
 
 /// [`engineering`] without trailing zeros, for inputs as the user wrote them: "10 mm", "2.3 µm".
 pub fn compact(value: f64, unit: &str) -> String {
-    let text = engineering(value, unit);
-    match text.split_once(' ') {
-        Some((number, rest)) if number.contains('.') => {
-            format!(
-                "{} {rest}",
-                number.trim_end_matches('0').trim_end_matches('.')
-            )
-        }
-        _ => text,
-    }
+    format::engineering(value, unit, DIGITS, Zeros::Trim)
 }
 
 /// `value` with at most `digits` significant digits and no trailing zeros: 0.3, 0.6, 1.09.
-pub fn compact_number(value: f64, digits: i32) -> String {
-    let text = significant(value, digits);
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    }
+pub fn compact_number(value: f64, digits: usize) -> String {
+    format::significant(value, digits, Zeros::Trim)
+}
+
+/// An input that must read back as itself, e.g. ν = 0.4999999999 (valid) is not 0.5 (refused).
+pub fn exact_number(value: f64) -> String {
+    format::round_trip(value)
 }
 
 /// `value` in scientific notation with 4 significant digits: 1.465e10.
 pub fn scientific(value: f64, unit: &str) -> String {
-    if !value.is_finite() {
-        return NOT_A_NUMBER.into();
-    }
-    let text = if value == 0.0 {
-        "0".to_string()
-    } else {
-        format!("{value:.3e}")
-    };
-    if unit.is_empty() {
+    let text = format::scientific(value, DIGITS, Zeros::Keep);
+    if unit.is_empty() || !value.is_finite() {
         text
     } else {
         format!("{text} {unit}")
     }
 }
 
-/// `value` with `digits` significant digits in plain notation: 0.6123, 32.67.
-pub fn significant(value: f64, digits: i32) -> String {
-    if !value.is_finite() {
-        return NOT_A_NUMBER.into();
-    }
-    if value == 0.0 {
-        return "0".into();
-    }
-    let magnitude = round_significant(value.abs(), digits).log10().floor() as i32;
-    let decimals = (digits - 1 - magnitude).max(0) as usize;
-    format!("{value:.decimals$}")
-}
-
-fn round_significant(x: f64, digits: i32) -> f64 {
-    let scale = 10f64.powi(digits - 1 - x.log10().floor() as i32);
-    (x * scale).round() / scale
+/// `value` with `digits` significant digits: 0.6123, 32.67; scientific outside [1e-4, 1e7).
+pub fn significant(value: f64, digits: usize) -> String {
+    format::significant(value, digits, Zeros::Keep)
 }
 
 /// A count, or the placeholder.
@@ -123,6 +68,16 @@ mod tests {
     }
 
     #[test]
+    fn values_beyond_the_prefixes_are_scientific() {
+        assert_eq!(engineering(1e-300, "g"), "1.000e-300 g");
+        assert_eq!(engineering(1e300, "m"), "1.000e300 m");
+        assert_eq!(compact(1e300, "m"), "1e300 m");
+        assert_eq!(compact_number(1e-9, 4), "1e-9");
+        assert_eq!(significant(1.121e-14, 4), "1.121e-14");
+        assert_eq!(engineering(f64::INFINITY, "m/s"), "∞");
+    }
+
+    #[test]
     fn compact_drops_trailing_zeros() {
         assert_eq!(compact(0.01, "m"), "10 mm");
         assert_eq!(compact(2.3e-6, "m"), "2.3 µm");
@@ -132,6 +87,8 @@ mod tests {
         assert_eq!(compact_number(1.5, 4), "1.5");
         assert_eq!(compact_number(7800.0, 4), "7800");
         assert_eq!(compact_number(1.0, 4), "1");
+        assert_eq!(exact_number(0.3), "0.3");
+        assert_eq!(exact_number(0.4999999999), "0.4999999999");
     }
 
     #[test]
@@ -139,9 +96,10 @@ mod tests {
         assert_eq!(scientific(1.465e10, "N/m^1.5"), "1.465e10 N/m^1.5");
         assert_eq!(scientific(9.1e-12, ""), "9.100e-12");
         assert_eq!(scientific(0.0, ""), "0");
+        assert_eq!(scientific(f64::NAN, "m²/N"), NOT_A_NUMBER);
         assert_eq!(significant(0.61234, 4), "0.6123");
         assert_eq!(significant(1.5, 4), "1.500");
         assert_eq!(significant(99.999, 4), "100.0");
-        assert_eq!(significant(f64::INFINITY, 4), NOT_A_NUMBER);
+        assert_eq!(significant(f64::INFINITY, 4), "∞");
     }
 }

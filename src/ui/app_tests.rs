@@ -378,7 +378,11 @@ fn export_writes_the_focused_trajectory_as_csv() {
     let text = std::fs::read_to_string(&path).unwrap();
     std::fs::remove_file(&path).unwrap();
     let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("t_s,x_m,v_m_per_s,force_N"));
+    assert_eq!(
+        lines.next(),
+        Some("t,x,v,F"),
+        "the header `solve --format csv` prints"
+    );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
         .collect();

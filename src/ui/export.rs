@@ -1,24 +1,15 @@
-//! Export of a model's trajectory as CSV (SI units, full precision).
+//! Export of a model's trajectory as CSV: [`crate::format::csv`], the rows `solve --format csv`
+//! prints (header `t,x,v,F`, SI units, full precision, no non-finite sample).
 
-use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
+use crate::format::csv::trajectory_csv;
 use crate::model::ForceModel;
-use crate::model::impact::Sample;
+use crate::model::impact::ImpactSolution;
 
 /// Samples written per export (the true extrema are inserted by the trajectory).
 pub const EXPORT_SAMPLES: usize = 1000;
-
-/// The CSV text of `samples`: a header, then one row per sample in SI units.
-pub fn csv(samples: &[Sample]) -> String {
-    let mut out = String::from("t_s,x_m,v_m_per_s,force_N\n");
-    for s in samples {
-        // Writing to a String cannot fail.
-        let _ = writeln!(out, "{:e},{:e},{:e},{:e}", s.t, s.x, s.v, s.f);
-    }
-    out
-}
 
 /// The default file name for a model's export: `<scene>-<model>.csv`.
 pub fn default_path(scene_name: &str, model: ForceModel) -> PathBuf {
@@ -37,41 +28,47 @@ pub fn default_path(scene_name: &str, model: ForceModel) -> PathBuf {
     PathBuf::from(format!("{stem}-{}.csv", model.name()))
 }
 
-/// Writes `samples` to `path`; the message names the file.
-pub fn write(path: &Path, samples: &[Sample]) -> Result<(), String> {
-    fs::write(path, csv(samples)).map_err(|e| format!("cannot write {}: {e}", path.display()))
+/// Writes the trajectory of `solution` to `path` and returns the number of rows; the message
+/// names the file, or the sample that is not finite.
+pub fn write(path: &Path, solution: &ImpactSolution) -> Result<usize, String> {
+    let text = trajectory_csv(solution, EXPORT_SAMPLES)?;
+    fs::write(path, &text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(text.lines().count().saturating_sub(1))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::ImpactParams;
+    use crate::model::impact::{SolveOptions, solve_impact};
+    use crate::model::power_law::PowerLaw;
+
+    fn solution() -> ImpactSolution {
+        let params = ImpactParams {
+            mass: 0.0327,
+            law: PowerLaw {
+                k: 1.465e10,
+                n: 1.5,
+            },
+            v0: 0.3,
+            restitution: 0.6,
+            plastic_indentation: 2.3e-6,
+        };
+        solve_impact(ForceModel::HuntCrossley, &params, &SolveOptions::default()).unwrap()
+    }
 
     #[test]
-    fn rows_round_trip_in_si() {
-        let samples = [
-            Sample {
-                t: 0.0,
-                x: 0.0,
-                v: 0.3,
-                f: 0.0,
-            },
-            Sample {
-                t: 4.5e-5,
-                x: 9.112e-6,
-                v: 0.0,
-                f: 403.25,
-            },
-        ];
-        let text = csv(&samples);
-        let mut lines = text.lines();
-        assert_eq!(lines.next(), Some("t_s,x_m,v_m_per_s,force_N"));
-        let row: Vec<f64> = lines
-            .nth(1)
-            .unwrap()
-            .split(',')
-            .map(|v| v.parse().unwrap())
-            .collect();
-        assert_eq!(row, [4.5e-5, 9.112e-6, 0.0, 403.25]);
+    fn writes_the_rows_solve_prints() {
+        let solution = solution();
+        let path =
+            std::env::temp_dir().join(format!("hertz-tui-export-{}.csv", std::process::id()));
+        let rows = write(&path, &solution).unwrap();
+        let text = fs::read_to_string(&path).unwrap();
+        fs::remove_file(&path).unwrap();
+        assert_eq!(text, trajectory_csv(&solution, EXPORT_SAMPLES).unwrap());
+        assert!(text.starts_with("t,x,v,F\n"));
+        assert_eq!(rows, text.lines().count() - 1);
+        assert!(rows >= EXPORT_SAMPLES);
     }
 
     #[test]
@@ -92,7 +89,7 @@ mod tests {
 
     #[test]
     fn write_reports_the_path_on_failure() {
-        let err = write(Path::new("/nonexistent-dir/x.csv"), &[]).unwrap_err();
+        let err = write(Path::new("/nonexistent-dir/x.csv"), &solution()).unwrap_err();
         assert!(
             err.starts_with("cannot write /nonexistent-dir/x.csv"),
             "{err}"

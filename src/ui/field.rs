@@ -258,6 +258,14 @@ impl Field {
     }
 
     fn format(self, value_si: f64) -> String {
+        if matches!(
+            self,
+            Field::Number(SceneKey::Restitution | SceneKey::Body(_, BodyField::PoissonRatio))
+        ) {
+            // Every digit, so that an edit starts from the value itself: ν = 0.4999999999 is
+            // valid, the 0.5 six digits would show is not.
+            return crate::format::round_trip(value_si);
+        }
         match self.display_prefix() {
             Some(prefix) => units::with_prefix(value_si, self.unit(), prefix, 6),
             None => units::engineering(value_si, self.unit(), 6),
@@ -491,6 +499,25 @@ mod tests {
         assert_eq!(MASS1.edit_text(&d), "auto");
         assert_eq!(Field::Rtol.display(&d), "1e-8");
         assert_eq!(Field::Method.display(&d), "auto");
+    }
+
+    #[test]
+    fn poisson_ratio_and_restitution_show_every_digit() {
+        let mut d = draft();
+        let nu1 = Field::Number(SceneKey::Body(BodyIndex::One, BodyField::PoissonRatio));
+        let e = Field::Number(SceneKey::Restitution);
+        assert_eq!(
+            (nu1.display(&d), e.display(&d)),
+            ("0.3".into(), "0.6".into())
+        );
+        // Six digits would show 0.5, which the model refuses, and an edit would start from it.
+        nu1.apply("0.4999999999", &mut d).unwrap();
+        e.apply("0.99999999", &mut d).unwrap();
+        assert_eq!(nu1.edit_text(&d), "0.4999999999");
+        assert_eq!(e.edit_text(&d), "0.99999999");
+        let before = d.clone();
+        nu1.apply(&nu1.edit_text(&d), &mut d).unwrap();
+        assert_eq!(d, before, "the text reads back as the value");
     }
 
     #[test]

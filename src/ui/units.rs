@@ -1,55 +1,16 @@
 //! Quantities at the UI edge: parsing what the user types (`200G`, `2e11`, `10 mm`, `0.3 m/s`)
-//! into SI values, and formatting SI values in engineering units (µm, µs, N, GPa …).
+//! into SI values, and formatting SI values in engineering units (µm, µs, N, GPa …) by
+//! [`crate::format`], the formatter the command line uses too.
 
-/// A decimal SI prefix.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Prefix {
-    pub symbol: &'static str,
-    pub factor: f64,
-}
+use crate::format::{self, Zeros};
 
-pub const PICO: Prefix = Prefix {
-    symbol: "p",
-    factor: 1e-12,
+pub use crate::format::{
+    ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, PICO, Prefix, TERA,
 };
-pub const NANO: Prefix = Prefix {
-    symbol: "n",
-    factor: 1e-9,
-};
-pub const MICRO: Prefix = Prefix {
-    symbol: "µ",
-    factor: 1e-6,
-};
-pub const MILLI: Prefix = Prefix {
-    symbol: "m",
-    factor: 1e-3,
-};
-pub const NONE: Prefix = Prefix {
-    symbol: "",
-    factor: 1.0,
-};
-pub const KILO: Prefix = Prefix {
-    symbol: "k",
-    factor: 1e3,
-};
-pub const MEGA: Prefix = Prefix {
-    symbol: "M",
-    factor: 1e6,
-};
-pub const GIGA: Prefix = Prefix {
-    symbol: "G",
-    factor: 1e9,
-};
-pub const TERA: Prefix = Prefix {
-    symbol: "T",
-    factor: 1e12,
-};
-
-/// The engineering prefixes (powers of 1000), smallest first.
-pub const ENGINEERING: [Prefix; 9] = [PICO, NANO, MICRO, MILLI, NONE, KILO, MEGA, GIGA, TERA];
 
 /// Prefix letters accepted on input, with the ASCII `u` and the Greek `μ` for micro.
-const INPUT_PREFIXES: [(&str, f64); 10] = [
+const INPUT_PREFIXES: [(&str, f64); 11] = [
+    ("f", 1e-15),
     ("p", 1e-12),
     ("n", 1e-9),
     ("µ", 1e-6),
@@ -195,7 +156,7 @@ fn suffix_factor(suffix: &str, unit: Unit) -> Result<f64, String> {
         format!("{} or a bare number in SI", unit.symbol)
     };
     Err(format!(
-        "unknown unit '{suffix}' (expected {expected}, with an optional prefix p n µ m k M G T)"
+        "unknown unit '{suffix}' (expected {expected}, with an optional prefix f p n µ m k M G T)"
     ))
 }
 
@@ -207,39 +168,9 @@ fn input_prefix(head: &str) -> Option<f64> {
 }
 
 /// `value` rounded to `sig` significant digits, without trailing zeros; scientific notation
-/// outside 1e-4 ≤ |value| < 1e7. Non-finite values print as `—` (never NaN on screen).
+/// outside 1e-4 ≤ |value| < 1e7. Non-finite values print as `—` or `∞` (never NaN on screen).
 pub fn sig(value: f64, sig: usize) -> String {
-    if !value.is_finite() {
-        return if value.is_infinite() {
-            if value > 0.0 { "∞" } else { "−∞" }.into()
-        } else {
-            "—".into()
-        };
-    }
-    if value == 0.0 {
-        return "0".into();
-    }
-    let sig = sig.max(1);
-    let magnitude = value.abs().log10().floor() as i32;
-    if !(-4..7).contains(&magnitude) {
-        let text = format!("{:.*e}", sig - 1, value);
-        return match text.split_once('e') {
-            Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa)),
-            None => text,
-        };
-    }
-    let decimals = (sig as i32 - 1 - magnitude).max(0) as usize;
-    let text = format!("{value:.decimals$}");
-    // Rounding may carry into a new digit (9.9996 → 10.000); trimming zeros handles both.
-    trim_zeros(&text).to_string()
-}
-
-fn trim_zeros(text: &str) -> &str {
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.')
-    } else {
-        text
-    }
+    format::significant(value, sig, Zeros::Trim)
 }
 
 /// `value_si` shown in `unit` with a fixed `prefix`, e.g. `10 mm`.
@@ -259,27 +190,20 @@ pub fn engineering_prefix(magnitude_si: f64, unit: Unit) -> Prefix {
         .rev()
         .find(|p| in_unit >= p.factor * (1.0 - 1e-12))
         .copied()
-        .unwrap_or(PICO)
+        .unwrap_or(FEMTO)
 }
 
-/// `value_si` in `unit` with the engineering prefix that suits it, e.g. `32.67 g`, `4.345 GPa`.
+/// `value_si` in `unit` with the engineering prefix that suits it, e.g. `32.67 g`, `4.345 GPa`;
+/// scientific beyond f … T (`1e-300 m`), and no prefix on units that take none (m/s, kg/m³).
 pub fn engineering(value_si: f64, unit: Unit, digits: usize) -> String {
-    if !value_si.is_finite() {
-        return sig(value_si, digits);
+    let value = value_si / unit.si_per_unit;
+    if !value.is_finite() {
+        sig(value, digits)
+    } else if unit.prefixable {
+        format::engineering(value, unit.symbol, digits, Zeros::Trim)
+    } else {
+        join(&sig(value, digits), "", unit.symbol)
     }
-    let prefix = engineering_prefix(value_si, unit);
-    // Rounding can push the mantissa to 1000 (999.96 → "1000"): move up one prefix then.
-    let mantissa = value_si / (prefix.factor * unit.si_per_unit);
-    let rounded: f64 = sig(mantissa, digits).parse().unwrap_or(mantissa);
-    if rounded.abs() >= 1000.0 && unit.prefixable {
-        let bigger = ENGINEERING
-            .iter()
-            .find(|p| p.factor > prefix.factor)
-            .copied()
-            .unwrap_or(prefix);
-        return with_prefix(value_si, unit, bigger, digits);
-    }
-    with_prefix(value_si, unit, prefix, digits)
 }
 
 fn join(number: &str, prefix: &str, symbol: &str) -> String {
@@ -326,6 +250,7 @@ mod tests {
         ));
         assert!(close(parse("7.8k", KG_PER_CUBIC_METRE).unwrap(), 7800.0));
         assert!(close(parse("60%", DIMENSIONLESS).unwrap(), 0.6));
+        assert!(close(parse("1.5 fm", METRE).unwrap(), 1.5e-15));
         assert!(close(parse(" -1.5E-3 ", DIMENSIONLESS).unwrap(), -1.5e-3));
     }
 
@@ -374,8 +299,25 @@ mod tests {
         assert_eq!(engineering(0.3, METRE_PER_SECOND, 4), "0.3 m/s");
         assert_eq!(engineering(7800.0, KG_PER_CUBIC_METRE, 4), "7800 kg/m³");
         assert_eq!(engineering(0.6, DIMENSIONLESS, 4), "0.6");
+        assert_eq!(engineering(2.5e-15, METRE, 4), "2.5 fm");
+        assert_eq!(engineering_prefix(2.5e-15, METRE), FEMTO);
         assert_eq!(with_prefix(0.01, METRE, MILLI, 6), "10 mm");
         assert_eq!(with_prefix(2e11, PASCAL, GIGA, 6), "200 GPa");
+    }
+
+    #[test]
+    fn engineering_edges() {
+        assert_eq!(engineering(1e-300, METRE, 4), "1e-300 m");
+        assert_eq!(engineering(1e300, PASCAL, 4), "1e300 Pa");
+        assert_eq!(engineering(1e-300, GRAM, 4), "1e-297 g");
+        assert_eq!(engineering(-0.0326725, GRAM, 4), "-32.67 g");
+        assert_eq!(engineering(0.0, NEWTON, 4), "0 N");
+        assert_eq!(engineering(999.96e3, NEWTON, 4), "1 MN");
+        assert_eq!(engineering(999.96e12, NEWTON, 4), "1e15 N");
+        assert_eq!(engineering(1e-300, METRE_PER_SECOND, 4), "1e-300 m/s");
+        assert_eq!(engineering(f64::NAN, METRE, 4), "—");
+        assert_eq!(engineering(f64::NEG_INFINITY, METRE, 4), "−∞");
+        assert_eq!(sig(1e-300, 4), "1e-300");
     }
 
     #[test]
@@ -386,6 +328,10 @@ mod tests {
             (7.8e8, PASCAL),
             (0.21, METRE_PER_SECOND),
             (7800.0, KG_PER_CUBIC_METRE),
+            (1.5e-15, METRE),
+            (1e-300, METRE),
+            (1e300, PASCAL),
+            (-999.96, NEWTON),
         ] {
             let text = engineering(value, unit, 6);
             assert!(close(parse(&text, unit).unwrap(), value), "{text}");

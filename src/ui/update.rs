@@ -312,12 +312,10 @@ fn export_model(app: &App, model: ForceModel, text: &str) -> Result<String, Stri
         .solution(model)
         .ok_or_else(|| format!("no solution of {} to export", model.label()))?;
     let path = expand_home(text);
-    let samples = solution.trajectory.samples(export::EXPORT_SAMPLES);
-    export::write(&path, &samples)?;
+    let rows = export::write(&path, solution)?;
     Ok(format!(
-        "exported {} ({} rows) to {}",
+        "exported {} ({rows} rows) to {}",
         model.name(),
-        samples.len(),
         path.display()
     ))
 }

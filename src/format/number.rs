@@ -1,0 +1,280 @@
+//! Numbers as text: engineering notation with SI prefixes (µm, kN, µs), significant digits and
+//! scientific notation. Values beyond the prefixes (f … T) fall back to scientific notation; a NaN
+//! prints as [`NOT_A_NUMBER`] and an infinity as `∞`, never as a number.
+
+/// Shown instead of a NaN: a NaN is never printed as a result.
+pub const NOT_A_NUMBER: &str = "—";
+
+/// A decimal SI prefix.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prefix {
+    pub symbol: &'static str,
+    pub factor: f64,
+}
+
+pub const FEMTO: Prefix = Prefix {
+    symbol: "f",
+    factor: 1e-15,
+};
+pub const PICO: Prefix = Prefix {
+    symbol: "p",
+    factor: 1e-12,
+};
+pub const NANO: Prefix = Prefix {
+    symbol: "n",
+    factor: 1e-9,
+};
+pub const MICRO: Prefix = Prefix {
+    symbol: "µ",
+    factor: 1e-6,
+};
+pub const MILLI: Prefix = Prefix {
+    symbol: "m",
+    factor: 1e-3,
+};
+pub const NONE: Prefix = Prefix {
+    symbol: "",
+    factor: 1.0,
+};
+pub const KILO: Prefix = Prefix {
+    symbol: "k",
+    factor: 1e3,
+};
+pub const MEGA: Prefix = Prefix {
+    symbol: "M",
+    factor: 1e6,
+};
+pub const GIGA: Prefix = Prefix {
+    symbol: "G",
+    factor: 1e9,
+};
+pub const TERA: Prefix = Prefix {
+    symbol: "T",
+    factor: 1e12,
+};
+
+/// The engineering prefixes (powers of 1000), smallest first.
+pub const ENGINEERING: [Prefix; 10] = [
+    FEMTO, PICO, NANO, MICRO, MILLI, NONE, KILO, MEGA, GIGA, TERA,
+];
+
+/// The decimal exponent of [`FEMTO`], the first of [`ENGINEERING`].
+const SMALLEST_EXPONENT: i32 = -15;
+
+/// Plain notation for magnitudes in [1e-4, 1e7) after rounding, scientific outside.
+const PLAIN: std::ops::Range<f64> = 1e-4..1e7;
+
+/// Whether trailing zeros stay (`1.500 kN`, the fixed precision of a table column) or go
+/// (`1.5 kN`, a value as the user would type it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Zeros {
+    Keep,
+    Trim,
+}
+
+/// `value` in engineering notation: `digits` significant digits and the SI prefix on `unit` that
+/// brings the number into [1, 1000) once rounded (2.388e-5 m → `23.88 µm`, 999.96 N →
+/// `1.000 kN`). Beyond f … T it is scientific in the bare unit (`1.000e-300 m`). A number without
+/// a unit takes no prefix (a lone `m` would read as metres): it is [`significant`].
+pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> String {
+    if unit.is_empty() {
+        return significant(value, digits, zeros);
+    }
+    if !value.is_finite() {
+        return non_finite(value);
+    }
+    if value == 0.0 {
+        return join("0", "", unit);
+    }
+    let digits = digits.max(1);
+    // The exponent of the rounded value, so that a carry (999.96 → 1.000e3) moves the prefix.
+    let (mantissa, exponent) = rounded(value, digits);
+    let engineering = exponent.div_euclid(3) * 3;
+    let index = (engineering - SMALLEST_EXPONENT) / 3;
+    let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
+        Some(prefix) => prefix,
+        None => return join(&scientific(value, digits, zeros), "", unit),
+    };
+    let shift = exponent - engineering;
+    let decimals = (digits as i32 - 1 - shift).max(0) as usize;
+    let number = format!("{:.decimals$}", mantissa * 10f64.powi(shift));
+    join(trim(&number, zeros), prefix.symbol, unit)
+}
+
+/// `value` with `digits` significant digits: plain for 1e-4 ≤ |value| < 1e7 (0.6123, 32.67,
+/// 100.0), scientific outside (1.121e-14).
+pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
+    if !value.is_finite() {
+        return non_finite(value);
+    }
+    if value == 0.0 {
+        return "0".into();
+    }
+    let digits = digits.max(1);
+    let (mantissa, exponent) = rounded(value, digits);
+    if !PLAIN.contains(&(mantissa.abs() * 10f64.powi(exponent))) {
+        return scientific(value, digits, zeros);
+    }
+    let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+    trim(&format!("{value:.decimals$}"), zeros).to_string()
+}
+
+/// `value` in scientific notation with `digits` significant digits: 1.465e10, 9.100e-12.
+pub fn scientific(value: f64, digits: usize, zeros: Zeros) -> String {
+    if !value.is_finite() {
+        return non_finite(value);
+    }
+    if value == 0.0 {
+        return "0".into();
+    }
+    let text = format!("{:.*e}", digits.max(1) - 1, value);
+    match (zeros, text.split_once('e')) {
+        (Zeros::Trim, Some((mantissa, exponent))) => {
+            format!("{}e{exponent}", trim(mantissa, Zeros::Trim))
+        }
+        _ => text,
+    }
+}
+
+/// The shortest text that reads back as exactly `value`: for an input that must not look like
+/// another one (ν = 0.4999999999 is valid, 0.5 is not). Plain in [1e-4, 1e7), scientific outside.
+pub fn round_trip(value: f64) -> String {
+    if !value.is_finite() {
+        return non_finite(value);
+    }
+    if value == 0.0 {
+        "0".into()
+    } else if PLAIN.contains(&value.abs()) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
+/// `—` for a NaN, `∞` or `−∞` for an infinity.
+fn non_finite(value: f64) -> String {
+    if value.is_nan() {
+        NOT_A_NUMBER.into()
+    } else if value > 0.0 {
+        "∞".into()
+    } else {
+        "−∞".into()
+    }
+}
+
+/// `value` rounded to `digits` significant digits, as a mantissa in ±[1, 10) and its decimal
+/// exponent; by the formatter's exact decimal rounding, so tiny and huge values need no scale.
+fn rounded(value: f64, digits: usize) -> (f64, i32) {
+    let text = format!("{:.*e}", digits - 1, value);
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    (
+        mantissa.parse().unwrap_or(value),
+        exponent.parse().unwrap_or(0),
+    )
+}
+
+fn trim(number: &str, zeros: Zeros) -> &str {
+    if zeros == Zeros::Trim && number.contains('.') {
+        number.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        number
+    }
+}
+
+fn join(number: &str, prefix: &str, unit: &str) -> String {
+    if prefix.is_empty() && unit.is_empty() {
+        number.to_string()
+    } else {
+        format!("{number} {prefix}{unit}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Zeros::{Keep, Trim};
+    use super::*;
+
+    #[test]
+    fn engineering_prefixes() {
+        assert_eq!(engineering(2.388e-5, "m", 4, Keep), "23.88 µm");
+        assert_eq!(engineering(1710.0, "N", 4, Keep), "1.710 kN");
+        assert_eq!(engineering(0.032, "m/s", 4, Keep), "32.00 mm/s");
+        assert_eq!(engineering(3.419e9, "Pa", 4, Keep), "3.419 GPa");
+        assert_eq!(engineering(1.0, "m/s", 4, Keep), "1.000 m/s");
+        assert_eq!(engineering(2e11, "Pa", 4, Trim), "200 GPa");
+        assert_eq!(engineering(1.5e-15, "m", 4, Trim), "1.5 fm");
+        assert_eq!(engineering(999.9e12, "N", 4, Keep), "999.9 TN");
+        assert_eq!(engineering(0.6, "", 4, Trim), "0.6");
+        assert_eq!(engineering(2e-9, "", 4, Trim), "2e-9");
+    }
+
+    #[test]
+    fn engineering_edges() {
+        // Beyond f … T: scientific in the bare unit, never a 300-digit decimal.
+        assert_eq!(engineering(1e-300, "m", 4, Keep), "1.000e-300 m");
+        assert_eq!(engineering(1e300, "m", 4, Keep), "1.000e300 m");
+        assert_eq!(engineering(-1e300, "m", 4, Trim), "-1e300 m");
+        assert_eq!(engineering(9.99e-16, "s", 4, Keep), "9.990e-16 s");
+        assert_eq!(
+            engineering(f64::MIN_POSITIVE / 8.0, "m", 4, Keep),
+            "2.781e-309 m"
+        );
+        assert_eq!(engineering(f64::MAX, "N", 4, Trim), "1.798e308 N");
+        // Rounding that carries into the next prefix, or past the last one.
+        assert_eq!(engineering(999.96, "N", 4, Keep), "1.000 kN");
+        assert_eq!(engineering(-999.96, "N", 4, Keep), "-1.000 kN");
+        assert_eq!(engineering(999.96e-18, "m", 4, Keep), "1.000 fm");
+        assert_eq!(engineering(999.96e12, "N", 4, Keep), "1.000e15 N");
+        assert_eq!(engineering(0.99996e-3, "s", 4, Trim), "1 ms");
+        // Zero, negative, non-finite.
+        assert_eq!(engineering(0.0, "J", 4, Keep), "0 J");
+        assert_eq!(engineering(-0.0, "J", 4, Keep), "0 J");
+        assert_eq!(engineering(-0.21, "m/s", 4, Keep), "-210.0 mm/s");
+        assert_eq!(engineering(f64::NAN, "J", 4, Keep), NOT_A_NUMBER);
+        assert_eq!(engineering(f64::INFINITY, "J", 4, Keep), "∞");
+        assert_eq!(engineering(f64::NEG_INFINITY, "J", 4, Keep), "−∞");
+    }
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(significant(0.61234, 4, Keep), "0.6123");
+        assert_eq!(significant(1.5, 4, Keep), "1.500");
+        assert_eq!(significant(1.5, 4, Trim), "1.5");
+        assert_eq!(significant(99.999, 4, Keep), "100.0");
+        assert_eq!(significant(9.99996, 4, Trim), "10");
+        assert_eq!(significant(7800.0, 6, Trim), "7800");
+        assert_eq!(significant(-0.21347, 3, Trim), "-0.213");
+        assert_eq!(significant(1.465e10, 4, Trim), "1.465e10");
+        assert_eq!(significant(1.121e-14, 4, Keep), "1.121e-14");
+        assert_eq!(significant(1e-9, 4, Trim), "1e-9");
+        assert_eq!(significant(1e-300, 4, Keep), "1.000e-300");
+        assert_eq!(significant(1e300, 4, Trim), "1e300");
+        assert_eq!(significant(0.0, 4, Keep), "0");
+        assert_eq!(significant(f64::NAN, 4, Keep), NOT_A_NUMBER);
+        assert_eq!(significant(f64::INFINITY, 4, Keep), "∞");
+    }
+
+    #[test]
+    fn scientific_notation() {
+        assert_eq!(scientific(1.465e10, 4, Keep), "1.465e10");
+        assert_eq!(scientific(9.1e-12, 4, Keep), "9.100e-12");
+        assert_eq!(scientific(9.1e-12, 4, Trim), "9.1e-12");
+        assert_eq!(scientific(-2.5e-300, 2, Keep), "-2.5e-300");
+        assert_eq!(scientific(0.0, 4, Keep), "0");
+        assert_eq!(scientific(f64::NAN, 4, Keep), NOT_A_NUMBER);
+    }
+
+    #[test]
+    fn round_trip_tells_close_values_apart() {
+        assert_eq!(round_trip(0.3), "0.3");
+        assert_eq!(round_trip(0.4999999999), "0.4999999999");
+        assert_eq!(round_trip(0.49999999999999994), "0.49999999999999994");
+        assert_eq!(round_trip(1e-9), "1e-9");
+        assert_eq!(round_trip(1e300), "1e300");
+        assert_eq!(round_trip(0.0), "0");
+        assert_eq!(round_trip(f64::NAN), NOT_A_NUMBER);
+        for value in [0.4999999999, 1e-9, 1e300, 7800.0, -1.25e-5] {
+            assert_eq!(round_trip(value).parse::<f64>().unwrap(), value);
+        }
+    }
+}
