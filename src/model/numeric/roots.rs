@@ -110,6 +110,23 @@ pub fn brent(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> Option<f64> {
 pub fn brent_max(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
     const GOLDEN: f64 = 0.381_966_011_250_105_1;
     let (mut a, mut b) = (a.min(b), a.max(b));
+    // A peak at an end (a monotone f, the common case of force peaks next to a phase boundary)
+    // is where golden sections converge slowest. For unimodal f, f(b − δ) < f(b) puts the peak in
+    // [b − δ, b]; with δ the search's own resolution the end is as exact as the search would be.
+    // (Equality proves nothing — f may be flat there, or δ below f's resolution — so it searches.)
+    // The golden point, the search's first probe, must not lie higher: a guard for interpolants
+    // that are not quite unimodal at loose tolerances.
+    let delta = 2.0 * f64::EPSILON.sqrt() * a.abs().max(b.abs()).max(b - a);
+    if b - a > 4.0 * delta {
+        let (fa, fb) = (f(a), f(b));
+        let f_golden = f(a + GOLDEN * (b - a));
+        if f_golden <= fb && f(b - delta) < fb {
+            return (b, fb);
+        }
+        if f_golden <= fa && f(a + delta) < fa {
+            return (a, fa);
+        }
+    }
     let mut x = a + GOLDEN * (b - a);
     let (mut w, mut v) = (x, x);
     let mut fx = -f(x);
@@ -204,6 +221,25 @@ mod tests {
         assert!((f - 1.0).abs() < 1e-15);
         // A monotone function peaks at an end.
         assert_eq!(brent_max(|x| x, 0.0, 1.0), (1.0, 1.0));
+    }
+
+    #[test]
+    fn a_peak_at_an_end_costs_a_few_evaluations_and_an_inner_one_is_still_searched() {
+        let mut calls = 0;
+        let (t, f) = brent_max(
+            |x| {
+                calls += 1;
+                1.0 - (x - 2.0).powi(2)
+            },
+            0.0,
+            1.0,
+        );
+        assert_eq!((t, f), (1.0, 0.0));
+        assert!(calls <= 5, "{calls} evaluations");
+        // A peak 1e-3 inside the right end: the end test fails and the search finds it.
+        let (t, f) = brent_max(|x| 1.0 - (x - 0.999).powi(2), 0.0, 1.0);
+        assert!((t - 0.999).abs() < 1e-7, "{t}");
+        assert!((f - 1.0).abs() < 1e-15);
     }
 
     #[test]
