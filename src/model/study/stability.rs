@@ -131,6 +131,19 @@ pub fn runs_at_step(
     FIXED_STEP_METHODS
         .iter()
         .map(|&method| {
+            if dt >= reference.t_contact {
+                return StabilityRun {
+                    method,
+                    dt,
+                    verdict: Verdict::Failed {
+                        reason: format!(
+                            "the step is not shorter than the contact (t_c = {:.4e} s): one step cannot resolve the impact",
+                            reference.t_contact
+                        ),
+                    },
+                    solution: None,
+                };
+            }
             let result = solve_fixed(model, params, method, dt);
             StabilityRun {
                 method,
@@ -147,7 +160,9 @@ pub fn runs_at_step(
 /// Scans dt upward geometrically (2^{1/8} per point) from 1/32 of ω_max⁻¹ until the first unbounded
 /// verdict, then bisects between the last bounded and the first unbounded step. A single impact lasts
 /// only a few steps near the bound, so the measured step may differ from the linear theory of
-/// [`critical_step`] — that difference is what the stability view shows.
+/// [`critical_step`] — that difference is what the stability view shows. The scan stops at the
+/// reference contact time: a longer step jumps over the whole impact, which can look bounded
+/// without describing anything.
 pub fn largest_bounded_step(
     model: ForceModel,
     params: &ImpactParams,
@@ -166,7 +181,7 @@ pub fn largest_bounded_step(
     while bounded(hi) {
         lo = hi;
         hi *= growth;
-        if hi * omega > 64.0 {
+        if hi >= reference.t_contact {
             return Some(lo);
         }
     }
@@ -233,6 +248,33 @@ pub fn step_ratio(dt: f64, params: &ImpactParams) -> f64 {
 mod tests {
     use super::*;
     use crate::model::power_law::PowerLaw;
+
+    #[test]
+    fn measured_steps_stay_below_the_contact_time_and_longer_steps_are_refused() {
+        let scene = crate::model::scene::tests::fig5_scene();
+        let params = scene.impact_params(&scene.quasistatic().unwrap());
+        let model = ForceModel::HuntCrossley;
+        let reference = super::super::reference::reference(model, &params).unwrap();
+        for bound in step_bounds(model, &params, &reference) {
+            let measured = bound
+                .measured_dt
+                .expect("every method is bounded at small steps");
+            assert!(
+                measured < reference.t_contact,
+                "{}: {measured} s vs t_c {} s",
+                bound.method,
+                reference.t_contact
+            );
+        }
+        for run in runs_at_step(model, &params, &reference, 1.0) {
+            assert!(
+                matches!(run.verdict, Verdict::Failed { .. }),
+                "{:?}",
+                run.verdict
+            );
+            assert!(run.solution.is_none());
+        }
+    }
 
     #[test]
     fn bounds_follow_the_linear_theory() {
