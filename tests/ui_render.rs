@@ -388,3 +388,115 @@ fn no_color_holds_in_every_tab() {
         );
     }
 }
+
+/// The app with v₀ typed in by keystrokes, every solve done.
+fn app_with_speed(v0: &str) -> App {
+    let mut app = app();
+    press(&mut app, KeyCode::Enter);
+    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
+    for c in v0.chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    press(&mut app, KeyCode::Enter);
+    settle(&mut app);
+    app
+}
+
+/// Half a unit in the last digit shown of `text` (`2.7e10` → 5e8, `150.7` → 0.05).
+fn half_last_digit(text: &str) -> f64 {
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((text, "0"));
+    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+    0.5 * 10f64.powi(exponent.parse::<i32>().unwrap() - decimals)
+}
+
+/// Every number cell of the results table reads back as its value within the precision shown: a
+/// number that does not fit its column is shown with fewer digits or in compact scientific form,
+/// never cut (v₀ = 1e6 gave x_max `150687` µm for 1.507 m, F_max `2.71e1` for 2.71e10 N).
+#[test]
+fn results_cells_are_never_cut_numbers() {
+    type Get = fn(&hertz_tui::model::impact::ImpactSummary) -> f64;
+    let columns: [(&str, Get); 7] = [
+        ("x_max", |s| s.x_max * 1e6),
+        ("F_max", |s| s.f_max),
+        ("t_c", |s| s.t_contact * 1e6),
+        ("v_out", |s| s.v_out),
+        ("e_out", |s| s.e_out),
+        ("x_res", |s| s.x_residual * 1e6),
+        ("ΔE", |s| s.energy_dissipated * 1e3),
+    ];
+    for v0 in ["1e6", "1e-12", "0.3"] {
+        let app = app_with_speed(v0);
+        for (width, height) in [(100, 30), (80, 24), (120, 40), (160, 48)] {
+            let terminal = render(&app, width, height);
+            let rows: Vec<Vec<String>> = text(terminal.backend().buffer())
+                .lines()
+                .map(|l| l.chars().map(String::from).collect())
+                .collect();
+            let row_text = |row: &[String], from: usize, to: usize| {
+                row[from.min(row.len())..to.min(row.len())].concat()
+            };
+            let header = rows
+                .iter()
+                .position(|r| {
+                    let t = r.concat();
+                    t.contains("model") && t.contains("x_max")
+                })
+                .unwrap_or_else(|| panic!("no results header at {width}×{height}"));
+            let line = rows[header].concat();
+            // Column starts: each header word, located in cells.
+            let mut starts: Vec<(usize, Get)> = Vec::new();
+            for (name, get) in columns {
+                let n = name.chars().count();
+                if let Some(at) = rows[header]
+                    .windows(n)
+                    .position(|w| w.concat() == name && !line.is_empty())
+                {
+                    starts.push((at, get));
+                }
+            }
+            assert!(starts.len() >= 3, "{width}×{height}: {line}");
+            let mut ends: Vec<usize> = starts.iter().skip(1).map(|(at, _)| *at).collect();
+            // The last number column ends where "method" begins (or at the pane's edge).
+            let next = rows[header]
+                .windows(6)
+                .position(|w| w.concat() == "method")
+                .unwrap_or(rows[header].len());
+            ends.push(next);
+            let mut checked = 0;
+            // One row per checked model, in order, under the header.
+            for (i, model) in app.checked_models().into_iter().enumerate() {
+                let Some(solution) = app.solutions.solution(model) else {
+                    continue;
+                };
+                let row = &rows[header + 1 + i];
+                for ((from, get), to) in starts.iter().zip(&ends) {
+                    let cell = row_text(row, *from, *to);
+                    let cell = cell.trim().trim_end_matches('│').trim();
+                    let value = get(&solution.summary);
+                    if cell == "…" || cell.starts_with('✗') {
+                        continue;
+                    }
+                    let shown: f64 = cell.parse().unwrap_or_else(|_| {
+                        panic!("v₀ {v0} at {width}×{height}: cell '{cell}' is not a number")
+                    });
+                    let tolerance = half_last_digit(cell) * (1.0 + 1e-9) + 1e-300;
+                    assert!(
+                        (shown - value).abs() <= tolerance,
+                        "v₀ {v0} at {width}×{height}: '{cell}' shown for {value:e}\n{}\n{}",
+                        rows[header].concat(),
+                        row.concat()
+                    );
+                    checked += 1;
+                }
+            }
+            assert!(
+                checked > 0,
+                "v₀ {v0} at {width}×{height}: no cell checked\n{}",
+                rows.iter()
+                    .map(|r| r.concat())
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            );
+        }
+    }
+}

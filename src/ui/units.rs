@@ -173,6 +173,36 @@ pub fn sig(value: f64, sig: usize) -> String {
     format::significant(value, sig, Zeros::Trim)
 }
 
+/// `value` in at most `width` columns, never cut: `digits` significant digits or fewer, plain
+/// (`0.3`, `150.7`) while that fits, else compact scientific (`1.51e6`, `2.7e10`, `9.1e-15`); the
+/// most significant digits win, plain on a tie. When not even one digit fits, `…` (`—`/`∞` for a
+/// NaN or an infinity, `…` too if those do not fit).
+pub fn fit(value: f64, digits: usize, width: usize) -> String {
+    let fits = |s: &String| s.chars().count() <= width;
+    if value.is_finite() {
+        for d in (1..=digits.max(1)).rev() {
+            let plain = sig(value, d);
+            if fits(&plain) {
+                return plain;
+            }
+            let scientific = format::scientific(value, d, Zeros::Trim);
+            if fits(&scientific) {
+                return scientific;
+            }
+        }
+    } else {
+        let text = sig(value, digits);
+        if fits(&text) {
+            return text;
+        }
+    }
+    if width == 0 {
+        String::new()
+    } else {
+        "…".into()
+    }
+}
+
 /// `value_si` shown in `unit` with a fixed `prefix`, e.g. `10 mm`.
 pub fn with_prefix(value_si: f64, unit: Unit, prefix: Prefix, digits: usize) -> String {
     let number = sig(value_si / (prefix.factor * unit.si_per_unit), digits);
@@ -220,6 +250,28 @@ mod tests {
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() <= 1e-12 * b.abs()
+    }
+
+    #[test]
+    fn fit_never_cuts_a_number() {
+        assert_eq!(fit(7.575, 4, 6), "7.575");
+        assert_eq!(fit(1_506_870.0, 4, 6), "1.51e6");
+        assert_eq!(fit(2.71e10, 4, 6), "2.7e10");
+        assert_eq!(fit(2.71e10, 4, 8), "2.71e10");
+        assert_eq!(fit(9.131e-15, 4, 6), "9e-15");
+        assert_eq!(fit(9.131e-15, 4, 8), "9.13e-15");
+        assert_eq!(fit(-1e300, 4, 3), "…");
+        assert_eq!(fit(f64::NAN, 4, 6), "—");
+        for value in [1.234e-9, 9.99e5, 123_456.0, -0.000_123_4, 5e22, 0.0] {
+            for width in 1..12 {
+                let text = fit(value, 4, width);
+                assert!(text.chars().count() <= width, "{value} in {width}: {text}");
+                if text != "…" {
+                    let back: f64 = text.parse().unwrap();
+                    assert!((back - value).abs() <= 0.5 * value.abs(), "{value}: {text}");
+                }
+            }
+        }
     }
 
     #[test]

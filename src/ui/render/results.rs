@@ -22,8 +22,33 @@ struct Column {
     /// How the compact title names the unit of this column ("x µm"), empty for none.
     note: &'static str,
     width: u16,
-    value: fn(&ImpactSummary) -> String,
+    value: fn(&ImpactSummary) -> Value,
 }
+
+/// A cell before it is fitted to its column: a number with its significant digits, or text.
+enum Value {
+    Number(f64, usize),
+    Text(String),
+}
+
+impl Column {
+    fn is_number(&self) -> bool {
+        !matches!(self.header, "method" | "steps")
+    }
+}
+
+impl Value {
+    /// The cell in `width` columns: a number never cut ([`units::fit`]).
+    fn text(&self, width: usize) -> String {
+        match self {
+            Value::Number(value, digits) => units::fit(*value, *digits, width),
+            Value::Text(text) => text.clone(),
+        }
+    }
+}
+
+/// The widest a number column grows to with spare room: `-1.234e-15`.
+const NUMBER_WIDTH: u16 = 10;
 
 const COLUMNS: [Column; 9] = [
     Column {
@@ -31,63 +56,63 @@ const COLUMNS: [Column; 9] = [
         note: "x µm",
         unit: "µm",
         width: 6,
-        value: |s| sig(s.x_max * 1e6, 4),
+        value: |s| Value::Number(s.x_max * 1e6, 4),
     },
     Column {
         header: "F_max",
         note: "F N",
         unit: "N",
         width: 6,
-        value: |s| sig(s.f_max, 4),
+        value: |s| Value::Number(s.f_max, 4),
     },
     Column {
         header: "t_c",
         note: "t µs",
         unit: "µs",
         width: 6,
-        value: |s| sig(s.t_contact * 1e6, 4),
+        value: |s| Value::Number(s.t_contact * 1e6, 4),
     },
     Column {
         header: "v_out",
         note: "v m/s",
         unit: "m/s",
         width: 6,
-        value: |s| sig(s.v_out, 4),
+        value: |s| Value::Number(s.v_out, 4),
     },
     Column {
         header: "e_out",
         note: "",
         unit: "",
         width: 5,
-        value: |s| sig(s.e_out, 3),
+        value: |s| Value::Number(s.e_out, 3),
     },
     Column {
         header: "x_res",
         note: "x µm",
         unit: "µm",
         width: 6,
-        value: |s| sig(s.x_residual * 1e6, 4),
+        value: |s| Value::Number(s.x_residual * 1e6, 4),
     },
     Column {
         header: "ΔE",
         note: "ΔE mJ",
         unit: "mJ",
         width: 6,
-        value: |s| sig(s.energy_dissipated * 1e3, 4),
+        value: |s| Value::Number(s.energy_dissipated * 1e3, 4),
     },
     Column {
         header: "method",
         note: "",
         unit: "",
         width: 16,
-        value: |s| s.method.to_string(),
+        value: |s| Value::Text(s.method.to_string()),
     },
     Column {
         header: "steps",
         note: "",
         unit: "",
         width: 6,
-        value: |s| s.steps.to_string(),
+        value: |s| Value::Text(s.steps.to_string()),
     },
 ];
 
@@ -115,6 +140,25 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             used <= inner.width
         })
         .collect();
+    // Spare room widens the number columns, so that they need fewer compact forms.
+    let mut widths: Vec<u16> = columns.iter().map(|c| width_of(c)).collect();
+    let mut spare = inner.width.saturating_sub(used.min(inner.width));
+    if columns.len() < COLUMNS.len() {
+        spare = 0;
+    }
+    'grow: while spare > 0 {
+        let mut grew = false;
+        for (c, w) in columns.iter().zip(widths.iter_mut()) {
+            if c.is_number() && *w < NUMBER_WIDTH && spare > 0 {
+                *w += 1;
+                spare -= 1;
+                grew = true;
+            }
+        }
+        if !grew {
+            break 'grow;
+        }
+    }
     let quasistatic_lines = quasistatic_block(app, inner.width as usize, 2);
     let table_height = inner
         .height
@@ -129,10 +173,10 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     .style(theme.style(Role::Label).add_modifier(Modifier::BOLD));
     let rows: Vec<Row> = checked
         .iter()
-        .map(|&model| model_row(app, model, &columns, model_width, theme))
+        .map(|&model| model_row(app, model, &columns, &widths, model_width, theme))
         .collect();
     let widths = std::iter::once(Constraint::Length(model_width))
-        .chain(columns.iter().map(|c| Constraint::Length(width_of(c))));
+        .chain(widths.iter().map(|&w| Constraint::Length(w)));
     let table = Table::new(rows, widths).header(header).column_spacing(1);
     frame.render_widget(table, table_area);
     frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
@@ -157,6 +201,7 @@ fn model_row<'a>(
     app: &App,
     model: ForceModel,
     columns: &[&Column],
+    widths: &[u16],
     model_width: u16,
     theme: Theme,
 ) -> Row<'a> {
@@ -175,7 +220,8 @@ fn model_row<'a>(
             std::iter::once(name_cell).chain(
                 columns
                     .iter()
-                    .map(|c| Cell::from((c.value)(&solution.summary))),
+                    .zip(widths)
+                    .map(|(c, &w)| Cell::from((c.value)(&solution.summary).text(usize::from(w)))),
             ),
         ),
         Some(Err(message)) => Row::new(vec![
