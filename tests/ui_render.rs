@@ -500,3 +500,39 @@ fn results_cells_are_never_cut_numbers() {
         }
     }
 }
+
+/// R = 1e100 and v₀ = 1e6: every chart tick label is short (scientific by the shared formatter,
+/// never `5000000000000001830474`), no axis runs out of prefixes (`[TN]`), and neighbouring x
+/// labels keep a blank between them.
+#[test]
+fn extreme_values_give_short_tick_labels() {
+    for (key, typed) in [
+        (SceneKey::Body(BodyIndex::One, BodyField::Radius), "1e100"),
+        (SceneKey::V0, "1e6"),
+        (SceneKey::V0, "1e-12"),
+    ] {
+        let mut app = app();
+        app.cursor = Cursor::Field(Field::Number(key));
+        press(&mut app, KeyCode::Enter);
+        update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
+        for c in typed.chars() {
+            press(&mut app, KeyCode::Char(c));
+        }
+        press(&mut app, KeyCode::Enter);
+        settle(&mut app);
+        for (width, height) in [(80, 24), (100, 30), (160, 48)] {
+            let screen = text(render(&app, width, height).backend().buffer());
+            assert!(
+                !screen.contains("[TN]") && !screen.contains("[Tm"),
+                "{screen}"
+            );
+            for line in screen.lines() {
+                let mut run = 0;
+                for c in line.chars() {
+                    run = if c.is_ascii_digit() { run + 1 } else { 0 };
+                    assert!(run < 9, "{typed} at {width}×{height}: {line}\n{screen}");
+                }
+            }
+        }
+    }
+}

@@ -4,7 +4,24 @@
 //! of a round step (1, 2, 2.5 or 5 × 10ᵏ) and every label then sits exactly on its value. A log
 //! axis plots log₁₀ of the display value, its bounds on whole decades and its labels at decades.
 
+use crate::format::{self, Zeros};
+
 use super::units::{self, Prefix, Unit};
+
+/// The longest plain tick label: a longer one (5000000000000001830474) is scientific (5e21).
+const PLAIN_LABEL: usize = 6;
+
+/// The prefix of an axis reaching `magnitude` (SI): the engineering one, or none beyond f … T,
+/// whose labels are then scientific in the bare unit (`F [N]`, `1e100`) rather than `[TN]`.
+fn axis_prefix(magnitude: f64, unit: Unit) -> Prefix {
+    let prefix = units::engineering_prefix(magnitude, unit);
+    let in_prefix = magnitude.abs() / (prefix.factor * unit.si_per_unit);
+    if prefix != units::NONE && !(1.0 - 1e-9..1000.0).contains(&in_prefix) {
+        units::NONE
+    } else {
+        prefix
+    }
+}
 
 /// An axis ready for a chart: bounds and labels in display units, and the unit's prefix.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,7 +54,7 @@ pub fn log_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
     } else {
         (1.0, 10.0)
     };
-    let prefix = units::engineering_prefix(hi, unit);
+    let prefix = axis_prefix(hi, unit);
     let scale = prefix.factor * unit.si_per_unit;
     let max_intervals = (max_labels.max(2) - 1) as f64;
     let decades = (hi / lo).log10();
@@ -88,7 +105,7 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
     } else {
         (0.0, 0.0)
     };
-    let prefix = units::engineering_prefix(lo.abs().max(hi.abs()), unit);
+    let prefix = axis_prefix(lo.abs().max(hi.abs()), unit);
     let scale = prefix.factor * unit.si_per_unit;
     let (mut a, mut b) = (lo / scale, hi / scale);
     if b - a <= f64::EPSILON * a.abs().max(b.abs()).max(1e-300) {
@@ -106,17 +123,37 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
     let last = (b / step - 1e-12).ceil();
     let count = (last - first) as usize;
     let decimals = decimals_of(step);
-    let labels = (0..=count)
+    let values: Vec<f64> = (0..=count)
         .map(|i| {
             let value = (first + i as f64) * step;
-            let value = if value.abs() < step * 1e-9 {
+            if value.abs() < step * 1e-9 {
                 0.0
             } else {
                 value
-            };
-            format!("{value:.decimals$}")
+            }
         })
         .collect();
+    let mut labels: Vec<String> = values.iter().map(|v| format!("{v:.decimals$}")).collect();
+    let wrong = |(label, value): (&String, &f64)| {
+        label.chars().count() > PLAIN_LABEL
+            || label
+                .parse::<f64>()
+                .is_ok_and(|shown| (shown - value).abs() > step * 1e-6)
+    };
+    if labels.iter().zip(&values).any(wrong) {
+        // Scientific by the shared formatter, with the digits that tell the ticks apart.
+        let largest = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let digits = (largest.log10().floor() - step.log10().floor()).max(0.0) as usize
+            + if decimals_of(step / 10f64.powf(step.log10().floor())) > 0 {
+                2
+            } else {
+                1
+            };
+        labels = values
+            .iter()
+            .map(|&v| format::scientific(v, digits, Zeros::Trim))
+            .collect();
+    }
     NiceAxis {
         bounds: [first * step, last * step],
         labels,
@@ -290,6 +327,36 @@ mod tests {
         assert!(flat.bounds[1] > flat.bounds[0]);
         let bad = log_axis(-1.0, f64::NAN, NEWTON, 5);
         assert!(bad.bounds[1] > bad.bounds[0]);
+    }
+
+    #[test]
+    fn extreme_ranges_label_in_scientific_notation_in_the_bare_unit() {
+        for (hi, unit) in [
+            (1e100, NEWTON),
+            (5.3e21, NEWTON),
+            (3.2e-30, METRE),
+            (7e15, METRE_PER_SECOND),
+        ] {
+            for max in 2..10 {
+                let axis = nice_axis(0.0, hi, unit, max);
+                assert_eq!(axis.prefix.symbol, "", "{hi}: {axis:?}");
+                assert!(
+                    axis.labels.iter().all(|l| l.chars().count() <= 8),
+                    "{hi}: {axis:?}"
+                );
+                assert!(axis.labels.iter().any(|l| l.contains('e')), "{axis:?}");
+                assert_labels_on_ticks(&axis);
+                assert!(axis.bounds[1] * axis.scale >= hi * (1.0 - 1e-12));
+            }
+        }
+        let axis = nice_axis(0.0, 1e100, NEWTON, 6);
+        assert_eq!(axis.labels, ["0", "2e99", "4e99", "6e99", "8e99", "1e100"]);
+        let axis = log_axis(1e90, 1e100, NEWTON, 6);
+        assert_eq!(axis.prefix.symbol, "");
+        assert!(
+            axis.labels.iter().all(|l| l.chars().count() <= 6),
+            "{axis:?}"
+        );
     }
 
     #[test]

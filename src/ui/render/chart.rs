@@ -18,6 +18,13 @@ use super::common::{model_name, pane, span};
 const Y_AXIS_COLUMNS: u16 = 7;
 const X_AXIS_ROWS: u16 = 2;
 
+/// Whether x labels spread evenly over `columns` leave a blank between neighbours.
+fn labels_fit(labels: &[String], columns: u16) -> bool {
+    let longest = labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+    let slot = usize::from(columns) / labels.len().saturating_sub(1).max(1);
+    longest < slot
+}
+
 /// The models drawn, the focused one last so it lies on top.
 fn drawn_models(app: &App) -> Vec<ForceModel> {
     let mut models: Vec<ForceModel> = app
@@ -87,9 +94,14 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, kind: ChartKind, roomy: 
         .iter()
         .filter_map(|&m| app.solutions.solution(m).map(|s| Series::sample(m, s, n)))
         .collect();
-    let max_x_labels = (usize::from(plot_columns) / 7).clamp(2, 11);
+    let mut max_x_labels = (usize::from(plot_columns) / 7).clamp(2, 11);
     let max_y_labels = (usize::from(plot_rows) / 2).clamp(2, 8);
-    let p = plot(kind, &series, max_x_labels, max_y_labels);
+    let mut p = plot(kind, &series, max_x_labels, max_y_labels);
+    // Fewer x labels while the longest (a scientific one, 1.25e100) overruns its slot.
+    while max_x_labels > 2 && !labels_fit(&p.x.labels, plot_columns) {
+        max_x_labels -= 1;
+        p = plot(kind, &series, max_x_labels, max_y_labels);
+    }
     let dots_per_x = f64::from(plot_columns * dots_x) / (p.x.bounds[1] - p.x.bounds[0]);
     let dots_per_y = f64::from(plot_rows * dots_y) / (p.y.bounds[1] - p.y.bounds[0]);
     let pieces: Vec<(ForceModel, Pieces, (f64, f64))> = p
