@@ -176,6 +176,36 @@ fn unparsable_text_stays_in_the_editor_with_the_reason() {
 }
 
 #[test]
+fn a_bad_rtol_is_refused_in_the_field_with_the_reason_and_the_results_stay() {
+    let mut a = app();
+    settle(&mut a);
+    a.cursor = Cursor::Field(Field::Rtol);
+    for bad in ["0", "-1e-6", "1", "2"] {
+        key(&mut a, KeyCode::Enter);
+        enter_text(&mut a, bad);
+        match &a.mode {
+            Mode::Editing(editor) => {
+                let error = editor.error.as_deref().unwrap_or_default();
+                assert!(
+                    error.starts_with("rtol must be > 0 and < 1"),
+                    "{bad}: {error}"
+                );
+            }
+            other => panic!("{bad}: {other:?}"),
+        }
+        assert_eq!(a.draft.options.rtol, 1e-8);
+        assert!(a.take_jobs().is_empty());
+        assert!(a.solutions.solution(ForceModel::Proposed).is_some());
+        key(&mut a, KeyCode::Esc);
+        // ← after the refusal steps down from the last valid rtol, never up.
+        key(&mut a, KeyCode::Left);
+        assert_eq!(a.draft.options.rtol, 1e-9, "{bad}");
+        key(&mut a, KeyCode::Right);
+        settle(&mut a);
+    }
+}
+
+#[test]
 fn an_invalid_value_turns_its_field_red_and_the_last_results_stay() {
     let mut a = app();
     settle(&mut a);

@@ -323,7 +323,14 @@ impl Field {
                 Ok(())
             }
             Field::Rtol => {
-                draft.options.rtol = units::parse(text, units::DIMENSIONLESS)?;
+                let rtol = units::parse(text, units::DIMENSIONLESS)?;
+                if !(rtol > 0.0 && rtol < 1.0) {
+                    return Err(format!(
+                        "rtol must be > 0 and < 1 (a relative tolerance), got {}",
+                        units::sig(rtol, 4)
+                    ));
+                }
+                draft.options.rtol = rtol;
                 Ok(())
             }
             Field::Number(SceneKey::Body(index, BodyField::Mass))
@@ -360,6 +367,10 @@ impl Field {
             }
             Field::Rtol => {
                 let rtol = draft.options.rtol;
+                if !(rtol > 0.0 && rtol < 1.0) {
+                    // Not reachable by typing (refused): never a jump from a bad value.
+                    return false;
+                }
                 let exponent = rtol.log10().round() as i32
                     + match direction {
                         Nudge::Up => 1,
@@ -581,6 +592,27 @@ mod tests {
         let mut d = draft();
         assert!(V0.nudge(Nudge::Up, &mut d));
         assert_eq!(d.scene.impact.v0, 0.31);
+        for bad in ["0", "-1e-6", "1", "3", "nan"] {
+            let before = d.options.rtol;
+            let error = Field::Rtol.apply(bad, &mut d).unwrap_err();
+            assert!(
+                error.contains("rtol") || error.contains("number"),
+                "{bad}: {error}"
+            );
+            assert_eq!(
+                d.options.rtol, before,
+                "{bad} is refused, the last rtol stays"
+            );
+        }
+        for bad in [0.0, -1.0, f64::NAN] {
+            let mut d = draft();
+            d.options.rtol = bad;
+            assert!(
+                !Field::Rtol.nudge(Nudge::Down, &mut d),
+                "← from {bad} does not jump"
+            );
+            assert!(d.options.rtol == bad || bad.is_nan());
+        }
         assert!(Field::Rtol.nudge(Nudge::Down, &mut d));
         assert_eq!(d.options.rtol, 1e-9);
         // The derived mass becomes a given one when nudged.
