@@ -354,6 +354,24 @@ impl App {
         }
     }
 
+    /// The field that shows the scene error's message: the one under the cursor when the error is
+    /// about it (the shape just changed, the field being edited), else the first it names.
+    pub fn error_note_field(&self) -> Option<Field> {
+        let fields = self.error_fields();
+        match self.cursor {
+            Cursor::Field(field) if fields.contains(&field) => Some(field),
+            Cursor::Field(field)
+                if matches!(self.scene_error, Some(ModelError::UnsupportedPair(_))) =>
+            {
+                match field.section() {
+                    Section::Body(index) => Some(Field::Shape(index)),
+                    Section::Impact => fields.first().copied(),
+                }
+            }
+            _ => fields.first().copied(),
+        }
+    }
+
     /// The body a material from the picker goes to by default: the one under the cursor.
     pub(super) fn cursor_body(&self) -> BodyIndex {
         match self.cursor {

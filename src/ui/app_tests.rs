@@ -12,9 +12,9 @@ use super::testing::fig5_scene;
 use super::theme::Theme;
 use super::update::update;
 use super::worker;
-use crate::model::ForceModel;
 use crate::model::presets::Registry;
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use crate::model::{ForceModel, ModelError};
 
 const V0: Field = Field::Number(SceneKey::V0);
 
@@ -482,11 +482,32 @@ fn shapes_change_the_rows_and_plane_on_plane_is_refused() {
         a.error_fields(),
         [Field::Shape(BodyIndex::One), Field::Shape(BodyIndex::Two)]
     );
+    assert_eq!(a.error_note_field(), Some(Field::Shape(BodyIndex::One)));
     assert!(!a.rows().contains(&Cursor::Field(radius)));
     assert!(a.take_jobs().is_empty());
     key(&mut a, KeyCode::Left);
     assert_eq!(a.draft.scene.body1.shape.name(), "cylinder");
     assert!(a.rows().contains(&Cursor::Field(radius)));
+}
+
+#[test]
+fn an_unsupported_pair_is_reported_on_the_body_whose_shape_changed() {
+    let mut a = app();
+    settle(&mut a);
+    a.cursor = Cursor::Field(Field::Shape(BodyIndex::Two));
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "cylinder");
+    // sphere–cylinder: the message goes under body 2's shape, the one just edited.
+    assert!(matches!(
+        a.scene_error,
+        Some(ModelError::UnsupportedPair(_))
+    ));
+    assert_eq!(a.error_note_field(), Some(Field::Shape(BodyIndex::Two)));
+    let radius2 = Field::Number(SceneKey::Body(BodyIndex::Two, BodyField::Radius));
+    if a.rows().contains(&Cursor::Field(radius2)) {
+        a.cursor = Cursor::Field(radius2);
+        assert_eq!(a.error_note_field(), Some(Field::Shape(BodyIndex::Two)));
+    }
 }
 
 #[test]

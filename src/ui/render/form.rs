@@ -38,7 +38,7 @@ fn title(app: &App, section: Section) -> String {
 
 /// The rows of a section: fields, each followed by the notes that concern it.
 fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
-    let error_fields = app.error_fields();
+    let error_note = app.error_note_field();
     let note_width = width.saturating_sub(2);
     let mut rows = Vec::new();
     for field in field::fields_of(section, &app.draft.scene) {
@@ -58,7 +58,7 @@ fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
             }
             _ => {}
         }
-        if error_fields.first() == Some(&field)
+        if error_note == Some(field)
             && let Some(error) = &app.scene_error
         {
             note(&error.to_string(), Role::Error);
