@@ -45,7 +45,7 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ("in 4", "↑ ↓ rows; ← → change; Enter types or switches"),
     ("?", "this help"),
     ("Esc", "close · cancel · clear the message"),
-    ("q  Ctrl-C", "quit"),
+    ("q  Ctrl-C", "quit (q closes an overlay; q again quits)"),
 ];
 
 /// How numbers are typed, and the display options, for the help screen.
