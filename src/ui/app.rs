@@ -278,6 +278,15 @@ impl App {
         })
     }
 
+    /// The step fixed-step methods take when dt is `auto`: t_c/1000 of the elastic estimate, as
+    /// the solver picks it (`None` without a valid scene).
+    pub fn auto_dt(&self) -> Option<f64> {
+        self.valid
+            .as_ref()
+            .map(|v| v.quasistatic.t_contact / 1000.0)
+            .filter(|dt| *dt > 0.0 && dt.is_finite())
+    }
+
     /// The most points the sweep chart shows distinctly: one per braille dot column (two per
     /// terminal column), one per column with the other markers.
     pub fn sweep_max_points(&self) -> usize {
@@ -333,7 +342,7 @@ impl App {
 
     /// The cursor stops, in order: the visible fields, then the models.
     pub fn rows(&self) -> Vec<Cursor> {
-        field::all_fields(&self.draft.scene)
+        field::all_fields(&self.draft)
             .into_iter()
             .map(Cursor::Field)
             .chain(ForceModel::ALL.into_iter().map(Cursor::Model))
@@ -436,9 +445,12 @@ impl App {
         if let Cursor::Field(f) = self.cursor
             && !self.rows().contains(&self.cursor)
         {
-            self.cursor = Cursor::Field(match f.section() {
-                Section::Body(index) => Field::Shape(index),
-                Section::Impact => Field::Number(SceneKey::V0),
+            self.cursor = Cursor::Field(match (f, f.section()) {
+                // The method changed between adaptive and fixed-step: its other setting.
+                (Field::Rtol, _) => Field::Dt,
+                (Field::Dt, _) => Field::Rtol,
+                (_, Section::Body(index)) => Field::Shape(index),
+                (_, Section::Impact) => Field::Number(SceneKey::V0),
             });
         }
     }

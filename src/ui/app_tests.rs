@@ -542,3 +542,107 @@ fn saving_as_a_user_preset_lists_it_in_the_picker() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_fixed_step_method_shows_a_dt_row_whose_step_reaches_the_solver() {
+    let mut a = app();
+    settle(&mut a);
+    assert!(a.rows().contains(&Cursor::Field(Field::Rtol)));
+    assert!(!a.rows().contains(&Cursor::Field(Field::Dt)));
+    a.cursor = Cursor::Field(Field::Method);
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "euler");
+    assert!(a.rows().contains(&Cursor::Field(Field::Dt)));
+    assert!(!a.rows().contains(&Cursor::Field(Field::Rtol)));
+    // `auto`: the solver's own step.
+    let jobs = a.take_jobs();
+    assert!(!jobs.is_empty());
+    assert!(jobs.iter().all(|j| j.options.dt.is_none()));
+    for job in jobs {
+        update(&mut a, Action::Solved(Ok(worker::solve(&job))));
+    }
+    settle(&mut a);
+    let fine = a
+        .solutions
+        .solution(ForceModel::Proposed)
+        .unwrap()
+        .summary
+        .f_max;
+    assert_eq!(Field::Dt.display(&a.draft), "auto");
+    // A coarse step, typed with its unit.
+    a.cursor = Cursor::Field(Field::Dt);
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "2 µs");
+    assert!(matches!(a.mode, Mode::Normal));
+    assert_eq!(Field::Dt.display(&a.draft), "2 µs");
+    let jobs = a.take_jobs();
+    assert!(!jobs.is_empty());
+    assert!(jobs.iter().all(|j| j.options.dt == Some(2e-6)));
+    for job in jobs {
+        update(&mut a, Action::Solved(Ok(worker::solve(&job))));
+    }
+    let coarse = a
+        .solutions
+        .solution(ForceModel::Proposed)
+        .unwrap()
+        .summary
+        .f_max;
+    assert!(
+        (coarse / fine - 1.0).abs() > 1e-3,
+        "a coarse step changes the results: {coarse} vs {fine}"
+    );
+    // → doubles, ← halves.
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.draft.options.dt, Some(4e-6));
+    key(&mut a, KeyCode::Left);
+    key(&mut a, KeyCode::Left);
+    assert_eq!(a.draft.options.dt, Some(1e-6));
+    // From `auto`, the nudge starts at the solver's own step.
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "auto");
+    assert_eq!(a.draft.options.dt, None);
+    let auto = a.auto_dt().unwrap();
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.draft.options.dt, Some(auto * 2.0));
+    // Back to an adaptive method: the rtol row returns in place of the step.
+    a.cursor = Cursor::Field(Field::Method);
+    key(&mut a, KeyCode::Enter);
+    enter_text(&mut a, "dopri5");
+    assert!(a.rows().contains(&Cursor::Field(Field::Rtol)));
+    assert!(!a.rows().contains(&Cursor::Field(Field::Dt)));
+}
+
+#[test]
+fn a_bad_dt_is_refused_in_the_field_with_the_reason_and_the_results_stay() {
+    let mut a = app();
+    a.draft.options.method =
+        crate::model::impact::MethodChoice::Integrator(crate::model::ode::Method::Rk4);
+    a.recompute();
+    settle(&mut a);
+    a.cursor = Cursor::Field(Field::Dt);
+    for bad in ["0", "-1 µs", "0 s"] {
+        key(&mut a, KeyCode::Enter);
+        enter_text(&mut a, bad);
+        match &a.mode {
+            Mode::Editing(editor) => {
+                let error = editor.error.as_deref().unwrap_or_default();
+                assert!(
+                    error.starts_with("dt must be > 0 and finite"),
+                    "{bad}: {error}"
+                );
+            }
+            other => panic!("{bad}: {other:?}"),
+        }
+        assert_eq!(a.draft.options.dt, None);
+        assert!(a.take_jobs().is_empty());
+        assert!(a.solutions.solution(ForceModel::Proposed).is_some());
+        key(&mut a, KeyCode::Esc);
+    }
+    for bad in ["fast", "inf", "nan"] {
+        key(&mut a, KeyCode::Enter);
+        enter_text(&mut a, bad);
+        assert!(matches!(a.mode, Mode::Editing(_)), "{bad} is refused");
+        assert_eq!(a.draft.options.dt, None);
+        key(&mut a, KeyCode::Esc);
+    }
+}

@@ -17,6 +17,8 @@ pub enum Field {
     Number(SceneKey),
     Method,
     Rtol,
+    /// The step of fixed-step methods (`auto`: the solver's t_c/1000 of the elastic estimate).
+    Dt,
 }
 
 /// The pane a field belongs to.
@@ -95,13 +97,23 @@ pub fn method_choices() -> Vec<MethodChoice> {
         .collect()
 }
 
+/// The word of the solver's own step.
+const DT_AUTO: &str = "auto";
+
 const SHAPES: [&str; 3] = ["sphere", "cylinder", "plane"];
 
 /// The words that clear a given mass back to density × volume.
 const MASS_FROM_DENSITY: [&str; 3] = ["auto", "density", "ρ"];
 
-/// The visible rows of a section, in order (a plane has no radius, only a cylinder a length).
-pub fn fields_of(section: Section, scene: &Scene) -> Vec<Field> {
+/// Whether the chosen method steps at a fixed size (so takes a step, not a tolerance).
+pub fn is_fixed_step(method: MethodChoice) -> bool {
+    matches!(method, MethodChoice::Integrator(m) if !m.is_adaptive())
+}
+
+/// The visible rows of a section, in order (a plane has no radius, only a cylinder a length;
+/// a fixed-step method has a step, the others a tolerance).
+pub fn fields_of(section: Section, draft: &Draft) -> Vec<Field> {
+    let scene = &draft.scene;
     match section {
         Section::Body(index) => {
             let body = match index {
@@ -135,16 +147,20 @@ pub fn fields_of(section: Section, scene: &Scene) -> Vec<Field> {
             Field::Number(SceneKey::Restitution),
             Field::Number(SceneKey::PlasticIndentation),
             Field::Method,
-            Field::Rtol,
+            if is_fixed_step(draft.options.method) {
+                Field::Dt
+            } else {
+                Field::Rtol
+            },
         ],
     }
 }
 
 /// Every visible row, sections in order.
-pub fn all_fields(scene: &Scene) -> Vec<Field> {
+pub fn all_fields(draft: &Draft) -> Vec<Field> {
     Section::ALL
         .iter()
-        .flat_map(|&s| fields_of(s, scene))
+        .flat_map(|&s| fields_of(s, draft))
         .collect()
 }
 
@@ -173,7 +189,7 @@ impl Field {
     pub fn section(self) -> Section {
         match self {
             Field::Shape(index) | Field::Number(SceneKey::Body(index, _)) => Section::Body(index),
-            Field::Number(_) | Field::Method | Field::Rtol => Section::Impact,
+            Field::Number(_) | Field::Method | Field::Rtol | Field::Dt => Section::Impact,
         }
     }
 
@@ -183,6 +199,7 @@ impl Field {
             Field::Shape(_) => "shape",
             Field::Method => "method",
             Field::Rtol => "rtol",
+            Field::Dt => "dt",
             Field::Number(key) => match key {
                 SceneKey::V0 => "v₀",
                 SceneKey::Restitution => "e",
@@ -206,6 +223,7 @@ impl Field {
             Field::Shape(_) => "sphere, cylinder (parallel axes) or plane",
             Field::Method => "solution path: auto picks exact, then explicit, then implicit",
             Field::Rtol => "relative tolerance of adaptive methods",
+            Field::Dt => "step of fixed-step methods; `auto` for t_c/1000 of the elastic estimate",
             Field::Number(key) => match key {
                 SceneKey::V0 => "pre-impact relative velocity",
                 SceneKey::Restitution => "coefficient of restitution, in (0, 1]",
@@ -227,6 +245,7 @@ impl Field {
     pub fn unit(self) -> Unit {
         match self {
             Field::Shape(_) | Field::Method | Field::Rtol => units::DIMENSIONLESS,
+            Field::Dt => units::SECOND,
             Field::Number(key) => match key {
                 SceneKey::V0 => units::METRE_PER_SECOND,
                 SceneKey::Restitution => units::DIMENSIONLESS,
@@ -292,6 +311,10 @@ impl Field {
             Field::Shape(index) => body(&draft.scene, index).shape.name().to_string(),
             Field::Method => draft.options.method.to_string(),
             Field::Rtol => units::sig(draft.options.rtol, 3),
+            Field::Dt => match draft.options.dt {
+                Some(dt) => units::engineering(dt, units::SECOND, 4),
+                None => DT_AUTO.to_string(),
+            },
             Field::Number(SceneKey::Body(index, BodyField::Mass))
                 if body(&draft.scene, index).mass.is_none() =>
             {
@@ -333,6 +356,21 @@ impl Field {
                 draft.options.rtol = rtol;
                 Ok(())
             }
+            Field::Dt => {
+                if text.trim().eq_ignore_ascii_case(DT_AUTO) {
+                    draft.options.dt = None;
+                    return Ok(());
+                }
+                let dt = units::parse(text, units::SECOND)?;
+                if !(dt > 0.0 && dt.is_finite()) {
+                    return Err(format!(
+                        "dt must be > 0 and finite (a step size), got {}",
+                        units::sig(dt, 4)
+                    ));
+                }
+                draft.options.dt = Some(dt);
+                Ok(())
+            }
             Field::Number(SceneKey::Body(index, BodyField::Mass))
                 if MASS_FROM_DENSITY.contains(&text.trim()) =>
             {
@@ -350,7 +388,8 @@ impl Field {
     }
 
     /// Steps the value up or down: to the next choice, or by a step of the value's second
-    /// significant digit (0.3 → 0.31, 10 mm → 11 mm); the rtol by decades. Returns whether it changed.
+    /// significant digit (0.3 → 0.31, 10 mm → 11 mm); the rtol by decades, the dt by halves.
+    /// Returns whether it changed.
     pub fn nudge(self, direction: Nudge, draft: &mut Draft) -> bool {
         match self {
             Field::Shape(index) => {
@@ -380,6 +419,21 @@ impl Field {
                 let changed = next != rtol;
                 draft.options.rtol = next;
                 changed
+            }
+            Field::Dt => {
+                // `auto` has no value here: the caller seeds it with the solver's default first.
+                let Some(dt) = draft.options.dt else {
+                    return false;
+                };
+                let next = match direction {
+                    Nudge::Up => dt * 2.0,
+                    Nudge::Down => dt / 2.0,
+                };
+                if !(dt > 0.0 && dt.is_finite() && next > 0.0 && next.is_finite()) {
+                    return false;
+                }
+                draft.options.dt = Some(next);
+                true
             }
             Field::Number(key) => {
                 let current = match key {
@@ -566,13 +620,14 @@ mod tests {
             }
         );
         assert!(
-            fields_of(Section::Body(BodyIndex::One), &d.scene).contains(&Field::Number(
-                SceneKey::Body(BodyIndex::One, BodyField::Length)
-            ))
+            fields_of(Section::Body(BodyIndex::One), &d).contains(&Field::Number(SceneKey::Body(
+                BodyIndex::One,
+                BodyField::Length
+            )))
         );
         R1.apply("20 mm", &mut d).unwrap();
         shape1.apply("plane", &mut d).unwrap();
-        assert!(!fields_of(Section::Body(BodyIndex::One), &d.scene).contains(&R1));
+        assert!(!fields_of(Section::Body(BodyIndex::One), &d).contains(&R1));
         shape1.nudge(Nudge::Up, &mut d);
         assert_eq!(d.scene.body1.shape, Shape::Sphere { radius: 0.02 });
         assert!(shape1.apply("cube", &mut d).is_err());
@@ -623,7 +678,7 @@ mod tests {
     #[test]
     fn rows_follow_the_shapes() {
         let d = draft();
-        let rows = all_fields(&d.scene);
+        let rows = all_fields(&d);
         // Sphere: shape, R, mass, 4 material rows; plane: shape, mass, 4; impact: 5.
         assert_eq!(rows.len(), 7 + 6 + 5);
         assert_eq!(rows[0], Field::Shape(BodyIndex::One));

@@ -11,7 +11,7 @@ use crate::model::scene_key::BodyIndex;
 use super::action::Action;
 use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
 use super::export;
-use super::field::Nudge;
+use super::field::{Field, Nudge};
 use super::picker::{EntryKind, Picker};
 use super::study_worker::StudyReport;
 use super::tab::Tab;
@@ -85,6 +85,10 @@ fn normal(app: &mut App, action: Action) {
         Action::Down => app.move_cursor(true),
         Action::Nudge(direction) => match app.cursor {
             Cursor::Field(field) => {
+                if field == Field::Dt && app.draft.options.dt.is_none() {
+                    // ←/→ from `auto` halve/double the solver's own step.
+                    app.draft.options.dt = app.auto_dt();
+                }
                 if field.nudge(direction, &mut app.draft) {
                     app.recompute();
                 }

@@ -41,7 +41,7 @@ fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
     let error_note = app.error_note_field();
     let note_width = width.saturating_sub(2);
     let mut rows = Vec::new();
-    for field in field::fields_of(section, &app.draft.scene) {
+    for field in field::fields_of(section, &app.draft) {
         rows.push(Row::Field(field));
         let mut note = |text: &str, role| {
             rows.extend(
