@@ -66,10 +66,62 @@ fn hints(mode: &Mode, tab: Tab) -> &'static [(&'static str, &'static str)] {
 fn shortened(text: &str, width: usize) -> String {
     if text.chars().count() <= width {
         text.to_string()
+    } else if width == 0 {
+        String::new()
     } else {
         let mut cut: String = text.chars().take(width.saturating_sub(1)).collect();
         cut.push('…');
         cut
+    }
+}
+
+/// A status message cut to `width` characters with `…`. A path in it (the last word with a `/`)
+/// loses its leading folders first, so that the file name stays: `saved …/scenes/my-scene.toml`.
+pub(crate) fn fit_message(text: &str, width: usize) -> String {
+    let length = text.chars().count();
+    if length <= width {
+        return text.to_string();
+    }
+    let path_word = text
+        .split_whitespace()
+        .rev()
+        .find(|word| word.contains(['/', '\\']));
+    if let Some(word) = path_word {
+        let start = text.rfind(word).unwrap_or(0);
+        let (head, rest) = text.split_at(start);
+        let tail = &rest[word.len()..];
+        let others = head.chars().count() + tail.chars().count();
+        if let Some(budget) = width.checked_sub(others).filter(|&b| b >= 2) {
+            return format!("{head}{}{tail}", path_end(word, budget));
+        }
+    }
+    shortened(text, width)
+}
+
+/// `path` cut to `budget` (> 1) characters from its start: whole trailing components behind `…/`
+/// while the file name fits, else the file name's last characters behind `…`.
+fn path_end(path: &str, budget: usize) -> String {
+    let length = path.chars().count();
+    if length <= budget {
+        return path.to_string();
+    }
+    // The separators the shortened path may start at, nearest the end last.
+    let mut best = None;
+    for (i, c) in path.char_indices() {
+        if c == '/' || c == '\\' {
+            let kept = path[i..].chars().count();
+            if kept < budget {
+                best = Some(i);
+                break;
+            }
+        }
+    }
+    match best {
+        Some(i) if i + 1 < path.len() => format!("…{}", &path[i..]),
+        _ => {
+            let skip = length - (budget - 1);
+            format!("…{}", path.chars().skip(skip).collect::<String>())
+        }
     }
 }
 
@@ -104,7 +156,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let room = usize::from(area.width.saturating_sub(left_width + 1));
     let right: Vec<Span> = match &app.message {
         Some(message) => vec![Span::styled(
-            format!("{} ", message.text),
+            format!("{} ", fit_message(&message.text, room.saturating_sub(1))),
             theme.style(if message.error {
                 Role::Error
             } else {
@@ -134,4 +186,40 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         Layout::horizontal([Constraint::Length(left_width + 1), Constraint::Fill(1)]).areas(area);
     frame.render_widget(Paragraph::new(left), l);
     frame.render_widget(Paragraph::new(right), r);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fit_message;
+
+    #[test]
+    fn long_messages_are_cut_with_an_ellipsis_keeping_the_file_name() {
+        let saved = "saved /home/someone/.config/hertz-tui/presets/scenes/my-scene.toml";
+        assert_eq!(fit_message(saved, 80), saved, "what fits is left alone");
+        assert_eq!(
+            fit_message(saved, 36),
+            "saved …/presets/scenes/my-scene.toml"
+        );
+        assert_eq!(fit_message(saved, 30), "saved …/scenes/my-scene.toml");
+        assert_eq!(fit_message(saved, 24), "saved …/my-scene.toml");
+        // Not even the file name fits: its end stays.
+        assert_eq!(fit_message(saved, 12), "saved ….toml");
+        let exported = "exported proposed (401 rows) to /tmp/some/where/fig5-proposed.csv";
+        assert_eq!(
+            fit_message(exported, 52),
+            "exported proposed (401 rows) to …/fig5-proposed.csv"
+        );
+        for width in 0..saved.len() {
+            let fitted = fit_message(saved, width);
+            assert!(fitted.chars().count() <= width, "{width}: {fitted}");
+            if width > 0 {
+                assert!(fitted.contains('…'), "{width}: {fitted}");
+            }
+        }
+        // Without a path the end is cut.
+        assert_eq!(
+            fit_message("the step stays within 1 fs … 1 s", 12),
+            "the step st…"
+        );
+    }
 }
