@@ -4,9 +4,11 @@ use serde::Serialize;
 
 use super::args::{BenchArgs, Format};
 use super::error::CliError;
+use super::json;
 use super::layout::columns;
 use super::solve::load_scene;
 use super::units::{engineering, scientific};
+use crate::format::csv;
 use crate::model::impact::ImpactSummary;
 use crate::model::ode::Method;
 use crate::model::presets::Registry;
@@ -119,27 +121,12 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<String, CliError> {
     }
 }
 
-fn json<T: Serialize>(rows: &T) -> Result<String, CliError> {
-    let mut text = serde_json::to_string_pretty(rows).map_err(|e| CliError::Output(e.into()))?;
-    text.push('\n');
-    Ok(text)
-}
-
 fn cell(value: Option<f64>, format: impl Fn(f64) -> String) -> String {
     value.map_or_else(|| "—".to_string(), format)
 }
 
 fn csv_cell<T: ToString>(value: Option<T>) -> String {
     value.map_or_else(String::new, |v| v.to_string())
-}
-
-/// Quotes a CSV field that holds a comma or a quote.
-fn csv_text(text: &str) -> String {
-    if text.contains([',', '"', '\n']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
 }
 
 fn reference_line(reference: &ImpactSummary) -> String {
@@ -207,7 +194,7 @@ fn work_precision_csv(rows: &[BenchRow]) -> String {
             csv_cell(r.error_v_out),
             csv_cell(r.force_evals),
             csv_cell(r.seconds_per_solve),
-            csv_text(r.error.as_deref().unwrap_or("")),
+            csv::field(r.error.as_deref().unwrap_or("")),
         ];
         out.push_str(&fields.join(","));
         out.push('\n');

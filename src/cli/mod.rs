@@ -27,6 +27,13 @@ pub fn load_registry() -> Result<Registry, CliError> {
     Ok(registry)
 }
 
+/// Pretty-printed JSON with a final newline: the `--format json` output of every subcommand.
+pub(crate) fn json<T: serde::Serialize>(value: &T) -> Result<String, CliError> {
+    let mut text = serde_json::to_string_pretty(value).map_err(|e| CliError::Output(e.into()))?;
+    text.push('\n');
+    Ok(text)
+}
+
 /// Runs a headless subcommand, writing its output to `out`.
 pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
     let registry = load_registry()?;
@@ -34,13 +41,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         Command::List => list::render(&registry),
         Command::Solve(args) => match args.format {
             Format::Table => report::render(&solve::report(args, &registry)?),
-            Format::Json => {
-                let report = solve::report(args, &registry)?;
-                let mut json = serde_json::to_string_pretty(&report)
-                    .map_err(|e| CliError::Output(e.into()))?;
-                json.push('\n');
-                json
-            }
+            Format::Json => json(&solve::report(args, &registry)?)?,
             Format::Csv => {
                 let solution = solve::trajectory(args, &registry)?;
                 trajectory_csv(&solution, args.points as usize).map_err(CliError::Usage)?

@@ -111,11 +111,11 @@ pub fn load_scene(source: &SceneSelection, registry: &Registry) -> Result<Scene,
 }
 
 /// The models to solve: those given, else all five.
-pub fn models(args: &SolveArgs) -> Vec<ForceModel> {
-    if args.models.is_empty() {
+pub fn models_or_all(given: &[ForceModel]) -> Vec<ForceModel> {
+    if given.is_empty() {
         ForceModel::ALL.to_vec()
     } else {
-        args.models.clone()
+        given.to_vec()
     }
 }
 
@@ -125,7 +125,7 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
     let quasistatic = scene.quasistatic()?;
     let params = scene.impact_params(&quasistatic);
     let options = solve_options(args);
-    let impacts = models(args)
+    let impacts = models_or_all(&args.models)
         .into_iter()
         .map(|model| {
             let result = impact::solve_impact(model, &params, &options);

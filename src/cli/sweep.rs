@@ -4,9 +4,11 @@ use serde::Serialize;
 
 use super::args::{Format, SweepArgs};
 use super::error::CliError;
+use super::json;
 use super::layout::columns;
-use super::solve::load_scene;
+use super::solve::{load_scene, models_or_all};
 use super::units::engineering;
+use crate::format::csv;
 use crate::model::ForceModel;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
@@ -26,11 +28,7 @@ pub struct SweepReport<'a> {
 pub fn run(args: &SweepArgs, registry: &Registry) -> Result<String, CliError> {
     let scene = load_scene(&args.source, registry)?;
     let defaults = SolveOptions::default();
-    let models = if args.models.is_empty() {
-        ForceModel::ALL.to_vec()
-    } else {
-        args.models.clone()
-    };
+    let models = models_or_all(&args.models);
     let spec = SweepSpec {
         key: args.param,
         from: args.from,
@@ -48,32 +46,17 @@ pub fn run(args: &SweepArgs, registry: &Registry) -> Result<String, CliError> {
     let param = args.param.path();
     match args.format {
         Format::Csv => Ok(csv(&param, &models, &rows)),
-        Format::Json => {
-            let report = SweepReport {
-                param,
-                unit: args.param.unit(),
-                rows: &rows,
-            };
-            let mut text =
-                serde_json::to_string_pretty(&report).map_err(|e| CliError::Output(e.into()))?;
-            text.push('\n');
-            Ok(text)
-        }
+        Format::Json => json(&SweepReport {
+            param,
+            unit: args.param.unit(),
+            rows: &rows,
+        }),
         Format::Table => Ok(table(&param, args.param.unit(), &models, &rows)),
     }
 }
 
 fn number(value: Option<f64>) -> String {
     value.map_or_else(String::new, |v| format!("{v:e}"))
-}
-
-/// Quotes a CSV field that holds a comma or a quote.
-fn quoted(text: &str) -> String {
-    if text.contains([',', '"', '\n']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
 }
 
 /// The messages of a row's failures, `model: message` joined by `; `.
@@ -121,7 +104,7 @@ fn csv(param: &str, models: &[ForceModel], rows: &[SweepRow]) -> String {
             fields.push(number(point.and_then(|p| p.v_out)));
             fields.push(number(point.and_then(|p| p.e_out)));
         }
-        fields.push(quoted(&failures(row)));
+        fields.push(csv::field(&failures(row)));
         out.push_str(&fields.join(","));
         out.push('\n');
     }

@@ -5,6 +5,15 @@ use std::fmt::{Display, Write as _};
 
 use crate::model::impact::{ImpactSolution, Sample};
 
+/// A CSV field as text: quoted (quotes doubled) when it holds a comma, a quote or a newline.
+pub fn field(text: &str) -> String {
+    if text.contains([',', '"', '\n']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
 /// The header row: time (s), displacement (m), velocity (m/s), force (N).
 pub const HEADER: &str = "t,x,v,F";
 
@@ -33,6 +42,14 @@ pub fn samples_csv(model: impl Display, samples: &[Sample]) -> Result<String, St
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fields_with_commas_quotes_or_newlines_are_quoted() {
+        assert_eq!(field("plain text"), "plain text");
+        assert_eq!(field("a, b"), "\"a, b\"");
+        assert_eq!(field("say \"hi\""), "\"say \"\"hi\"\"\"");
+        assert_eq!(field("two\nlines"), "\"two\nlines\"");
+    }
     use crate::model::ForceModel;
 
     fn sample(t: f64, x: f64, v: f64, f: f64) -> Sample {
