@@ -107,18 +107,22 @@ pub struct StabilityRun {
     pub solution: Option<ImpactSolution>,
 }
 
+/// Solver options of a fixed-step `method` at step `dt`, the rest default.
+pub(super) fn fixed_step_options(method: Method, dt: f64) -> SolveOptions {
+    SolveOptions {
+        method: MethodChoice::Integrator(method),
+        dt: Some(dt),
+        ..SolveOptions::default()
+    }
+}
+
 fn solve_fixed(
     model: ForceModel,
     params: &ImpactParams,
     method: Method,
     dt: f64,
 ) -> Result<ImpactSolution, ImpactError> {
-    let opts = SolveOptions {
-        method: MethodChoice::Integrator(method),
-        dt: Some(dt),
-        ..SolveOptions::default()
-    };
-    solve_impact(model, params, &opts)
+    solve_impact(model, params, &fixed_step_options(method, dt))
 }
 
 /// Every fixed-step method at step `dt` on `model`, judged against `reference`.

@@ -5,7 +5,7 @@ use std::time::Duration;
 use serde::Serialize;
 
 use super::reference::{SummaryErrors, reference};
-use super::stability::{FIXED_STEP_METHODS, largest_bounded_step};
+use super::stability::{FIXED_STEP_METHODS, fixed_step_options, largest_bounded_step};
 use super::timing::median_seconds;
 use crate::model::force::{ForceModel, ImpactParams};
 use crate::model::impact::{ImpactError, ImpactSummary, MethodChoice, SolveOptions, solve_impact};
@@ -115,11 +115,7 @@ pub fn work_precision_until(
                 return Ok((reference, rows));
             }
             let dt = largest / f64::from(1u32 << halving);
-            let opts = SolveOptions {
-                method: MethodChoice::Integrator(method),
-                dt: Some(dt),
-                ..SolveOptions::default()
-            };
+            let opts = fixed_step_options(method, dt);
             rows.push(measure(
                 model,
                 params,
