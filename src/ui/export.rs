@@ -39,21 +39,11 @@ pub fn write(path: &Path, solution: &ImpactSolution) -> Result<usize, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::ImpactParams;
     use crate::model::impact::{SolveOptions, solve_impact};
-    use crate::model::power_law::PowerLaw;
+    use crate::ui::testing::fig5_params;
 
     fn solution() -> ImpactSolution {
-        let params = ImpactParams {
-            mass: 0.0327,
-            law: PowerLaw {
-                k: 1.465e10,
-                n: 1.5,
-            },
-            v0: 0.3,
-            restitution: 0.6,
-            plastic_indentation: 2.3e-6,
-        };
+        let params = fig5_params(0.3);
         solve_impact(ForceModel::HuntCrossley, &params, &SolveOptions::default()).unwrap()
     }
 

@@ -116,20 +116,7 @@ impl Solutions {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::power_law::PowerLaw;
-
-    fn params(v0: f64) -> ImpactParams {
-        ImpactParams {
-            mass: 0.0327,
-            law: PowerLaw {
-                k: 1.465e10,
-                n: 1.5,
-            },
-            v0,
-            restitution: 0.6,
-            plastic_indentation: 2.3e-6,
-        }
-    }
+    use crate::ui::testing::fig5_params;
 
     fn failed(job: &Job, message: &str) -> Outcome {
         Outcome {
@@ -151,14 +138,22 @@ mod tests {
     fn same_inputs_solve_nothing() {
         let mut s = Solutions::default();
         let opts = SolveOptions::default();
-        let job = s.request(ForceModel::Proposed, params(0.3), opts).unwrap();
+        let job = s
+            .request(ForceModel::Proposed, fig5_params(0.3), opts)
+            .unwrap();
         assert!(s.is_pending(ForceModel::Proposed));
-        assert_eq!(s.request(ForceModel::Proposed, params(0.3), opts), None);
+        assert_eq!(
+            s.request(ForceModel::Proposed, fig5_params(0.3), opts),
+            None
+        );
         assert!(s.accept(failed(&job, "x")));
         assert!(!s.any_pending());
-        assert_eq!(s.request(ForceModel::Proposed, params(0.3), opts), None);
+        assert_eq!(
+            s.request(ForceModel::Proposed, fig5_params(0.3), opts),
+            None
+        );
         assert!(
-            s.request(ForceModel::HuntCrossley, params(0.3), opts)
+            s.request(ForceModel::HuntCrossley, fig5_params(0.3), opts)
                 .is_some()
         );
     }
@@ -167,10 +162,16 @@ mod tests {
     fn stale_outcomes_are_dropped_and_the_old_result_stays_meanwhile() {
         let mut s = Solutions::default();
         let opts = SolveOptions::default();
-        let first = s.request(ForceModel::Proposed, params(0.3), opts).unwrap();
+        let first = s
+            .request(ForceModel::Proposed, fig5_params(0.3), opts)
+            .unwrap();
         assert!(s.accept(failed(&first, "first")));
-        let second = s.request(ForceModel::Proposed, params(0.4), opts).unwrap();
-        let third = s.request(ForceModel::Proposed, params(0.5), opts).unwrap();
+        let second = s
+            .request(ForceModel::Proposed, fig5_params(0.4), opts)
+            .unwrap();
+        let third = s
+            .request(ForceModel::Proposed, fig5_params(0.5), opts)
+            .unwrap();
         assert!(second.generation < third.generation);
         // While the new request runs, the previous result is what is shown.
         assert_eq!(message(&s), Some("first"));

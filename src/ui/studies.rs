@@ -392,25 +392,12 @@ impl Studies {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::power_law::PowerLaw;
-
-    fn params(v0: f64) -> ImpactParams {
-        ImpactParams {
-            mass: 0.0327,
-            law: PowerLaw {
-                k: 1.465e10,
-                n: 1.5,
-            },
-            v0,
-            restitution: 0.6,
-            plastic_indentation: 2.3e-6,
-        }
-    }
+    use crate::ui::testing::fig5_params;
 
     fn bounds(v0: f64) -> StudySpec {
         StudySpec::Bounds {
             model: ForceModel::Proposed,
-            params: params(v0),
+            params: fig5_params(v0),
         }
     }
 
@@ -437,7 +424,7 @@ mod tests {
         assert!(
             s.request(StudySpec::Runs {
                 model: ForceModel::Proposed,
-                params: params(0.3),
+                params: fig5_params(0.3),
                 dt: 1e-6,
             })
             .is_some()
@@ -456,7 +443,7 @@ mod tests {
 
     #[test]
     fn runs_at_the_rk4_critical_step_judge_every_fixed_step_method() {
-        let p = params(0.3);
+        let p = fig5_params(0.3);
         let dt = critical_step(crate::model::ode::Method::Rk4, &p).unwrap();
         let job = StudyJob {
             generation: 7,

@@ -102,8 +102,8 @@ fn take_next(queue: &mut Vec<StudyJob>) -> Option<StudyJob> {
 mod tests {
     use super::*;
     use crate::model::ForceModel;
-    use crate::model::power_law::PowerLaw;
     use crate::ui::studies::{StudyKind, StudySpec};
+    use crate::ui::testing::fig5_params;
 
     fn kinds(queue: &[StudyJob]) -> Vec<StudyKind> {
         queue.iter().map(|j| j.spec.kind()).collect()
@@ -111,16 +111,7 @@ mod tests {
 
     fn job(generation: u64, kind: StudyKind) -> StudyJob {
         let model = ForceModel::Proposed;
-        let params = crate::model::ImpactParams {
-            mass: 0.0327,
-            law: PowerLaw {
-                k: 1.465e10,
-                n: 1.5,
-            },
-            v0: 0.3,
-            restitution: 0.6,
-            plastic_indentation: 2.3e-6,
-        };
+        let params = fig5_params(0.3);
         let spec = match kind {
             StudyKind::WorkPrecision => StudySpec::WorkPrecision { model, params },
             StudyKind::Bounds => StudySpec::Bounds { model, params },

@@ -98,22 +98,13 @@ mod tests {
     use super::*;
     use crate::model::ForceModel;
     use crate::model::impact::SolveOptions;
-    use crate::model::power_law::PowerLaw;
+    use crate::ui::testing::fig5_params;
 
     fn job(generation: u64, model: ForceModel) -> Job {
         Job {
             generation,
             model,
-            params: crate::model::ImpactParams {
-                mass: 0.0327,
-                law: PowerLaw {
-                    k: 1.465e10,
-                    n: 1.5,
-                },
-                v0: 0.3,
-                restitution: 0.6,
-                plastic_indentation: 2.3e-6,
-            },
+            params: fig5_params(0.3),
             options: SolveOptions::default(),
         }
     }
