@@ -46,7 +46,7 @@ impl Material {
 pub(crate) mod tests {
     use super::*;
 
-    /// The paper's steel (Table 1) with the density of physics notes §2.
+    /// The paper's steel (Table 1) with the density of docs/physics.md §2.
     pub fn steel() -> Material {
         Material {
             name: "steel".into(),
@@ -57,7 +57,7 @@ pub(crate) mod tests {
         }
     }
 
-    /// The paper's aluminium alloy (Table 1) with the density of physics notes §2.
+    /// The paper's aluminium alloy (Table 1) with the density of docs/physics.md §2.
     pub fn aluminium() -> Material {
         Material {
             name: "aluminium-alloy".into(),

@@ -1,4 +1,4 @@
-//! The elastic power law F = k·xⁿ (eq 1) and the exact impact it produces (physics notes §3).
+//! The elastic power law F = k·xⁿ (eq 1) and the exact impact it produces (docs/physics.md §3).
 
 use statrs::function::beta::{beta, beta_reg};
 
@@ -48,7 +48,7 @@ impl PowerLaw {
         self.n * self.k * x.max(0.0).powf(self.n - 1.0)
     }
 
-    /// Maximum approach x_max = ((n+1)·m·v₀²/(2k))^{1/(n+1)}, m (eq 5; general n: physics notes §3).
+    /// Maximum approach x_max = ((n+1)·m·v₀²/(2k))^{1/(n+1)}, m (eq 5; general n: docs/physics.md §3).
     pub fn max_approach(&self, mass: f64, v0: f64) -> f64 {
         ((self.n + 1.0) * mass * v0 * v0 / (2.0 * self.k)).powf(1.0 / (self.n + 1.0))
     }
@@ -63,14 +63,14 @@ impl PowerLaw {
         (2.0 * self.energy(self.approach_at_force(f)) / mass).sqrt()
     }
 
-    /// Contact time t_c = (2·x_max/v₀)·B(1/(n+1), 1/2)/(n+1), s (eq 7; general n: physics notes §3).
+    /// Contact time t_c = (2·x_max/v₀)·B(1/(n+1), 1/2)/(n+1), s (eq 7; general n: docs/physics.md §3).
     pub fn contact_time(&self, mass: f64, v0: f64) -> f64 {
         let a = 1.0 / (self.n + 1.0);
         2.0 * self.max_approach(mass, v0) / v0 * a * beta(a, 0.5)
     }
 
     /// Time to reach approach x on loading, s: (x_max/v₀)·B(u; 1/(n+1), 1/2)/(n+1), u = (x/x_max)^{n+1}
-    /// (physics notes §3). Clamped to the quarter period for x ≥ x_max.
+    /// (docs/physics.md §3). Clamped to the quarter period for x ≥ x_max.
     pub fn loading_time_at(&self, mass: f64, v0: f64, x: f64) -> f64 {
         let x_max = self.max_approach(mass, v0);
         let a = 1.0 / (self.n + 1.0);
@@ -86,7 +86,7 @@ impl PowerLaw {
     }
 
     /// Angular frequency of small oscillations at approach x: ω = √(n·k·x^{n−1}/m), rad/s
-    /// (physics notes §4); at x_max it bounds explicit step sizes.
+    /// (docs/physics.md §4); at x_max it bounds explicit step sizes.
     pub fn angular_frequency(&self, mass: f64, x: f64) -> f64 {
         (self.tangent_stiffness(x) / mass).sqrt()
     }
@@ -105,7 +105,7 @@ mod tests {
 
     #[test]
     fn eq_7_constant_is_the_exact_beta_value() {
-        // (4/5)·B(2/5, 1/2) = 2.943275… (physics notes §2); t_c = that × (5m/4k)^{2/5} v₀^{-1/5}.
+        // (4/5)·B(2/5, 1/2) = 2.943275… (docs/physics.md §2); t_c = that × (5m/4k)^{2/5} v₀^{-1/5}.
         let law = hertz();
         let v0: f64 = 0.7;
         let scale = (5.0 * M / (4.0 * K)).powf(0.4) * v0.powf(-0.2);

@@ -50,7 +50,7 @@ pub const PLASTIC_FACTOR: f64 = 2.8;
 pub const WAVE_FACTOR: f64 = 1e-5;
 
 impl YieldOnset {
-    /// Inverts p₀(F_max(v₀)) for the four pressure levels (Tables 1–2, physics notes §2).
+    /// Inverts p₀(F_max(v₀)) for the four pressure levels (Tables 1–2, docs/physics.md §2).
     pub fn new(
         law: &PowerLaw,
         pressure: &PressureLaw,

@@ -29,7 +29,7 @@ const ESTIMATE_STEPS: usize = 30;
 /// The fit F = a·xⁿ + c of eq 13/14 over the forces an elastic impact at v₀ reaches.
 ///
 /// Range: [F_top/10, F_top] with F_top = min(F_max, F_y), where F_max = a·x_maxⁿ and
-/// x_max = ((n+1)·m·v₀²/(2a))^{1/(n+1)} come from the fit itself (physics notes §3), and F_y is
+/// x_max = ((n+1)·m·v₀²/(2a))^{1/(n+1)} come from the fit itself (docs/physics.md §3), and F_y is
 /// the force at which p₀ (eq 12) reaches 1.1·σ_y, the yield onset of Table 2. Eqs 13–14 describe
 /// the contact only while it is elastic, so above v₀y the fit stops at F_y and the quasistatic
 /// estimate extrapolates it, as the paper's single fit does for all v₀. This is what reproduces

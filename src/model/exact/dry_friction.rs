@@ -1,4 +1,4 @@
-//! Dry friction F = k·xⁿ + P·x·sign(ẋ) (eq 15) through its energy identity (physics notes §3).
+//! Dry friction F = k·xⁿ + P·x·sign(ẋ) (eq 15) through its energy identity (docs/physics.md §3).
 //!
 //! Scaled variables X = x/x_e, V = v/v₀ (x_e the elastic x_max), q = P·x_e²/(m·v₀²):
 //! - loading:   V² = 1 − X^{n+1} − q·X², so X_m solves X^{n+1} + q·X² = 1;

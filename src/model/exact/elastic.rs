@@ -1,4 +1,4 @@
-//! The elastic Hertz impact F = k·xⁿ in closed form (eqs 5–7; physics notes §3).
+//! The elastic Hertz impact F = k·xⁿ in closed form (eqs 5–7; docs/physics.md §3).
 
 use super::ExactImpact;
 use crate::model::force::ImpactParams;

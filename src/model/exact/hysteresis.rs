@@ -1,5 +1,5 @@
 //! The Hunt–Crossley family F = k·xⁿ·(1 + α·ẋ) (eqs 19–20) through its separable energy integral
-//! (physics notes §3).
+//! (docs/physics.md §3).
 //!
 //! Scaled variables: X = x/x_e, V = v/v₀ with x_e the elastic x_max, a = α·v₀, G(y) = y − ln(1 + y).
 //! Then m·v·dv/(1 + αv) = −k·xⁿ dx integrates to G(a·V) = C − (a²/2)·X^{n+1}, C = G(a), and
@@ -94,7 +94,7 @@ impl Integral {
     }
 }
 
-/// The exact impact of F = k·xⁿ(1 + α·ẋ) (eqs 19–20): x_max and v_out in closed form (physics notes
+/// The exact impact of F = k·xⁿ(1 + α·ẋ) (eqs 19–20): x_max and v_out in closed form (docs/physics.md
 /// §3), the force peak at the root of (n+1)·D(V) = n·a·V, times by tanh-sinh quadrature of
 /// dt = m·dv/F to `rtol`. α = 0 is the elastic impact. `None` if a number comes out non-finite.
 pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactImpact> {
@@ -187,7 +187,7 @@ mod tests {
 
     #[test]
     fn hunt_crossley_fig5_against_40_digit_reference() {
-        // mpmath at 40 digits: x_max by eq (physics notes §3), v_out by Lambert W, times and peak by
+        // mpmath at 40 digits: x_max by eq (docs/physics.md §3), v_out by Lambert W, times and peak by
         // adaptive quadrature / root finding of the same integrals.
         let p = fig5(0.033);
         let alpha = 1.5 * (1.0 - 0.6) / 0.3;

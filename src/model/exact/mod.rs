@@ -1,4 +1,4 @@
-//! Exact solutions of the impact ODE where mathematics allows (physics notes §3).
+//! Exact solutions of the impact ODE where mathematics allows (docs/physics.md §3).
 //!
 //! Elastic Hertz in closed form; the Hunt–Crossley family through its separable energy integral and
 //! Lambert W; dry friction through its energy identity. Contact times come from tanh-sinh quadrature

@@ -1,9 +1,9 @@
-//! The function G(y) = y − ln(1 + y) of the Hunt–Crossley energy integral (physics notes §3) and its
+//! The function G(y) = y − ln(1 + y) of the Hunt–Crossley energy integral (docs/physics.md §3) and its
 //! inversion on the unloading branch, both accurate near y = 0 where the direct forms cancel.
 
 use lambert_w::lambert_w0;
 
-/// G(y) = y − ln(1 + y) for y > −1, to a few ulp everywhere (physics notes §3, the C of the
+/// G(y) = y − ln(1 + y) for y > −1, to a few ulp everywhere (docs/physics.md §3, the C of the
 /// energy integral). Below |y| = 0.1 the difference cancels, so the series Σₖ₌₂ (−y)ᵏ/k is summed.
 pub fn y_minus_log1p(y: f64) -> f64 {
     if y.abs() < 0.1 {
@@ -19,7 +19,7 @@ pub fn y_minus_log1p(y: f64) -> f64 {
 }
 
 /// The unloading root of G(−s) = c, c ≥ 0, as (s, w) with s ∈ [0, 1) and w = 1 − s both to full
-/// relative precision: s = α·v_out and w = 1 + α·ẋ at the exit (physics notes §3). In Lambert-W form
+/// relative precision: s = α·v_out and w = 1 + α·ẋ at the exit (docs/physics.md §3). In Lambert-W form
 /// s = 1 + W₀(−e^{−(1+c)}). Near the branch point (c → 0, i.e. e → 1) that form loses half its
 /// digits, so the guess there comes from the branch-point series W₀ = −1 + p − p²/3 + 11p³/72 −
 /// 43p⁴/540 + 769p⁵/17280, p = √(2(1 − e^{−c})), and Newton on G(−s) = c polishes it. For c > 1

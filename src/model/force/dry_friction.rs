@@ -4,7 +4,7 @@ use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{ForceModel, ImpactParams};
 use crate::model::exact::{ExactImpact, dry_friction::dry_friction};
 
-/// ½·(4/5)^{4/5} = 0.418256…, the constant eq 17 rounds to 0.418 (physics notes §2).
+/// ½·(4/5)^{4/5} = 0.418256…, the constant eq 17 rounds to 0.418 (docs/physics.md §2).
 pub const EQ17_CONSTANT: f64 = 0.418_255_821_036_509_3;
 
 /// Tensile cutoffs closer to x = 0 than this fraction of the elastic x_max are not watched for: the

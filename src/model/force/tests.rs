@@ -23,7 +23,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 #[test]
 fn eq17_constant_is_exact() {
-    // ½·(4/5)^{4/5} = 0.418255821036509… (physics notes §2; the paper prints 0.418).
+    // ½·(4/5)^{4/5} = 0.418255821036509… (docs/physics.md §2; the paper prints 0.418).
     assert!(rel(EQ17_CONSTANT, 0.5 * 0.8f64.powf(0.8)) < 2e-16);
     assert!((EQ17_CONSTANT - 0.418).abs() < 3e-4);
 }

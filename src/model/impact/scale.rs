@@ -16,7 +16,7 @@ pub(crate) struct Scales {
     pub f: f64,
     /// x_e/(m·v₀²), 1/N: dV/dT = −accel·F.
     pub accel: f64,
-    /// The elastic contact time in units of `t` (eq 7, physics notes §3).
+    /// The elastic contact time in units of `t` (eq 7, docs/physics.md §3).
     pub t_contact: f64,
     /// Reduced mass m, kg.
     pub mass: f64,
@@ -49,7 +49,7 @@ impl Scales {
     }
 }
 
-/// The elastic contact time in units of x_e/v₀: 2·B(1/(n+1), ½)/(n+1) (eq 7, physics notes §3),
+/// The elastic contact time in units of x_e/v₀: 2·B(1/(n+1), ½)/(n+1) (eq 7, docs/physics.md §3),
 /// with the sphere's (4/5)·B(2/5, ½) and the linear spring's π spelled out (no ln Γ per solve).
 fn elastic_contact_time(n: f64) -> f64 {
     if n == 1.5 {

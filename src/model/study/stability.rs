@@ -22,7 +22,7 @@ pub const STABLE_DRIFT: f64 = 0.01;
 /// Energy error beyond which a solve counts as diverged when the largest stable step is measured.
 pub const DIVERGED_DRIFT: f64 = 0.5;
 
-/// Largest stable h·ω on the undamped oscillator ẍ = −ω²x (physics notes §4; Hairer–Wanner II §IV.2):
+/// Largest stable h·ω on the undamped oscillator ẍ = −ω²x (docs/physics.md §4; Hairer–Wanner II §IV.2):
 /// none for explicit Euler (it gains energy at every step), 2 for symplectic Euler and Verlet,
 /// 2√2 for RK4 (its stability region meets the imaginary axis at ±2√2 i).
 pub fn stability_bound(method: Method) -> Option<f64> {
@@ -33,7 +33,7 @@ pub fn stability_bound(method: Method) -> Option<f64> {
     }
 }
 
-/// ω at the elastic maximum compression, √(n·k·x_maxⁿ⁻¹/m), rad/s: the stiffest point of the impact (physics notes §4).
+/// ω at the elastic maximum compression, √(n·k·x_maxⁿ⁻¹/m), rad/s: the stiffest point of the impact (docs/physics.md §4).
 pub fn peak_angular_frequency(params: &ImpactParams) -> f64 {
     let x_max = params.law.max_approach(params.mass, params.v0);
     params.law.angular_frequency(params.mass, x_max)

@@ -1,5 +1,4 @@
 //! Test systems shared by the `ode_*` integration tests.
-#![allow(dead_code)]
 
 use hertz_tui::model::ode::{Method, OdeSystem, Options, State, integrate};
 use nalgebra::Matrix2;

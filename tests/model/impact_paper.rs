@@ -5,7 +5,7 @@
 //! reference at rtol 1e-12, cross-checked against an independent DOP853 in `impact_crosscheck`),
 //! then compared with the paper's printed figure. Where the paper's rounding explains the figure,
 //! the test says so by checking the rounding; where it does not, the difference is written down
-//! and pinned (physics notes §2: trust the exact solution).
+//! and pinned (docs/physics.md §2: trust the exact solution).
 
 use hertz_tui::model::PowerLaw;
 use hertz_tui::model::force::dry_friction::DryFriction;
@@ -40,7 +40,7 @@ fn fig4() -> ImpactParams {
     }
 }
 
-/// The unrounded mass of Table 1's R = 10 mm steel sphere: (4/3)π·0.01³·7800 kg (physics notes §2).
+/// The unrounded mass of Table 1's R = 10 mm steel sphere: (4/3)π·0.01³·7800 kg (docs/physics.md §2).
 const UNROUNDED_MASS: f64 = 4.0 / 3.0 * std::f64::consts::PI * 1e-6 * 7800.0;
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -111,7 +111,7 @@ fn fig5_hunt_crossley() {
     assert!(rounds_to(s.f_max, 367.0, 3));
     assert!(rounds_to(s.v_out, 0.21, 2));
     assert!((rel(s.t_contact, 9.2e-5) - 0.0205).abs() < 1e-3);
-    // The realized restitution is 0.712, not the e = 0.6 put in (physics notes §3): the paper's
+    // The realized restitution is 0.712, not the e = 0.6 put in (docs/physics.md §3): the paper's
     // "post-impact velocities are larger than v₀e" is this.
     assert!((s.e_out - 0.711_950_179_577_866).abs() < 1e-12);
     // The integrator agrees with the energy integral.
@@ -144,7 +144,7 @@ fn fig5_proposed_model() {
     // x_max = 7.6105e-6 m (0.13 % below the printed 7.62, which is not its rounding), F_max =
     // 328.51 N and t = 8.287e-5 s (both round to the paper's). The realized exit is v_out =
     // 0.1857 m/s (e_out = 0.619) at x = 2.373 µm: the trajectory does not pass through
-    // (x_pl, −v₀e) = (2.3 µm, −0.18 m/s) that b was calibrated from (physics notes §3).
+    // (x_pl, −v₀e) = (2.3 µm, −0.18 m/s) that b was calibrated from (docs/physics.md §3).
     let s = dop853(ForceModel::Proposed, &fig5(0.033));
     assert!(rel(s.x_max, 7.610_494_259_4e-6) < 1e-9, "{:e}", s.x_max);
     assert!(rel(s.f_max, 328.509_468_33) < 1e-9, "{}", s.f_max);
@@ -202,7 +202,7 @@ fn fig4_dry_friction() {
     assert_eq!(s.t_f_max, s.t_x_max);
     assert!(rel(s.t_contact, 1.437_212_206_712_726e-4) < 1e-11);
     // The realized restitution is 0.90749, not 0.9: eq 17 takes the elastic x_max, and loading
-    // with friction stops shorter (physics notes §3). Eq 16's identity with the realized x_max
+    // with friction stops shorter (docs/physics.md §3). Eq 16's identity with the realized x_max
     // gives 0.9074878; the compressive-only rule ends contact at x* = (P/k)² = 8.38 nm, where
     // k·x^{3/2} − P·x turns tensile, which leaves 3.5e-7 more exit speed (relative).
     assert!(rel(s.e_out, 0.907_488_161_893_353_8) < 1e-13, "{}", s.e_out);

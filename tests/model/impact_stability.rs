@@ -1,4 +1,4 @@
-//! Where methods fail, on purpose (physics notes §4): explicit Euler gains energy; every fixed-step
+//! Where methods fail, on purpose (docs/physics.md §4): explicit Euler gains energy; every fixed-step
 //! method has a step beyond which it blows up, pinned against the h·ω theory; dry friction
 //! integrated across its sign(ẋ) switch loses accuracy that the split at ẋ = 0 keeps; adaptive
 //! errors track rtol; failures end as typed errors.
@@ -47,7 +47,7 @@ fn fixed(method: Method, dt: f64) -> SolveOptions {
     }
 }
 
-/// ω at the elastic x_max, √(n·k·x_maxⁿ⁻¹/m): the stiffest point of the impact (physics notes §4).
+/// ω at the elastic x_max, √(n·k·x_maxⁿ⁻¹/m): the stiffest point of the impact (docs/physics.md §4).
 fn omega_max(p: &ImpactParams) -> f64 {
     let x_max = p.law.max_approach(p.mass, p.v0);
     (p.law.n * p.law.k * x_max.powf(p.law.n - 1.0) / p.mass).sqrt()
@@ -106,7 +106,7 @@ fn blow_up(method: Method, p: &ImpactParams, from: f64) -> f64 {
 
 #[test]
 fn blow_up_steps_of_the_linear_spring_match_the_theory() {
-    // n = 1: ω is the same everywhere, so the linear theory is exact (physics notes §4).
+    // n = 1: ω is the same everywhere, so the linear theory is exact (docs/physics.md §4).
     // - RK4 is dissipative for h·ω < 2√2 (|R(iy)| < 1), so energy can only grow beyond the bound;
     //   the contact then lasts ~1 step, and growth past 50 % needs 15 % more: 1.15 × 2√2.
     // - Verlet and symplectic Euler stay bounded below 2, but their energy error there is the

@@ -218,7 +218,7 @@ fn table_1_aluminium_contact_radius_is_a_misprint() {
 }
 
 /// Tolerance of Table 2: the paper fits F = a·xⁿ + c over a force range it does not state
-/// (physics notes §2). `model::cylinder::scene_fit` fits over [F_top/10, F_top], F_top = min(F_max,
+/// (docs/physics.md §2). `model::cylinder::scene_fit` fits over [F_top/10, F_top], F_top = min(F_max,
 /// the force where p₀ reaches 1.1·σ_y), which reproduces the table to 2 %.
 const TABLE_2_TOLERANCE: f64 = 0.02;
 

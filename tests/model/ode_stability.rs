@@ -1,14 +1,12 @@
 //! Where methods fail, on purpose: linear stability of the fixed-step methods on ẍ = −ω²x
 //! against theory, stiffness, a discontinuous right-hand side, and failures returned as errors.
 
-mod ode_common;
-
 use std::f64::consts::{FRAC_PI_4, PI, SQRT_2};
 
+use crate::ode_common::{Friction, Harmonic, adaptive, fixed};
 use hertz_tui::model::ode::{
     Direction, Event, Method, OdeError, OdeSystem, Options, State, Stop, integrate,
 };
-use ode_common::{Friction, Harmonic, adaptive, fixed};
 
 /// All states of a fixed-step run: the start of the first segment and every step end.
 fn trajectory(method: Method, sys: &mut dyn OdeSystem, y0: State, dt: f64, n: usize) -> Vec<State> {

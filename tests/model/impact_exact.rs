@@ -1,4 +1,4 @@
-//! The impact solver against exact solutions (physics notes §3): adaptive methods at tight
+//! The impact solver against exact solutions (docs/physics.md §3): adaptive methods at tight
 //! tolerance to 1e-9 relative, `auto` reporting the exact numbers, and the convergence order of
 //! every fixed-step method.
 
@@ -207,7 +207,7 @@ fn proposed_model_without_plastic_indentation_is_the_exact_elastic_impact() {
 }
 
 /// Velocity at t = t_c/4 from the trajectory, relative error against the exact elastic velocity
-/// there (t(x) by the incomplete beta function, physics notes §3, inverted by bisection).
+/// there (t(x) by the incomplete beta function, docs/physics.md §3, inverted by bisection).
 fn velocity_error_at_quarter_time(method: Method, params: &ImpactParams, steps: f64) -> f64 {
     let (m, v0, law) = (params.mass, params.v0, params.law);
     let t_c = law.contact_time(m, v0);

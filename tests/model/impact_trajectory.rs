@@ -25,7 +25,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 #[test]
 fn elastic_curve_follows_the_incomplete_beta_solution() {
-    // t(x) = (x_max/v₀)·B(u; 1/(n+1), ½)/(n+1), u = (x/x_max)^{n+1} (physics notes §3): the
+    // t(x) = (x_max/v₀)·B(u; 1/(n+1), ½)/(n+1), u = (x/x_max)^{n+1} (docs/physics.md §3): the
     // trajectory of `auto` (exact numbers, DOP853 curves at rtol 1e-10) passes through
     // (t(x), x, v(x)) to 1e-9 of x_max, v₀ and F_max.
     let p = fig5(1.0);

@@ -1,0 +1,4 @@
+//! The command line driven as a user would: the real binary, its output parsed.
+
+mod commands;
+mod studies;

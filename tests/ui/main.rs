@@ -1,0 +1,4 @@
+//! The explorer: rendered into ratatui's TestBackend, and the real binary driven in tmux.
+
+mod e2e_tmux;
+mod render;
