@@ -1,6 +1,6 @@
 //! The elastic power law F = k·xⁿ (eq 1) and the exact impact it produces (docs/physics.md §3).
 
-use statrs::function::beta::{beta, beta_reg};
+use super::numeric::beta::{beta, beta_reg};
 
 use super::error::{ModelError, require, require_positive};
 

@@ -123,7 +123,7 @@ pub fn gauss_legendre_6(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use statrs::function::beta::beta;
+    use crate::model::numeric::beta::beta;
 
     #[test]
     fn four_point_gauss_legendre_is_exact_to_degree_seven() {

@@ -1,3 +1,5 @@
-//! Scalar numerics shared by the layers above: root bracketing and one-dimensional maximisation.
+//! Scalar numerics shared by the layers above: root bracketing, one-dimensional maximisation and
+//! the beta functions of the power-law impact.
 
+pub mod beta;
 pub mod roots;
