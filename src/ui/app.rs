@@ -4,6 +4,7 @@ use std::time::{Duration, Instant};
 
 use tui_input::Input;
 
+use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::ode::Method;
 use crate::model::presets::Registry;
@@ -131,7 +132,7 @@ pub struct App {
     pub scene_error: Option<ModelError>,
     pub valid: Option<Valid>,
     pub solutions: Solutions,
-    pub(super) checked: [bool; 5],
+    pub(super) checked: [bool; LAW_COUNT],
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -162,16 +163,13 @@ pub struct App {
 }
 
 pub(super) fn model_index(model: ForceModel) -> usize {
-    ForceModel::ALL
-        .iter()
-        .position(|&m| m == model)
-        .unwrap_or_default()
+    model.index()
 }
 
 impl App {
     /// The explorer on `scene`, with the solves of the checked models queued.
     pub fn new(scene: Scene, registry: Registry, marker: MarkerStyle, theme: Theme) -> App {
-        let mut checked = [false; 5];
+        let mut checked = [false; LAW_COUNT];
         for model in DEFAULT_CHECKED {
             checked[model_index(model)] = true;
         }

@@ -124,7 +124,7 @@ fn scene_edits_elsewhere_study_nothing_until_the_tab_opens() {
     }
     // A new focus is a new model to measure; a rtol change moves only the explorer's point.
     key(&mut a, KeyCode::Char(']'));
-    assert_eq!(a.focused, ForceModel::HuntCrossley);
+    assert_eq!(a.focused, ForceModel::ALL[ForceModel::Proposed.index() + 1]);
     assert_eq!(
         kinds(&mut a),
         [StudyKind::WorkPrecision, StudyKind::Current]

@@ -6,6 +6,7 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::model::force::LAW_COUNT;
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
 
@@ -42,18 +43,24 @@ struct Slot {
     shown: Option<SolveResult>,
 }
 
-/// Results per model, with the bookkeeping of requests in flight.
-#[derive(Debug, Clone, Default)]
+/// Results per model (one slot per row of the law table), with the bookkeeping of requests in flight.
+#[derive(Debug, Clone)]
 pub struct Solutions {
-    slots: [Slot; 5],
+    slots: [Slot; LAW_COUNT],
     last_generation: u64,
 }
 
+impl Default for Solutions {
+    fn default() -> Self {
+        Solutions {
+            slots: std::array::from_fn(|_| Slot::default()),
+            last_generation: 0,
+        }
+    }
+}
+
 fn index(model: ForceModel) -> usize {
-    ForceModel::ALL
-        .iter()
-        .position(|&m| m == model)
-        .unwrap_or_default()
+    model.index()
 }
 
 impl Solutions {

@@ -9,14 +9,14 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
 
-use super::studies::{StudyJob, StudyOutcome, run};
+use super::studies::{StudyJob, StudyKind, StudyOutcome, run};
 use super::worker::panic_message;
 
 /// A report of the study worker: an outcome, or the message of a panic (a bug; the worker stops).
 pub type StudyReport = Result<StudyOutcome, String>;
 
 /// The generation of the latest request of every kind.
-type Latest = Arc<[AtomicU64; 5]>;
+type Latest = Arc<[AtomicU64; StudyKind::ALL.len()]>;
 
 /// Handle of the study thread; dropping it ends the thread after the current study.
 pub struct StudyWorker {
@@ -102,7 +102,7 @@ fn take_next(queue: &mut Vec<StudyJob>) -> Option<StudyJob> {
 mod tests {
     use super::*;
     use crate::model::ForceModel;
-    use crate::ui::studies::{StudyKind, StudySpec};
+    use crate::ui::studies::StudySpec;
     use crate::ui::testing::fig5_params;
 
     fn kinds(queue: &[StudyJob]) -> Vec<StudyKind> {

@@ -19,14 +19,19 @@ pub enum LinePattern {
 }
 
 impl LinePattern {
+    /// Models beyond the paper's five cycle through the patterns; with the colours cycling over a
+    /// list of another length, every model gets its own (colour, pattern) pair.
     pub fn of(model: ForceModel) -> LinePattern {
-        match model {
-            ForceModel::Proposed => LinePattern::Solid,
-            ForceModel::HuntCrossley => LinePattern::Dotted,
-            ForceModel::LankaraniNikravesh => LinePattern::Dashed,
-            ForceModel::Quasistatic => LinePattern::DashDot,
-            ForceModel::DryFriction => LinePattern::LongDash,
-        }
+        const PATTERNS: [LinePattern; 7] = [
+            LinePattern::Solid,
+            LinePattern::Dotted,
+            LinePattern::Dashed,
+            LinePattern::DashDot,
+            LinePattern::LongDash,
+            LinePattern::ShortDash,
+            LinePattern::DashDotDot,
+        ];
+        PATTERNS[style_index(model) % PATTERNS.len()]
     }
 
     /// The pattern of an integration method (work-precision and stability views): seven
@@ -68,6 +73,26 @@ impl LinePattern {
             LinePattern::DashDotDot => &[(7.0, 3.0), (0.0, 3.0), (0.0, 3.0)],
         }
     }
+}
+
+/// The paper's Fig. 5 styles first (proposed solid yellow, Hunt–Crossley dotted, Lankarani–Nikravesh
+/// dashed, then elastic Hertz and dry friction), then the other laws in table order.
+fn style_index(model: ForceModel) -> usize {
+    const PAPER: [ForceModel; 5] = [
+        ForceModel::Proposed,
+        ForceModel::HuntCrossley,
+        ForceModel::LankaraniNikravesh,
+        ForceModel::Quasistatic,
+        ForceModel::DryFriction,
+    ];
+    PAPER.iter().position(|&m| m == model).unwrap_or_else(|| {
+        PAPER.len()
+            + ForceModel::ALL
+                .iter()
+                .filter(|m| !PAPER.contains(m))
+                .position(|&m| m == model)
+                .unwrap_or_default()
+    })
 }
 
 /// What a piece of text is, for styling.
@@ -133,13 +158,17 @@ impl Theme {
         if !self.color {
             return Color::Reset;
         }
-        match model {
-            ForceModel::Proposed => Color::Yellow,
-            ForceModel::HuntCrossley => Color::LightCyan,
-            ForceModel::LankaraniNikravesh => Color::LightMagenta,
-            ForceModel::Quasistatic => Color::LightBlue,
-            ForceModel::DryFriction => Color::LightGreen,
-        }
+        const COLORS: [Color; 8] = [
+            Color::Yellow,
+            Color::LightCyan,
+            Color::LightMagenta,
+            Color::LightBlue,
+            Color::LightGreen,
+            Color::LightRed,
+            Color::Cyan,
+            Color::Magenta,
+        ];
+        COLORS[style_index(model) % COLORS.len()]
     }
 
     pub fn model_style(self, model: ForceModel) -> Style {
@@ -185,15 +214,32 @@ mod tests {
     }
 
     #[test]
-    fn models_differ_in_colour_and_pattern() {
+    fn models_differ_in_colour_or_pattern_and_the_paper_five_in_both() {
         let theme = Theme { color: true };
+        let style = |m: ForceModel| (theme.model_color(m), LinePattern::of(m).sample());
         for (i, a) in ForceModel::ALL.iter().enumerate() {
             for b in &ForceModel::ALL[i + 1..] {
-                assert_ne!(theme.model_color(*a), theme.model_color(*b));
-                assert_ne!(LinePattern::of(*a), LinePattern::of(*b));
-                assert_ne!(LinePattern::of(*a).sample(), LinePattern::of(*b).sample());
+                assert_ne!(style(*a), style(*b), "{a} {b}");
             }
         }
+        let paper = [
+            ForceModel::Quasistatic,
+            ForceModel::DryFriction,
+            ForceModel::Proposed,
+            ForceModel::HuntCrossley,
+            ForceModel::LankaraniNikravesh,
+        ];
+        for (i, a) in paper.iter().enumerate() {
+            for b in &paper[i + 1..] {
+                assert_ne!(theme.model_color(*a), theme.model_color(*b));
+                assert_ne!(LinePattern::of(*a), LinePattern::of(*b));
+            }
+        }
+        assert_eq!(theme.model_color(ForceModel::Proposed), Color::Yellow);
+        assert_eq!(
+            LinePattern::of(ForceModel::HuntCrossley),
+            LinePattern::Dotted
+        );
     }
 
     #[test]

@@ -10,6 +10,7 @@ mod impact_paper;
 mod impact_props;
 mod impact_stability;
 mod impact_trajectory;
+mod laws_viscous;
 mod ode_convergence;
 mod ode_crosscheck;
 mod ode_events;

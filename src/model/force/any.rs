@@ -1,88 +1,195 @@
-//! One value for any of the five laws, dispatching statically (no boxing in the solver's hot loop).
+//! One value for any law of the table, dispatching statically (no boxing in the solver's hot loop),
+//! and the damping-parameter API: each law's damping from the scene's e, or an explicit value.
 
 use super::dry_friction::DryFriction;
 use super::elastic::Elastic;
+use super::hertz_viscous::HertzViscous;
 use super::hysteresis::Hysteresis;
+use super::kelvin_voigt::KelvinVoigt;
 use super::law::{ContactEnd, ForceLaw, Phase};
 use super::proposed::Proposed;
+use super::table::{ContactRule, DampingParam, Kind};
 use super::{ForceModel, ImpactParams};
-use crate::model::error::ModelError;
+use crate::model::error::{ModelError, require};
 use crate::model::exact::ExactImpact;
 
-/// Any of the paper's five force laws.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum AnyLaw {
-    Elastic(Elastic),
-    DryFriction(DryFriction),
-    Proposed(Proposed),
-    Hysteresis(Hysteresis),
+/// Something done with a law of a concrete type (the solver monomorphises on it).
+pub trait LawVisitor {
+    type Output;
+    fn visit<L: ForceLaw>(self, law: &L) -> Self::Output;
 }
 
-impl AnyLaw {
-    /// The law `model` with parameters from `params`, after validating them.
-    pub fn new(model: ForceModel, params: &ImpactParams) -> Result<Self, ModelError> {
-        params.validate()?;
-        Ok(match model {
-            ForceModel::Quasistatic => AnyLaw::Elastic(Elastic::new(params)),
-            ForceModel::DryFriction => AnyLaw::DryFriction(DryFriction::new(params)),
-            ForceModel::Proposed => AnyLaw::Proposed(Proposed::new(params)),
-            ForceModel::HuntCrossley => AnyLaw::Hysteresis(Hysteresis::hunt_crossley(params)),
-            ForceModel::LankaraniNikravesh => {
-                AnyLaw::Hysteresis(Hysteresis::lankarani_nikravesh(params))
+/// The law files behind the table's [`Kind`]s: adding a law with its own equations adds one line
+/// here (and one file, and one row of [`super::table::LAWS`]).
+macro_rules! any_law {
+    ($($variant:ident($ty:ty)),* $(,)?) => {
+        /// Any law of the table.
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum AnyLaw {
+            $($variant($ty)),*
+        }
+
+        impl AnyLaw {
+            /// Calls `visitor` with the concrete law.
+            pub fn visit<V: LawVisitor>(&self, visitor: V) -> V::Output {
+                match self {
+                    $(AnyLaw::$variant(law) => visitor.visit(law)),*
+                }
             }
-        })
-    }
-}
+        }
 
-macro_rules! dispatch {
-    ($self:ident, $law:ident => $body:expr) => {
-        match $self {
-            AnyLaw::Elastic($law) => $body,
-            AnyLaw::DryFriction($law) => $body,
-            AnyLaw::Proposed($law) => $body,
-            AnyLaw::Hysteresis($law) => $body,
+        impl ForceLaw for AnyLaw {
+            fn model(&self) -> ForceModel {
+                match self {
+                    $(AnyLaw::$variant(l) => l.model()),*
+                }
+            }
+
+            fn params(&self) -> &ImpactParams {
+                match self {
+                    $(AnyLaw::$variant(l) => l.params()),*
+                }
+            }
+
+            fn phase_force(&self, x: f64, v: f64, phase: Phase) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.phase_force(x, v, phase)),*
+                }
+            }
+
+            fn dissipative_force(&self, x: f64, v: f64, phase: Phase) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.dissipative_force(x, v, phase)),*
+                }
+            }
+
+            fn partials(&self, x: f64, v: f64, phase: Phase) -> (f64, f64) {
+                match self {
+                    $(AnyLaw::$variant(l) => l.partials(x, v, phase)),*
+                }
+            }
+
+            fn contact_end(&self) -> ContactEnd {
+                match self {
+                    $(AnyLaw::$variant(l) => l.contact_end()),*
+                }
+            }
+
+            fn switches_at_max_compression(&self) -> bool {
+                match self {
+                    $(AnyLaw::$variant(l) => l.switches_at_max_compression()),*
+                }
+            }
+
+            fn may_turn_tensile(&self) -> bool {
+                match self {
+                    $(AnyLaw::$variant(l) => l.may_turn_tensile()),*
+                }
+            }
+
+            fn tension(&self, x: f64, v: f64) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.tension(x, v)),*
+                }
+            }
+
+            fn exact(&self, rtol: f64) -> Option<ExactImpact> {
+                match self {
+                    $(AnyLaw::$variant(l) => l.exact(rtol)),*
+                }
+            }
         }
     };
 }
 
-impl ForceLaw for AnyLaw {
-    fn model(&self) -> ForceModel {
-        dispatch!(self, l => l.model())
+any_law! {
+    Elastic(Elastic),
+    DryFriction(DryFriction),
+    Proposed(Proposed),
+    Hysteresis(Hysteresis),
+    HertzViscous(HertzViscous),
+    KelvinVoigt(KelvinVoigt),
+}
+
+/// A law's damping parameter and the value in use.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Damping {
+    pub param: DampingParam,
+    /// SI, in `param.unit`.
+    pub value: f64,
+}
+
+impl AnyLaw {
+    /// The law `model` with parameters from `params`, its damping from the scene's e by the law's
+    /// own rule, after validating them.
+    pub fn new(model: ForceModel, params: &ImpactParams) -> Result<Self, ModelError> {
+        params.validate()?;
+        Ok(Self::build(model, params, None))
     }
 
-    fn params(&self) -> &ImpactParams {
-        dispatch!(self, l => l.params())
+    /// The law `model` with its damping parameter set to `value` (χ, P, b, γ or c, SI) instead of
+    /// the value the scene's e gives. Refused for a law without a damping parameter, and for a
+    /// value that is not finite and ≥ 0.
+    pub fn with_damping(
+        model: ForceModel,
+        params: &ImpactParams,
+        value: f64,
+    ) -> Result<Self, ModelError> {
+        params.validate()?;
+        let Some(param) = model.spec().damping else {
+            return Err(ModelError::OutOfDomain {
+                formula: "damping parameter",
+                detail: format!("{model} has no damping parameter"),
+            });
+        };
+        require(param.symbol, value, "a finite number ≥ 0", |d| d >= 0.0)?;
+        Ok(Self::build(model, params, Some(value)))
     }
 
-    fn phase_force(&self, x: f64, v: f64, phase: Phase) -> f64 {
-        dispatch!(self, l => l.phase_force(x, v, phase))
+    fn build(model: ForceModel, params: &ImpactParams, damping: Option<f64>) -> Self {
+        let spec = model.spec();
+        let tension_allowed = spec.contact == ContactRule::TensionAllowed;
+        match spec.kind {
+            Kind::Elastic => AnyLaw::Elastic(Elastic::new(params)),
+            Kind::DryFriction => AnyLaw::DryFriction(match damping {
+                Some(p) => DryFriction::with_p(params, p),
+                None => DryFriction::new(params),
+            }),
+            Kind::Proposed => AnyLaw::Proposed(match damping {
+                Some(b) => Proposed::with_b(params, b),
+                None => Proposed::new(params),
+            }),
+            Kind::HuntCrossley(chi) => AnyLaw::Hysteresis(Hysteresis::with_chi(
+                model,
+                params,
+                damping.unwrap_or_else(|| chi(params.restitution)),
+            )),
+            Kind::HertzViscous => AnyLaw::HertzViscous(HertzViscous::new(
+                model,
+                params,
+                damping.unwrap_or_else(|| HertzViscous::default_gamma(params)),
+                tension_allowed,
+            )),
+            Kind::KelvinVoigt => AnyLaw::KelvinVoigt(KelvinVoigt::new(
+                model,
+                params,
+                damping.unwrap_or_else(|| KelvinVoigt::default_c(params)),
+                tension_allowed,
+            )),
+        }
     }
 
-    fn dissipative_force(&self, x: f64, v: f64, phase: Phase) -> f64 {
-        dispatch!(self, l => l.dissipative_force(x, v, phase))
-    }
-
-    fn partials(&self, x: f64, v: f64, phase: Phase) -> (f64, f64) {
-        dispatch!(self, l => l.partials(x, v, phase))
-    }
-
-    fn contact_end(&self) -> ContactEnd {
-        dispatch!(self, l => l.contact_end())
-    }
-
-    fn switches_at_max_compression(&self) -> bool {
-        dispatch!(self, l => l.switches_at_max_compression())
-    }
-
-    fn may_turn_tensile(&self) -> bool {
-        dispatch!(self, l => l.may_turn_tensile())
-    }
-
-    fn tension(&self, x: f64, v: f64) -> f64 {
-        dispatch!(self, l => l.tension(x, v))
-    }
-
-    fn exact(&self, rtol: f64) -> Option<ExactImpact> {
-        dispatch!(self, l => l.exact(rtol))
+    /// The damping parameter in use, `None` for a law without one.
+    pub fn damping(&self) -> Option<Damping> {
+        let param = self.model().spec().damping?;
+        let value = match self {
+            AnyLaw::Elastic(_) => return None,
+            AnyLaw::DryFriction(l) => l.p(),
+            AnyLaw::Proposed(l) => l.b(),
+            AnyLaw::Hysteresis(l) => l.chi(),
+            AnyLaw::HertzViscous(l) => l.gamma(),
+            AnyLaw::KelvinVoigt(l) => l.c(),
+        };
+        Some(Damping { param, value })
     }
 }

@@ -29,6 +29,11 @@ impl DryFriction {
         } else {
             Self::eq16(params)
         };
+        Self::with_p(params, p)
+    }
+
+    /// The law with an explicit friction coefficient P, N/m; x* = (P/k)^{1/(n−1)}.
+    pub fn with_p(params: &ImpactParams, p: f64) -> Self {
         let (k, n) = (params.law.k, params.law.n);
         let x_e = params.law.max_approach(params.mass, params.v0);
         let x_cut = if n > 1.0 && p > 0.0 {

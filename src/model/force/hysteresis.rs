@@ -1,4 +1,5 @@
-//! The Hunt–Crossley family F = k·xⁿ·(1 + α·ẋ): Hunt–Crossley (eq 19) and Lankarani–Nikravesh (eq 20).
+//! The Hunt–Crossley family F = k·xⁿ·(1 + α·ẋ), α = χ(e)/v₀: Hunt–Crossley (eq 19),
+//! Lankarani–Nikravesh (eq 20) and the χ(e) rows of the law table (docs/physics.md §6.1).
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{ForceModel, ImpactParams};
@@ -37,6 +38,15 @@ impl Hysteresis {
         })
     }
 
+    /// The law `model` of the family with α = χ/v₀ (docs/physics.md §6.1).
+    pub fn with_chi(model: ForceModel, params: &ImpactParams, chi: f64) -> Self {
+        Hysteresis {
+            params: *params,
+            model,
+            alpha: chi / params.v0,
+        }
+    }
+
     /// Lankarani–Nikravesh: α = 3(1 − e²)/(4·v₀) (eq 20).
     pub fn lankarani_nikravesh(params: &ImpactParams) -> Self {
         let e = params.restitution;
@@ -50,6 +60,11 @@ impl Hysteresis {
     /// The damping factor α, s/m.
     pub fn alpha(&self) -> f64 {
         self.alpha
+    }
+
+    /// χ = α·v₀, dimensionless.
+    pub fn chi(&self) -> f64 {
+        self.alpha * self.params.v0
     }
 }
 

@@ -1,4 +1,5 @@
-//! The five contact-force laws of the paper (eqs 1, 15–20) behind one interface.
+//! The contact-force laws — the paper's five (eqs 1, 15–20) and those the field uses besides
+//! (docs/physics.md §6) — behind one interface, declared in one table ([`table::LAWS`]).
 
 use std::fmt;
 use std::str::FromStr;
@@ -11,12 +12,18 @@ use super::power_law::PowerLaw;
 pub mod any;
 pub mod dry_friction;
 pub mod elastic;
+pub mod hertz_viscous;
 pub mod hysteresis;
+pub mod kelvin_voigt;
 pub mod law;
 pub mod proposed;
+pub mod table;
 
-pub use any::AnyLaw;
+pub use any::{AnyLaw, Damping, LawVisitor};
 pub use law::{ContactEnd, ForceLaw, Phase};
+pub use table::{ContactRule, DampingParam, Family, LAW_COUNT, LAWS, LawSpec};
+
+use table::index_of;
 
 /// Inputs every force law draws its parameters from (the scene plus the quasistatic law).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -78,62 +85,91 @@ impl ImpactParams {
     }
 }
 
-/// Which force law.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum ForceModel {
-    /// Elastic Hertz F = k·xⁿ (eq 1).
-    Quasistatic,
-    /// F = k·xⁿ + P·x·sign(ẋ) (eqs 15–17).
-    DryFriction,
-    /// The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18).
-    Proposed,
-    /// F = k·xⁿ·(1 + (3/2)·a·ẋ), a = (1 − e)/v₀ (eq 19).
-    HuntCrossley,
-    /// F = k·xⁿ·(1 + 3(1 − e²)/4·ẋ/v₀) (eq 20).
-    LankaraniNikravesh,
-}
+/// Which force law: a row of [`LAWS`], the one table where laws are declared. The paper's five
+/// keep their names as constants (`ForceModel::HuntCrossley`) and their ids on the command line.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ForceModel(u8);
 
+#[allow(non_upper_case_globals)]
 impl ForceModel {
-    pub const ALL: [ForceModel; 5] = [
-        ForceModel::Quasistatic,
-        ForceModel::DryFriction,
-        ForceModel::Proposed,
-        ForceModel::HuntCrossley,
-        ForceModel::LankaraniNikravesh,
-    ];
+    /// Elastic Hertz F = k·xⁿ (eq 1).
+    pub const Quasistatic: ForceModel = ForceModel::with_id("quasistatic");
+    /// F = k·xⁿ + P·x·sign(ẋ) (eqs 15–17).
+    pub const DryFriction: ForceModel = ForceModel::with_id("dry-friction");
+    /// The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18).
+    pub const Proposed: ForceModel = ForceModel::with_id("proposed");
+    /// F = k·xⁿ·(1 + (3/2)·a·ẋ), a = (1 − e)/v₀ (eq 19).
+    pub const HuntCrossley: ForceModel = ForceModel::with_id("hunt-crossley");
+    /// F = k·xⁿ·(1 + 3(1 − e²)/4·ẋ/v₀) (eq 20).
+    pub const LankaraniNikravesh: ForceModel = ForceModel::with_id("lankarani-nikravesh");
 
-    /// The kebab-case name used on the command line and in JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            ForceModel::Quasistatic => "quasistatic",
-            ForceModel::DryFriction => "dry-friction",
-            ForceModel::Proposed => "proposed",
-            ForceModel::HuntCrossley => "hunt-crossley",
-            ForceModel::LankaraniNikravesh => "lankarani-nikravesh",
+    /// Every law, in table order.
+    pub const ALL: [ForceModel; LAW_COUNT] = {
+        let mut all = [ForceModel(0); LAW_COUNT];
+        let mut i = 0;
+        while i < LAW_COUNT {
+            all[i] = ForceModel(i as u8);
+            i += 1;
         }
+        all
+    };
+
+    /// The law with table id `id`; a missing id fails the build.
+    pub const fn with_id(id: &str) -> ForceModel {
+        ForceModel(index_of(id) as u8)
     }
 
-    /// The law of this model for `params` (validated).
+    /// Its row of the table.
+    pub fn spec(self) -> &'static LawSpec {
+        &LAWS[self.index()]
+    }
+
+    /// Its position in [`ForceModel::ALL`]: the index of every per-law array.
+    pub fn index(self) -> usize {
+        usize::from(self.0)
+    }
+
+    /// The kebab-case id used on the command line, in scene files and in JSON.
+    pub fn name(self) -> &'static str {
+        self.spec().id
+    }
+
+    /// The name shown in every pane, with the paper's equation number where it has one.
+    pub fn label(self) -> &'static str {
+        self.spec().label
+    }
+
+    /// An abbreviation for narrow panes.
+    pub fn short(self) -> &'static str {
+        self.spec().short
+    }
+
+    /// The law of this model for `params` (validated), its damping from the scene's e.
     pub fn law(self, params: &ImpactParams) -> Result<AnyLaw, ModelError> {
         AnyLaw::new(self, params)
     }
 
-    /// A human label with the paper's equation number.
-    pub fn label(self) -> &'static str {
-        match self {
-            ForceModel::Quasistatic => "Hertz, elastic (eq 1)",
-            ForceModel::DryFriction => "dry friction (eq 15)",
-            ForceModel::Proposed => "proposed viscous (eq 18)",
-            ForceModel::HuntCrossley => "Hunt–Crossley (eq 19)",
-            ForceModel::LankaraniNikravesh => "Lankarani–Nikravesh (eq 20)",
-        }
+    /// The law with its damping parameter set to `value` (see [`AnyLaw::with_damping`]).
+    pub fn law_with_damping(self, params: &ImpactParams, value: f64) -> Result<AnyLaw, ModelError> {
+        AnyLaw::with_damping(self, params, value)
+    }
+}
+
+impl fmt::Debug for ForceModel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "ForceModel({})", self.name())
     }
 }
 
 impl fmt::Display for ForceModel {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
+    }
+}
+
+impl Serialize for ForceModel {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
     }
 }
 

@@ -21,6 +21,11 @@ impl Proposed {
         }
     }
 
+    /// The law with an explicit damping factor b, N·s/mⁿ.
+    pub fn with_b(params: &ImpactParams, b: f64) -> Self {
+        Proposed { params: *params, b }
+    }
+
     /// The damping factor b, N·s/mⁿ.
     pub fn b(&self) -> f64 {
         self.b

@@ -7,7 +7,7 @@ use serde::Serialize;
 use thiserror::Error;
 
 use super::error::{ModelError, require, require_positive};
-use super::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams};
+use super::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams, LawVisitor};
 use super::ode::{Method, OdeError};
 
 /// Which solution path the caller asks for.
@@ -215,13 +215,25 @@ pub fn solve_law(law: &AnyLaw, opts: &SolveOptions) -> Result<ImpactSolution, Im
     let params = law.params();
     params.validate()?;
     let scales = scale::Scales::new(params);
-    let law = *law;
     // Monomorphise the solver per law: the force is evaluated in the integrators' inner loop.
-    match law {
-        AnyLaw::Elastic(l) => solve_with(&l, law, &scales, opts),
-        AnyLaw::DryFriction(l) => solve_with(&l, law, &scales, opts),
-        AnyLaw::Proposed(l) => solve_with(&l, law, &scales, opts),
-        AnyLaw::Hysteresis(l) => solve_with(&l, law, &scales, opts),
+    law.visit(Solve {
+        any: *law,
+        scales: &scales,
+        opts,
+    })
+}
+
+struct Solve<'a> {
+    any: AnyLaw,
+    scales: &'a scale::Scales,
+    opts: &'a SolveOptions,
+}
+
+impl LawVisitor for Solve<'_> {
+    type Output = Result<ImpactSolution, ImpactError>;
+
+    fn visit<L: ForceLaw>(self, law: &L) -> Self::Output {
+        solve_with(law, self.any, self.scales, self.opts)
     }
 }
 

@@ -27,13 +27,7 @@ pub fn model_name(model: ForceModel, width: usize) -> &'static str {
     if model.name().len() <= width {
         return model.name();
     }
-    match model {
-        ForceModel::Quasistatic => "Hertz",
-        ForceModel::DryFriction => "dry fr.",
-        ForceModel::Proposed => "proposed",
-        ForceModel::HuntCrossley => "H–C",
-        ForceModel::LankaraniNikravesh => "L–N",
-    }
+    model.short()
 }
 
 /// Word-wraps `text` to lines of at most `width` characters (long words are cut).

@@ -1,0 +1,313 @@
+//! The table of contact-force laws: the one place a law is declared (docs/physics.md §6).
+//!
+//! Everything that lists laws — `--model`, scene files, sweeps, the explorer's panes and arrays —
+//! iterates [`LAWS`] through [`super::ForceModel`]. A Hunt–Crossley-type law is one row with its
+//! χ(e); a law with its own equations is one file, one [`Kind`] variant and one row.
+
+/// Which kind of dissipation a law models; the Models pane groups laws by it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Family {
+    /// No dissipation.
+    Elastic,
+    /// F = k·xⁿ plus a friction term switching with sign(ẋ).
+    Friction,
+    /// F = elastic part plus a damping coefficient times ẋ.
+    Viscous,
+    /// F = k·xⁿ·(1 + χ(e)·ẋ/v₀), the Hunt–Crossley family.
+    HuntCrossley,
+}
+
+impl Family {
+    /// The group heading in the Models pane.
+    pub fn title(self) -> &'static str {
+        match self {
+            Family::Elastic => "elastic",
+            Family::Friction => "friction",
+            Family::Viscous => "viscous damping",
+            Family::HuntCrossley => "Hunt–Crossley family",
+        }
+    }
+}
+
+/// The damping parameter of a law: what calibration solves for and what `solve` reports.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct DampingParam {
+    /// Its symbol, e.g. `χ`.
+    pub symbol: &'static str,
+    /// The key it is reported under in JSON, e.g. `chi`.
+    pub key: &'static str,
+    /// SI unit; `1` for a pure number.
+    pub unit: &'static str,
+}
+
+/// How contact ends (besides the compressive-only cutoff that [`ContactRule::ApproachZero`] laws
+/// apply where they would turn tensile, see [`super::law`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ContactRule {
+    /// At x = 0; where the law would pull (F < 0) first, contact ends there.
+    ApproachZero,
+    /// Where F returns to 0 (F ≥ 0 enforced): a residual approach is left.
+    ForceZero,
+    /// At x = 0, the law's tensile force acting on the way out (a bilateral spring–damper).
+    TensionAllowed,
+}
+
+impl ContactRule {
+    pub fn describe(self) -> &'static str {
+        match self {
+            ContactRule::ApproachZero => "ends at x = 0 (or where F would turn tensile)",
+            ContactRule::ForceZero => "ends where F returns to 0 (F ≥ 0)",
+            ContactRule::TensionAllowed => "ends at x = 0, tension allowed",
+        }
+    }
+}
+
+/// The equations behind a row: which law file builds it.
+#[derive(Debug, Clone, Copy)]
+pub enum Kind {
+    Elastic,
+    DryFriction,
+    Proposed,
+    /// F = k·xⁿ·(1 + χ(e)·ẋ/v₀) with this χ(e).
+    HuntCrossley(fn(f64) -> f64),
+    HertzViscous,
+    KelvinVoigt,
+}
+
+/// One law of the table.
+#[derive(Debug, Clone, Copy)]
+pub struct LawSpec {
+    /// The id of `--model` and of scene files, kebab-case.
+    pub id: &'static str,
+    /// The name shown in every pane.
+    pub label: &'static str,
+    /// An abbreviation for narrow panes.
+    pub short: &'static str,
+    /// Its equation or published source.
+    pub source: &'static str,
+    pub family: Family,
+    /// The damping parameter, `None` for a law without one.
+    pub damping: Option<DampingParam>,
+    pub contact: ContactRule,
+    pub kind: Kind,
+}
+
+const CHI: DampingParam = DampingParam {
+    symbol: "χ",
+    key: "chi",
+    unit: "1",
+};
+
+const GAMMA: DampingParam = DampingParam {
+    symbol: "γ",
+    key: "gamma",
+    unit: "N·s/m^((n+1)/2)",
+};
+
+const KV_C: DampingParam = DampingParam {
+    symbol: "c",
+    key: "c",
+    unit: "N·s/m",
+};
+
+/// Every law, grouped by family; the paper's five keep their ids and their relative order.
+pub const LAWS: &[LawSpec] = &[
+    LawSpec {
+        id: "quasistatic",
+        label: "Hertz, elastic (eq 1)",
+        short: "Hertz",
+        source: "eq 1",
+        family: Family::Elastic,
+        damping: None,
+        contact: ContactRule::ApproachZero,
+        kind: Kind::Elastic,
+    },
+    LawSpec {
+        id: "dry-friction",
+        label: "dry friction (eq 15)",
+        short: "dry fr.",
+        source: "eqs 15–17",
+        family: Family::Friction,
+        damping: Some(DampingParam {
+            symbol: "P",
+            key: "p",
+            unit: "N/m",
+        }),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::DryFriction,
+    },
+    LawSpec {
+        id: "proposed",
+        label: "proposed viscous (eq 18)",
+        short: "proposed",
+        source: "eq 18",
+        family: Family::Viscous,
+        damping: Some(DampingParam {
+            symbol: "b",
+            key: "b",
+            unit: "N·s/m^n",
+        }),
+        contact: ContactRule::ForceZero,
+        kind: Kind::Proposed,
+    },
+    LawSpec {
+        id: "hertz-viscous",
+        label: "Hertz–viscous F≥0",
+        short: "H+visc",
+        source: "Tsuji, Tanaka & Ishida, Powder Technol. 71 (1992); docs/physics.md §6.2",
+        family: Family::Viscous,
+        damping: Some(GAMMA),
+        contact: ContactRule::ForceZero,
+        kind: Kind::HertzViscous,
+    },
+    LawSpec {
+        id: "hertz-viscous-tension",
+        label: "Hertz–visc. tension",
+        short: "H+visc±",
+        source: "Tsuji, Tanaka & Ishida, Powder Technol. 71 (1992); docs/physics.md §6.2",
+        family: Family::Viscous,
+        damping: Some(GAMMA),
+        contact: ContactRule::TensionAllowed,
+        kind: Kind::HertzViscous,
+    },
+    LawSpec {
+        id: "kelvin-voigt",
+        label: "Kelvin–Voigt F≥0",
+        short: "K–V",
+        source: "linear spring–dashpot; docs/physics.md §6.3",
+        family: Family::Viscous,
+        damping: Some(KV_C),
+        contact: ContactRule::ForceZero,
+        kind: Kind::KelvinVoigt,
+    },
+    LawSpec {
+        id: "kelvin-voigt-tension",
+        label: "Kelvin–Voigt tension",
+        short: "K–V±",
+        source: "linear spring–dashpot; docs/physics.md §6.3",
+        family: Family::Viscous,
+        damping: Some(KV_C),
+        contact: ContactRule::TensionAllowed,
+        kind: Kind::KelvinVoigt,
+    },
+    LawSpec {
+        id: "hunt-crossley",
+        label: "Hunt–Crossley (eq 19)",
+        short: "H–C",
+        source: "eq 19; Hunt & Crossley, J. Appl. Mech. 42 (1975)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 1.5 * (1.0 - e)),
+    },
+    LawSpec {
+        id: "lankarani-nikravesh",
+        label: "Lankarani–Nikravesh (eq 20)",
+        short: "L–N",
+        source: "eq 20; Lankarani & Nikravesh, J. Mech. Des. 112 (1990)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e)),
+    },
+    LawSpec {
+        id: "herbert-mcwhannell",
+        label: "Herbert–McWhannell",
+        short: "H–McW",
+        source: "χ = 6(1−e)/((2e−1)² + 3); Herbert & McWhannell, J. Eng. Ind. 99 (1977)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
+    },
+    LawSpec {
+        id: "lee-wang",
+        label: "Lee–Wang",
+        short: "L–W",
+        source: "χ = 3(1−e)/4; Lee & Wang, J. Mech. Transm. Autom. Des. 105 (1983)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e)),
+    },
+    LawSpec {
+        id: "gonthier",
+        label: "Gonthier et al.",
+        short: "Gon.",
+        source: "χ = (1−e²)/e; Gonthier, McPhee, Lange & Piedbœuf, Multibody Syst. Dyn. 11 (2004)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| (1.0 - e * e) / e),
+    },
+    LawSpec {
+        id: "zhiying-qishao",
+        label: "Zhiying–Qishao",
+        short: "Z–Q",
+        source: "χ = (3/4)(1−e²)·e^{2(1−e)}; Zhiying & Qishao, Acta Mech. Sin. 22 (2006)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e) * e.powf(2.0 * (1.0 - e))),
+    },
+    LawSpec {
+        id: "flores",
+        label: "Flores et al.",
+        short: "Flo.",
+        source: "χ = 8(1−e)/(5e); Flores, Machado, Silva & Martins, Multibody Syst. Dyn. 25 (2011)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 1.6 * (1.0 - e) / e),
+    },
+    LawSpec {
+        id: "hu-guo",
+        label: "Hu–Guo",
+        short: "H–G",
+        source: "χ = 3(1−e)/(2e); Hu & Guo, Mech. Mach. Theory 85 (2015); docs/physics.md §6.1",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 1.5 * (1.0 - e) / e),
+    },
+    LawSpec {
+        id: "gharib-hurmuzlu",
+        label: "Gharib–Hurmuzlu",
+        short: "G–H",
+        source: "χ = 1/e − 1; Gharib & Hurmuzlu, J. Appl. Mech. 79 (2012)",
+        family: Family::HuntCrossley,
+        damping: Some(CHI),
+        contact: ContactRule::ApproachZero,
+        kind: Kind::HuntCrossley(|e| 1.0 / e - 1.0),
+    },
+];
+
+/// The number of laws: the size of every per-law array.
+pub const LAW_COUNT: usize = LAWS.len();
+
+/// The row whose id is `id`, at compile time (a missing id fails the build).
+pub const fn index_of(id: &str) -> usize {
+    let mut i = 0;
+    while i < LAW_COUNT {
+        if str_eq(LAWS[i].id, id) {
+            return i;
+        }
+        i += 1;
+    }
+    panic!("no law with this id in LAWS")
+}
+
+const fn str_eq(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
