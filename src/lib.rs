@@ -1,7 +1,8 @@
 //! hertz-tui: a terminal explorer of impact contact forces.
 //!
 //! `model` holds the physics and numerics (no UI); `ui` renders it; `cli` exposes it headless;
-//! `format` writes numbers and trajectories for both edges.
+//! `format` writes numbers and trajectories for both edges; `chart` describes a chart for the
+//! terminal and for figure files.
 //!
 //! The model layer on its own, reproducing the paper's Fig. 5 scene (a steel sphere R = 10 mm
 //! dropped at 0.3 m/s on a steel plate):
@@ -25,6 +26,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod chart;
 pub mod cli;
 pub mod format;
 pub mod model;

@@ -21,6 +21,7 @@ pub mod plot;
 pub mod render;
 mod runtime;
 pub mod solutions;
+pub mod stability_plot;
 pub mod studies;
 pub mod study_worker;
 pub mod sweep_plot;

@@ -1,11 +1,12 @@
 //! Chart data: the solver's dense output sampled at the chart's resolution, in display units,
-//! with the true peaks, and the dash patterns that keep curves apart without colour.
+//! with the true peaks, as a [`Chart`] for any back-end.
 
 use crate::model::ForceModel;
 use crate::model::impact::{ImpactSolution, Sample};
 
+use crate::chart::{Chart, Ink, Series as ChartSeries};
+
 use super::app::ChartKind;
-use super::theme::LinePattern;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
 
@@ -153,122 +154,46 @@ pub fn plot<K: Copy>(
     }
 }
 
-/// A curve cut into the pieces of a line pattern: drawn runs and single dots.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Pieces {
-    pub runs: Vec<Vec<(f64, f64)>>,
-    pub dots: Vec<(f64, f64)>,
+/// How one curve of a [`Plot`] is shown: its name, ink and glyph, and whether it is focused.
+pub struct Look {
+    pub name: String,
+    pub ink: Ink,
+    pub glyph: char,
+    pub focused: bool,
+    /// Each sample is a step of a fixed-step method (marked one by one).
+    pub steps: bool,
 }
 
-/// Largest gap between the points of a rastered run, in plot dots: one dot, so neighbours land in
-/// the same or adjacent dots on either axis and the line has no hole, and no thicker than a line.
-const RASTER_SPACING: f64 = 1.0;
-
-impl Pieces {
-    /// Every point the pattern draws, as one scatter: the runs filled in at most one plot dot
-    /// apart, then the single dots. One dataset per curve, rather than one per dash, keeps a chart
-    /// to a few canvas layers (ratatui allocates a whole grid per dataset).
-    pub fn raster(&self, dots_per_x: f64, dots_per_y: f64) -> Vec<(f64, f64)> {
-        let mut points = Vec::new();
-        for run in &self.runs {
-            points.extend(densify(run, dots_per_x, dots_per_y));
-        }
-        points.extend_from_slice(&self.dots);
-        points
-    }
-}
-
-/// `run` with points inserted so that neighbours are at most [`RASTER_SPACING`] plot dots apart.
-fn densify(run: &[(f64, f64)], dots_per_x: f64, dots_per_y: f64) -> Vec<(f64, f64)> {
-    let scaled =
-        dots_per_x > 0.0 && dots_per_y > 0.0 && dots_per_x.is_finite() && dots_per_y.is_finite();
-    if !scaled {
-        return run.to_vec();
-    }
-    let mut out = Vec::with_capacity(run.len());
-    for pair in run.windows(2) {
-        let (a, b) = (pair[0], pair[1]);
-        let length = ((b.0 - a.0) * dots_per_x).hypot((b.1 - a.1) * dots_per_y);
-        // A non-finite length (a point off to infinity) gets no fill: the ends only.
-        let steps = if length.is_finite() {
-            (length / RASTER_SPACING).ceil().clamp(1.0, 1e5) as usize
-        } else {
-            1
-        };
-        out.extend((0..steps).map(|k| {
-            let s = k as f64 / steps as f64;
-            (a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s)
-        }));
-    }
-    out.extend(run.last().copied());
-    out
-}
-
-/// Cuts `points` by `pattern`, measuring lengths in plot dots: `dots_per_x` and `dots_per_y` are
-/// the dots per display unit of each axis.
-pub fn dash(
-    points: &[(f64, f64)],
-    pattern: LinePattern,
-    dots_per_x: f64,
-    dots_per_y: f64,
-) -> Pieces {
-    let pieces = pattern.pieces();
-    if pieces.is_empty() || !(dots_per_x > 0.0 && dots_per_y > 0.0) {
-        return Pieces {
-            runs: vec![points.to_vec()],
-            dots: Vec::new(),
-        };
-    }
-    let mut out = Pieces::default();
-    let mut piece = 0;
-    // (drawing?, length left in this state)
-    let (mut drawing, mut left) = start_piece(pieces[0], &mut out, points.first().copied());
-    let mut run: Vec<(f64, f64)> = Vec::new();
-    if drawing {
-        run.extend(points.first().copied());
-    }
-    for pair in points.windows(2) {
-        let (a, b) = (pair[0], pair[1]);
-        let length = ((b.0 - a.0) * dots_per_x).hypot((b.1 - a.1) * dots_per_y);
-        let at = |s: f64| (a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s);
-        let mut done = 0.0;
-        while length - done > 1e-12 {
-            let step = left.min(length - done);
-            done += step;
-            left -= step;
-            let here = at(done / length);
-            if drawing {
-                run.push(here);
-            }
-            if left <= 1e-12 {
-                if drawing {
-                    out.runs.push(std::mem::take(&mut run));
-                    drawing = false;
-                    left = pieces[piece].1;
-                } else {
-                    piece = (piece + 1) % pieces.len();
-                    (drawing, left) = start_piece(pieces[piece], &mut out, Some(here));
-                    if drawing {
-                        run.push(here);
-                    }
+impl<K: Copy> Plot<K> {
+    /// The chart of this plot titled `title`, each curve shown as `look` says, in drawing order
+    /// (the focused curve last, so it lies on top).
+    pub fn into_chart(self, title: String, look: impl Fn(K) -> Look) -> Chart {
+        let mut series: Vec<ChartSeries> = self
+            .curves
+            .into_iter()
+            .map(|c| {
+                let look = look(c.model);
+                ChartSeries {
+                    name: look.name,
+                    ink: look.ink,
+                    glyph: look.glyph,
+                    runs: vec![c.points],
+                    focused: look.focused,
+                    peak: Some(c.peak),
+                    steps: look.steps,
                 }
-            }
+            })
+            .collect();
+        series.sort_by_key(|s| s.focused);
+        Chart {
+            title,
+            x: self.x.chart_axis(self.x_title),
+            y: self.y.chart_axis(self.y_title),
+            series,
+            marks: Vec::new(),
+            rules: Vec::new(),
+            notes: Vec::new(),
         }
-    }
-    if run.len() >= 2 {
-        out.runs.push(run);
-    }
-    out
-}
-
-/// Enters a (drawn, gap) piece at `here`: a dot piece draws its dot at once and starts its gap.
-fn start_piece(piece: (f64, f64), out: &mut Pieces, here: Option<(f64, f64)>) -> (bool, f64) {
-    let (drawn, gap) = piece;
-    if drawn > 0.0 {
-        (true, drawn)
-    } else {
-        out.dots.extend(here);
-        (false, gap.max(1.0))
     }
 }
 
@@ -333,68 +258,5 @@ mod tests {
         let p = plot(ChartKind::ForceTime, none, 5, 5);
         assert!(p.curves.is_empty());
         assert!(p.x.bounds[1] > p.x.bounds[0] && p.y.bounds[1] > p.y.bounds[0]);
-    }
-
-    fn length(run: &[(f64, f64)]) -> f64 {
-        run.windows(2)
-            .map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1))
-            .sum()
-    }
-
-    #[test]
-    fn dashes_follow_the_pattern_along_the_curve() {
-        // A straight line 100 dots long, as two segments.
-        let line = [(0.0, 0.0), (40.0, 0.0), (100.0, 0.0)];
-        let solid = dash(&line, LinePattern::Solid, 1.0, 1.0);
-        assert_eq!(solid.runs, vec![line.to_vec()]);
-        let dashed = dash(&line, LinePattern::Dashed, 1.0, 1.0);
-        // 5 on, 4 off: runs start every 9 dots: 0, 9, …, 99 → 12 runs (the last one cut short).
-        assert_eq!(dashed.runs.len(), 12);
-        assert!(
-            dashed.runs[..11]
-                .iter()
-                .all(|r| (length(r) - 5.0).abs() < 1e-9)
-        );
-        assert_eq!(dashed.runs[1][0], (9.0, 0.0));
-        // The run across the joint at x = 40 keeps the corner point.
-        assert!(dashed.runs.iter().any(|r| r.contains(&(40.0, 0.0))));
-        let dotted = dash(&line, LinePattern::Dotted, 1.0, 1.0);
-        assert!(dotted.runs.is_empty());
-        assert_eq!(dotted.dots.len(), 34, "a dot every 3 dots over 100");
-        assert_eq!(dotted.dots[1], (3.0, 0.0));
-        let dash_dot = dash(&line, LinePattern::DashDot, 1.0, 1.0);
-        assert!(!dash_dot.runs.is_empty() && !dash_dot.dots.is_empty());
-        assert_eq!(dash_dot.dots[0], (10.0, 0.0));
-    }
-
-    #[test]
-    fn rasters_leave_no_gap_of_a_dot_and_keep_the_single_dots() {
-        // A diagonal 10 dots across and 20 up, then a dot.
-        let pieces = Pieces {
-            runs: vec![vec![(0.0, 0.0), (10.0, 20.0)]],
-            dots: vec![(30.0, 0.0)],
-        };
-        let points = pieces.raster(1.0, 1.0);
-        assert_eq!(points.first(), Some(&(0.0, 0.0)));
-        assert_eq!(points[points.len() - 2], (10.0, 20.0));
-        assert_eq!(points.last(), Some(&(30.0, 0.0)));
-        for w in points[..points.len() - 1].windows(2) {
-            let gap = (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1);
-            assert!(gap <= RASTER_SPACING + 1e-12, "{gap}");
-        }
-        // The same line over 2 dots per unit needs twice the points.
-        let finer = pieces.raster(2.0, 2.0);
-        assert!(finer.len() > 2 * points.len() - 10);
-        // Without a scale, the points as they are.
-        assert_eq!(pieces.raster(0.0, 1.0).len(), 3);
-    }
-
-    #[test]
-    fn dash_lengths_are_measured_in_dots_not_data_units() {
-        // 1 data unit = 10 dots across: a 10-unit line is 100 dots long.
-        let line = [(0.0, 0.0), (10.0, 0.0)];
-        let dashed = dash(&line, LinePattern::Dashed, 10.0, 1.0);
-        assert_eq!(dashed.runs.len(), 12);
-        assert!((length(&dashed.runs[0]) - 0.5).abs() < 1e-12);
     }
 }

@@ -4,8 +4,13 @@
 use crate::model::ForceModel;
 use crate::model::study::sweep::SweepRow;
 
+use crate::chart::{Chart, Ink, Rule, Series, model_glyph};
+use crate::model::scene_key::SceneKey;
+
 use super::studies::SweepData;
-use super::sweep_settings::SweepOutput;
+use super::sweep_settings::{SweepOutput, key_symbol, key_unit};
+use super::ticks::{NiceAxis, log_axis, nice_axis};
+use super::units::{self, Unit};
 
 /// Whose line it is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,6 +66,118 @@ pub fn onset(data: &SweepData) -> Option<(f64, f64)> {
     data.rows
         .iter()
         .find_map(|r| r.quasistatic.map(|q| (q.v_yield, q.v_plastic)))
+}
+
+impl LineOf {
+    /// The line's name, ink and glyph.
+    pub fn look(self) -> (String, Ink, char) {
+        match self {
+            LineOf::Estimate => ("Hertz estimate".to_string(), Ink::Foreground, 'o'),
+            LineOf::Model(m) => (m.name().to_string(), Ink::Model(m), model_glyph(m)),
+        }
+    }
+}
+
+fn axis(lo: f64, hi: f64, unit: Unit, log: bool, max_labels: usize) -> NiceAxis {
+    if log {
+        log_axis(lo, hi, unit, max_labels)
+    } else {
+        nice_axis(lo, hi, unit, max_labels)
+    }
+}
+
+/// `symbol [unit]`, or the bare symbol of a dimensionless quantity.
+fn axis_title(symbol: &str, axis: &NiceAxis, unit: Unit) -> String {
+    let text = format!("{}{}", axis.prefix.symbol, unit.symbol);
+    if text.is_empty() {
+        symbol.to_string()
+    } else {
+        format!("{symbol} [{text}]")
+    }
+}
+
+/// The sweep chart of `output`, with at most `max_x` × `max_y` tick labels; `focused` is drawn
+/// last and bold. A v₀ sweep gets the yield-onset velocities as rules.
+pub fn chart(
+    data: &SweepData,
+    output: SweepOutput,
+    focused: Option<ForceModel>,
+    (max_x, max_y): (usize, usize),
+) -> Chart {
+    let spec = &data.spec;
+    let lines = lines(data, output);
+    let x_unit = key_unit(spec.key);
+    let y_unit = output.unit();
+    let (lo, hi) = (spec.from.min(spec.to), spec.from.max(spec.to));
+    let x = axis(lo, hi, x_unit, spec.log, max_x);
+    // The y axis includes 0, as the explorer's do: outputs are sizes, times, speeds, ratios.
+    let (mut y_lo, mut y_hi) = (0.0f64, 0.0f64);
+    for (_, v) in lines.iter().flat_map(|l| l.runs.iter().flatten()) {
+        y_lo = y_lo.min(*v);
+        y_hi = y_hi.max(*v);
+    }
+    let y = nice_axis(y_lo, y_hi, y_unit, max_y);
+    let to_display = |(px, py): &(f64, f64)| (x.to_display(*px), y.to_display(*py));
+    let mut series: Vec<Series> = lines
+        .iter()
+        .map(|line| {
+            let (name, ink, glyph) = line.of.look();
+            Series {
+                name,
+                ink,
+                glyph,
+                runs: line
+                    .runs
+                    .iter()
+                    .map(|run| run.iter().map(to_display).collect())
+                    .collect(),
+                focused: matches!(line.of, LineOf::Model(m) if Some(m) == focused),
+                peak: None,
+                steps: false,
+            }
+        })
+        .collect();
+    series.sort_by_key(|s| s.focused);
+    let mut rules = Vec::new();
+    if spec.key == SceneKey::V0
+        && let Some((v_yield, v_plastic)) = onset(data)
+    {
+        rules.push(Rule {
+            x: x.to_display(v_yield),
+            ink: Ink::Warning,
+            label: "v_y".into(),
+        });
+        rules.push(Rule {
+            x: x.to_display(v_plastic),
+            ink: Ink::Error,
+            label: "v_p".into(),
+        });
+    }
+    let symbol = key_symbol(spec.key);
+    Chart {
+        title: format!(
+            "{} against {} · {} points, {}",
+            output.symbol(),
+            symbol,
+            spec.points,
+            if spec.log { "log" } else { "linear" }
+        ),
+        x: x.chart_axis(axis_title(&symbol, &x, x_unit)),
+        y: y.chart_axis(axis_title(output.symbol(), &y, y_unit)),
+        series,
+        marks: Vec::new(),
+        rules,
+        notes: Vec::new(),
+    }
+}
+
+/// The onset velocities as a note: `v_y = … yield begins …, v_p = … fully plastic …`.
+pub fn onset_note(v_yield: f64, v_plastic: f64) -> String {
+    format!(
+        "v_y = {} yield begins (p₀ = 1.1·σ_y), v_p = {} fully plastic (2.8·σ_y)",
+        units::engineering(v_yield, units::METRE_PER_SECOND, 3),
+        units::engineering(v_plastic, units::METRE_PER_SECOND, 3)
+    )
 }
 
 /// How many points (or model solves) failed, and the first reason.

@@ -1,98 +1,18 @@
-//! Colours (16-colour palette only) and line patterns; `NO_COLOR` turns colour off.
+//! Colours (16-colour palette only) and the one place text styles are chosen; `NO_COLOR` turns
+//! colour off. Text is the terminal's own foreground, muted by DIM, never a fixed grey: both stay
+//! legible on dark and light backgrounds. Curves take the six ANSI hues (not their bright
+//! variants, which fade on white) and the foreground.
 
 use ratatui::style::{Color, Modifier, Style};
 
+use crate::chart::{Ink, style_index};
 use crate::model::ForceModel;
 use crate::model::ode::Method;
 
-/// How a model's curve is drawn, so that curves stay distinct without colour (the paper's Fig. 5
-/// draws the proposed model solid, Hunt–Crossley dotted and Lankarani–Nikravesh dashed).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LinePattern {
-    Solid,
-    Dotted,
-    Dashed,
-    DashDot,
-    LongDash,
-    ShortDash,
-    DashDotDot,
-}
-
-impl LinePattern {
-    /// Models beyond the paper's five cycle through the patterns; with the colours cycling over a
-    /// list of another length, every model gets its own (colour, pattern) pair.
-    pub fn of(model: ForceModel) -> LinePattern {
-        const PATTERNS: [LinePattern; 7] = [
-            LinePattern::Solid,
-            LinePattern::Dotted,
-            LinePattern::Dashed,
-            LinePattern::DashDot,
-            LinePattern::LongDash,
-            LinePattern::ShortDash,
-            LinePattern::DashDotDot,
-        ];
-        PATTERNS[style_index(model) % PATTERNS.len()]
-    }
-
-    /// The pattern of an integration method (work-precision and stability views): seven
-    /// patterns for seven methods, so that every line stays distinct without colour.
-    pub fn of_method(method: Method) -> LinePattern {
-        match method {
-            Method::Dopri5 => LinePattern::Solid,
-            Method::Dop853 => LinePattern::Dashed,
-            Method::Radau5 => LinePattern::Dotted,
-            Method::Euler => LinePattern::DashDot,
-            Method::SymplecticEuler => LinePattern::LongDash,
-            Method::Verlet => LinePattern::ShortDash,
-            Method::Rk4 => LinePattern::DashDotDot,
-        }
-    }
-
-    /// A four-cell sample of the pattern for legends.
-    pub fn sample(self) -> &'static str {
-        match self {
-            LinePattern::Solid => "────",
-            LinePattern::Dotted => "····",
-            LinePattern::Dashed => "╴╴╴╴",
-            LinePattern::DashDot => "─·─·",
-            LinePattern::LongDash => "── ─",
-            LinePattern::ShortDash => "╌╌╌╌",
-            LinePattern::DashDotDot => "─··─",
-        }
-    }
-
-    /// Lengths of the pattern's pieces in plot dots: (drawn, gap) pairs; a drawn length of 0 is a dot.
-    pub fn pieces(self) -> &'static [(f64, f64)] {
-        match self {
-            LinePattern::Solid => &[],
-            LinePattern::Dotted => &[(0.0, 3.0)],
-            LinePattern::Dashed => &[(5.0, 4.0)],
-            LinePattern::DashDot => &[(7.0, 3.0), (0.0, 3.0)],
-            LinePattern::LongDash => &[(14.0, 5.0)],
-            LinePattern::ShortDash => &[(2.0, 2.0)],
-            LinePattern::DashDotDot => &[(7.0, 3.0), (0.0, 3.0), (0.0, 3.0)],
-        }
-    }
-}
-
-/// The paper's Fig. 5 styles first (proposed solid yellow, Hunt–Crossley dotted, Lankarani–Nikravesh
-/// dashed, then elastic Hertz and dry friction), then the other laws in table order.
-fn style_index(model: ForceModel) -> usize {
-    const PAPER: [ForceModel; 5] = [
-        ForceModel::Proposed,
-        ForceModel::HuntCrossley,
-        ForceModel::LankaraniNikravesh,
-        ForceModel::Quasistatic,
-        ForceModel::DryFriction,
-    ];
-    PAPER.iter().position(|&m| m == model).unwrap_or_else(|| {
-        PAPER.len()
-            + ForceModel::ALL
-                .iter()
-                .filter(|m| !PAPER.contains(m))
-                .position(|&m| m == model)
-                .unwrap_or_default()
-    })
+/// A four-cell legend sample of a curve: its line with its glyph, the glyph the chart puts at the
+/// curve's peak and end (and along it without colour).
+pub fn sample(glyph: char) -> String {
+    format!("─{glyph}──")
 }
 
 /// What a piece of text is, for styling.
@@ -143,10 +63,10 @@ impl Theme {
         match role {
             Role::Normal => base,
             Role::Title => base.fg(Color::Cyan).add_modifier(Modifier::BOLD),
-            Role::Label => base.fg(Color::Gray),
-            Role::Muted => base.fg(Color::DarkGray),
+            Role::Label => base,
+            Role::Muted => base.add_modifier(Modifier::DIM),
             Role::Cursor => base.add_modifier(Modifier::REVERSED),
-            Role::Error => base.fg(Color::LightRed).add_modifier(Modifier::BOLD),
+            Role::Error => base.fg(Color::Red).add_modifier(Modifier::BOLD),
             Role::Good => base.fg(Color::Green),
             Role::Warning => base.fg(Color::Yellow),
             Role::Key => base.fg(Color::Cyan).add_modifier(Modifier::BOLD),
@@ -158,41 +78,52 @@ impl Theme {
         if !self.color {
             return Color::Reset;
         }
-        const COLORS: [Color; 8] = [
-            Color::Yellow,
-            Color::LightCyan,
-            Color::LightMagenta,
-            Color::LightBlue,
-            Color::LightGreen,
-            Color::LightRed,
+        const HUES: [Color; 7] = [
+            Color::Red,
             Color::Cyan,
             Color::Magenta,
+            Color::Blue,
+            Color::Green,
+            Color::Yellow,
+            Color::Reset,
         ];
-        COLORS[style_index(model) % COLORS.len()]
+        HUES[style_index(model) % HUES.len()]
     }
 
     pub fn model_style(self, model: ForceModel) -> Style {
         Style::default().fg(self.model_color(model))
     }
 
-    /// The colour of an integration method's line.
+    /// The colour of an integration method's line: radau5 (never in the stability view, where the
+    /// reference is) takes the foreground, so seven methods need no two alike.
     pub fn method_color(self, method: Method) -> Color {
         if !self.color {
             return Color::Reset;
         }
         match method {
             Method::Dopri5 => Color::Yellow,
-            Method::Dop853 => Color::LightCyan,
-            Method::Radau5 => Color::LightMagenta,
-            Method::Euler => Color::LightRed,
-            Method::SymplecticEuler => Color::LightGreen,
-            Method::Verlet => Color::LightBlue,
+            Method::Dop853 => Color::Cyan,
+            Method::Radau5 => Color::Reset,
+            Method::Euler => Color::Red,
+            Method::SymplecticEuler => Color::Green,
+            Method::Verlet => Color::Blue,
             Method::Rk4 => Color::Magenta,
         }
     }
 
     pub fn method_style(self, method: Method) -> Style {
         Style::default().fg(self.method_color(method))
+    }
+
+    /// The style of a chart's ink.
+    pub fn ink(self, ink: Ink) -> Style {
+        match ink {
+            Ink::Foreground => Style::default(),
+            Ink::Model(m) => self.model_style(m),
+            Ink::Method(m) => self.method_style(m),
+            Ink::Warning => self.style(Role::Warning),
+            Ink::Error => self.style(Role::Error).remove_modifier(Modifier::BOLD),
+        }
     }
 }
 
@@ -213,45 +144,52 @@ mod tests {
         assert_eq!(plain.model_color(ForceModel::Proposed), Color::Reset);
     }
 
+    /// Fixed greys and bright variants vanish on one background or the other.
+    const FADING: [Color; 10] = [
+        Color::Gray,
+        Color::DarkGray,
+        Color::White,
+        Color::Black,
+        Color::LightYellow,
+        Color::LightCyan,
+        Color::LightMagenta,
+        Color::LightBlue,
+        Color::LightGreen,
+        Color::LightRed,
+    ];
+
     #[test]
-    fn models_differ_in_colour_or_pattern_and_the_paper_five_in_both() {
+    fn models_differ_in_colour_and_no_colour_fades_on_light_or_dark() {
         let theme = Theme { color: true };
-        let style = |m: ForceModel| (theme.model_color(m), LinePattern::of(m).sample());
-        for (i, a) in ForceModel::ALL.iter().enumerate() {
-            for b in &ForceModel::ALL[i + 1..] {
-                assert_ne!(style(*a), style(*b), "{a} {b}");
+        // Seven hues for every law: the first seven in style order (the paper's five among them)
+        // never share a colour; past them the glyph tells curves apart (chart::model_glyph).
+        let mut by_style = ForceModel::ALL.to_vec();
+        by_style.sort_by_key(|m| style_index(*m));
+        for (i, a) in by_style.iter().enumerate() {
+            assert!(!FADING.contains(&theme.model_color(*a)));
+            for b in by_style[i + 1..].iter().take(6usize.saturating_sub(i)) {
+                assert_ne!(theme.model_color(*a), theme.model_color(*b), "{a} {b}");
             }
         }
-        let paper = [
-            ForceModel::Quasistatic,
-            ForceModel::DryFriction,
-            ForceModel::Proposed,
-            ForceModel::HuntCrossley,
-            ForceModel::LankaraniNikravesh,
-        ];
-        for (i, a) in paper.iter().enumerate() {
-            for b in &paper[i + 1..] {
-                assert_ne!(theme.model_color(*a), theme.model_color(*b));
-                assert_ne!(LinePattern::of(*a), LinePattern::of(*b));
-            }
+        for role in [Role::Normal, Role::Label, Role::Muted, Role::Error] {
+            let fg = theme.style(role).fg;
+            assert!(fg.is_none_or(|c| !FADING.contains(&c)), "{role:?}: {fg:?}");
         }
-        assert_eq!(theme.model_color(ForceModel::Proposed), Color::Yellow);
-        assert_eq!(
-            LinePattern::of(ForceModel::HuntCrossley),
-            LinePattern::Dotted
+        assert!(
+            theme
+                .style(Role::Muted)
+                .add_modifier
+                .contains(Modifier::DIM)
         );
     }
 
     #[test]
-    fn methods_differ_in_colour_and_pattern() {
+    fn methods_differ_in_colour() {
         let theme = Theme { color: true };
         for (i, a) in Method::ALL.iter().enumerate() {
+            assert!(!FADING.contains(&theme.method_color(*a)));
             for b in &Method::ALL[i + 1..] {
                 assert_ne!(theme.method_color(*a), theme.method_color(*b));
-                assert_ne!(LinePattern::of_method(*a), LinePattern::of_method(*b));
-                let (sa, sb) = (LinePattern::of_method(*a), LinePattern::of_method(*b));
-                assert_ne!(sa.sample(), sb.sample());
-                assert_ne!(sa.pieces(), sb.pieces());
             }
         }
     }

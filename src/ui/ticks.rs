@@ -37,6 +37,27 @@ pub struct NiceAxis {
 }
 
 impl NiceAxis {
+    /// This axis for a [`Chart`](crate::chart::Chart): its labels at their values (evenly over
+    /// the bounds, linear or in log₁₀).
+    pub fn chart_axis(&self, title: String) -> crate::chart::Axis {
+        let [lo, hi] = self.bounds;
+        let intervals = self.labels.len().saturating_sub(1).max(1) as f64;
+        crate::chart::Axis {
+            title,
+            range: self.bounds,
+            log: self.log,
+            ticks: self
+                .labels
+                .iter()
+                .enumerate()
+                .map(|(i, label)| crate::chart::Tick {
+                    at: lo + (hi - lo) * i as f64 / intervals,
+                    label: label.clone(),
+                })
+                .collect(),
+        }
+    }
+
     /// Where an SI value goes on this axis (non-finite where a log axis has no place for it).
     pub fn to_display(&self, value_si: f64) -> f64 {
         let value = value_si / self.scale;

@@ -5,8 +5,14 @@
 use crate::model::ode::Method;
 use crate::model::study::work_precision::{Setting, WorkPrecisionRow};
 
+use crate::chart::{Chart, Ink, Mark, Series, method_glyph};
+
 use super::studies::{CurrentPoint, WorkPrecisionData};
+use super::ticks::nice_axis;
 use super::units::{self, sig};
+
+/// The glyph of the explorer's own solve on the work-precision charts.
+pub const CURRENT_GLYPH: char = '█';
 
 /// Errors below this are drawn at it: a solve can match its reference to the last bit, and
 /// log₁₀ 0 has no place on a chart.
@@ -88,6 +94,61 @@ pub fn current(point_of: &CurrentPoint, cost: Cost) -> Option<(f64, f64)> {
         Some(point_of.force_evals),
         point_of.errors.worst(),
     )
+}
+
+/// The work-precision chart against `cost`, with at most `max_x` × `max_y` tick labels: one line
+/// per method and the explorer's solve as a block.
+pub fn chart(
+    data: &WorkPrecisionData,
+    current: Option<&CurrentPoint>,
+    cost: Cost,
+    (max_x, max_y): (usize, usize),
+) -> Chart {
+    let lines = lines(data, cost);
+    let mark = current.and_then(|p| self::current(p, cost));
+    let all = lines
+        .iter()
+        .flat_map(|l| l.points.iter().copied())
+        .chain(mark);
+    let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (x, y) in all {
+        x_lo = x_lo.min(x);
+        x_hi = x_hi.max(x);
+        y_lo = y_lo.min(y);
+        y_hi = y_hi.max(y);
+    }
+    // Three labels at least: log axes cross zero freely, and two labels over a range across zero
+    // would need a step wider than the range.
+    let x = nice_axis(x_lo, x_hi, units::DIMENSIONLESS, max_x.max(3));
+    let y = nice_axis(y_lo, y_hi, units::DIMENSIONLESS, max_y.max(3));
+    Chart {
+        title: format!("log₁₀ error against {}", cost.title()),
+        x: x.chart_axis(cost.title().to_string()),
+        y: y.chart_axis("log₁₀ error".to_string()),
+        series: lines
+            .into_iter()
+            .map(|l| Series {
+                name: l.method.to_string(),
+                ink: Ink::Method(l.method),
+                glyph: method_glyph(l.method),
+                steps: true,
+                runs: vec![l.points],
+                focused: false,
+                peak: None,
+            })
+            .collect(),
+        marks: mark
+            .map(|at| Mark {
+                at,
+                ink: Ink::Foreground,
+                glyph: CURRENT_GLYPH,
+                label: None,
+            })
+            .into_iter()
+            .collect(),
+        rules: Vec::new(),
+        notes: Vec::new(),
+    }
 }
 
 /// A rung's setting as the lists print it: `rtol 1e-4`, `h 1.2 µs`.

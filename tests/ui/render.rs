@@ -227,7 +227,7 @@ fn invalid_field_is_red_with_the_model_message() {
         .unwrap();
     let col = line[..line.find(first_line).unwrap()].chars().count();
     let cell = &buffer[(col as u16, row as u16)];
-    assert_eq!(cell.fg, Color::LightRed);
+    assert_eq!(cell.fg, Color::Red);
 }
 
 #[test]

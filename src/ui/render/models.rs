@@ -1,5 +1,5 @@
 //! The model checklist, which is also the legend of the charts: check box, line sample in the
-//! model's colour and pattern, name, and whether the model fits the scene's regime. Laws are
+//! model's colour with its glyph, name, and whether the model fits the scene's regime. Laws are
 //! grouped by family under a heading; the list scrolls to keep the model under the cursor (or the
 //! focused one) in view.
 
@@ -9,10 +9,11 @@ use ratatui::style::Modifier;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
+use crate::chart::model_glyph;
 use crate::model::ForceModel;
 use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
-use crate::ui::theme::{LinePattern, Role, Theme};
+use crate::ui::theme::{Role, Theme, sample};
 
 use super::common::{model_name, pane, span};
 
@@ -112,7 +113,7 @@ fn model_line(
         span(focus, theme.style(Role::Key)),
         span(check, theme.style(Role::Normal)),
         span(" ", theme.style(Role::Normal)),
-        span(LinePattern::of(model).sample(), theme.model_style(model)),
+        span(sample(model_glyph(model)), theme.model_style(model)),
         span(" ", theme.style(Role::Normal)),
         span(padded, name_style),
         span(format!(" {busy}"), theme.style(Role::Warning)),

@@ -8,32 +8,38 @@ use ratatui::style::Modifier;
 use ratatui::text::Line;
 use ratatui::widgets::{Cell, Paragraph, Row, Table};
 
+use crate::chart::{Ink, REFERENCE_GLYPH, method_glyph};
 use crate::model::impact::MethodUsed;
 use crate::model::ode::Method;
 use crate::model::study::reference::REFERENCE_RTOL;
 use crate::model::study::stability::{Verdict, stability_bound};
 use crate::ui::app::{App, ChartKind, EditTarget, Mode};
-use crate::ui::plot::{Series, plot};
-use crate::ui::studies::{MeasuredBound, StabilityData, StudyKind};
-use crate::ui::theme::{LinePattern, Role, Theme};
+use crate::ui::stability_plot::{self, Curve};
+use crate::ui::studies::{MeasuredBound, MethodRun, StabilityData, StudyKind};
+use crate::ui::theme::{Role, Theme, sample};
 use crate::ui::units::{self, sig};
 
+use super::chart::budget;
 use super::common::{pane, span, wrap};
 use super::editable;
-use super::graph::{self, Graph, Mark, Trace};
+use super::graph;
 
-/// Whose curve: the reference or a fixed-step method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Curve {
-    Reference,
-    Method(Method),
-}
-
-fn curve_style(curve: Curve, theme: Theme) -> (ratatui::style::Style, LinePattern) {
-    match curve {
-        Curve::Reference => (theme.style(Role::Normal), LinePattern::Solid),
-        Curve::Method(m) => (theme.method_style(m), LinePattern::of_method(m)),
-    }
+/// The name cell of a curve: its glyph sample and name in its ink.
+fn name_cell(curve: Curve, text: &str, theme: Theme, narrow: bool) -> Cell<'static> {
+    let (ink, glyph) = match curve {
+        Curve::Reference => (Ink::Foreground, REFERENCE_GLYPH),
+        Curve::Method(m) => (Ink::Method(m), method_glyph(m)),
+    };
+    let style = theme.ink(ink);
+    let lead = if narrow {
+        glyph.to_string()
+    } else {
+        sample(glyph)
+    };
+    Cell::from(Line::from(vec![
+        span(lead, style),
+        span(format!(" {text}"), style),
+    ]))
 }
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
@@ -134,8 +140,9 @@ fn header(frame: &mut Frame, area: Rect, app: &App, data: Option<&StabilityData>
     }
 }
 
-/// A verdict in words, with its colour, in `width` columns where the details allow.
-fn verdict(v: &Verdict, width: usize) -> (String, Role) {
+/// A verdict in words with the headline errors against the reference, with its colour: the
+/// longest of its wordings that fits `width` columns (the last one is the shortest).
+fn verdict(run: &MethodRun, data: &StabilityData, width: usize) -> (String, Role) {
     let percent = |drift: f64| {
         format!(
             "{}{} %",
@@ -143,32 +150,54 @@ fn verdict(v: &Verdict, width: usize) -> (String, Role) {
             sig(drift * 100.0, 2)
         )
     };
-    match v {
-        Verdict::Stable { drift } => (format!("stable (energy {})", percent(*drift)), Role::Good),
-        Verdict::EnergyDrift { drift } => {
-            (format!("energy drift {}", percent(*drift)), Role::Warning)
-        }
+    let errors = stability_plot::errors_text(run, data);
+    let (mut candidates, role) = match &run.run.verdict {
+        Verdict::Stable { drift } => (
+            vec![
+                format!("stable (energy {})", percent(*drift)),
+                "stable".to_string(),
+            ],
+            Role::Good,
+        ),
+        Verdict::EnergyDrift { drift } => (
+            vec![
+                format!("energy drift {}", percent(*drift)),
+                format!("drift {}", percent(*drift)),
+            ],
+            Role::Warning,
+        ),
         Verdict::Diverged { t, reason } => {
-            let at = format!(
-                "diverged at t = {}",
-                units::engineering(*t, units::SECOND, 3)
-            );
-            let full = format!("{at} ({reason})");
+            let at = units::engineering(*t, units::SECOND, 3);
             (
-                if full.chars().count() <= width {
-                    full
-                } else {
-                    at
-                },
+                vec![
+                    format!("diverged at t = {at} ({reason})"),
+                    format!("diverged at t = {at}"),
+                    format!("diverged, t = {at}"),
+                ],
                 Role::Error,
             )
         }
-        Verdict::Failed { reason } => (format!("failed: {reason}"), Role::Error),
+        Verdict::Failed { reason } => (vec![format!("failed: {reason}")], Role::Error),
+    };
+    if let Some((full, short)) = errors {
+        let with_errors: Vec<String> = candidates
+            .iter()
+            .flat_map(|c| [format!("{c} · {full}"), format!("{c} · {short}")])
+            .collect();
+        candidates = with_errors.into_iter().chain([short]).collect();
     }
+    let pick = candidates
+        .iter()
+        .find(|c| c.chars().count() <= width)
+        .or(candidates.last())
+        .cloned()
+        .unwrap_or_default();
+    (pick, role)
 }
 
-/// The measured largest bounded step of `method`, as the table shows it.
-fn measured(app: &App, method: Method) -> String {
+/// The measured largest bounded step of `method`, as the table shows it (without h·ω when
+/// `narrow`).
+fn measured(app: &App, method: Method, narrow: bool) -> String {
     match app.studies.bounds() {
         _ if app.studies.is_pending(StudyKind::Bounds) => "measuring…".to_string(),
         Some(Ok(bounds)) => match bounds.iter().find(|b| b.bound.method == method) {
@@ -176,6 +205,7 @@ fn measured(app: &App, method: Method) -> String {
                 bound,
                 step_ratio: Some(ratio),
             }) => match bound.measured_dt {
+                Some(dt) if narrow => units::engineering(dt, units::SECOND, 3),
                 Some(dt) => format!(
                     "{} (h·ω {})",
                     units::engineering(dt, units::SECOND, 3),
@@ -190,41 +220,41 @@ fn measured(app: &App, method: Method) -> String {
     }
 }
 
-/// Widths of the method and measured-step columns (the measured step stands next to the
-/// theory's); the verdict takes what the others leave.
-const METHOD_WIDTH: u16 = 21;
-const MEASURED_WIDTH: u16 = 19;
+/// Column widths: (method, measured step) on a wide table and on a narrow one (below 120
+/// columns: the glyph alone before the name, the measured step without its h·ω); the verdict
+/// takes what the others leave.
+const WIDE: (u16, u16) = (21, 19);
+const NARROW: (u16, u16) = (18, 10);
 
 fn table(frame: &mut Frame, area: Rect, app: &App, data: &StabilityData) {
     let theme = app.theme;
+    let narrow = area.width < 118;
+    let (method_width, measured_width) = if narrow { NARROW } else { WIDE };
     let verdict_width = usize::from(
         area.width
-            .saturating_sub(METHOD_WIDTH + 9 + 10 + MEASURED_WIDTH + 4),
+            .saturating_sub(method_width + 9 + 10 + measured_width + 4),
     );
     let header = Row::new(
         [
             "method",
             "bound h·ω",
             "critical h",
-            "largest bounded h",
+            if narrow {
+                "largest h"
+            } else {
+                "largest bounded h"
+            },
             "verdict at this h",
         ]
         .map(Cell::from),
     )
     .style(theme.style(Role::Label).add_modifier(Modifier::BOLD));
-    let name = |curve: Curve, text: String| {
-        let (style, pattern) = curve_style(curve, theme);
-        Cell::from(Line::from(vec![
-            span(pattern.sample(), style),
-            span(format!(" {text}"), style),
-        ]))
-    };
     let reference = match data.reference.summary.method {
         MethodUsed::Exact => "the exact solution".to_string(),
         MethodUsed::Integrator(m) => format!("{m} at rtol {}", sig(REFERENCE_RTOL, 2)),
     };
     let mut rows = vec![Row::new(vec![
-        name(Curve::Reference, "reference".into()),
+        name_cell(Curve::Reference, "reference", theme, narrow),
         Cell::from(""),
         Cell::from(""),
         Cell::from(""),
@@ -240,20 +270,20 @@ fn table(frame: &mut Frame, area: Rect, app: &App, data: &StabilityData) {
             Some(dt) => units::engineering(dt, units::SECOND, 3),
             None => "— (gains)".to_string(),
         };
-        let (text, role) = verdict(&run.run.verdict, verdict_width);
+        let (text, role) = verdict(run, data, verdict_width);
         rows.push(Row::new(vec![
-            name(Curve::Method(method), method.to_string()),
+            name_cell(Curve::Method(method), &method.to_string(), theme, narrow),
             Cell::from(bound),
             Cell::from(critical),
-            Cell::from(measured(app, method)),
+            Cell::from(measured(app, method, narrow)),
             Cell::from(span(text, theme.style(role))),
         ]));
     }
     let widths = [
-        Constraint::Length(METHOD_WIDTH),
+        Constraint::Length(method_width),
         Constraint::Length(9),
         Constraint::Length(10),
-        Constraint::Length(MEASURED_WIDTH),
+        Constraint::Length(measured_width),
         Constraint::Fill(1),
     ];
     frame.render_widget(
@@ -271,64 +301,23 @@ fn chart(
     roomy: bool,
 ) {
     let theme = app.theme;
-    let dots = usize::from(app.marker.dots_per_cell());
-    // About two samples per plot column.
-    let n = 2 * usize::from(area.width) * dots;
-    let mut series = vec![Series::sample(Curve::Reference, &data.reference, n)];
-    series.extend(data.runs.iter().filter_map(|r| {
-        let solution = r.run.solution.as_ref()?;
-        Some(Series::sample(Curve::Method(r.run.method), solution, n))
-    }));
-    let max_x_labels = usize::from(area.width / 8).clamp(2, 10);
-    let max_y_labels = usize::from(area.height / 3).clamp(2, 8);
-    let p = plot(kind, &series, max_x_labels, max_y_labels);
-    let mut traces = Vec::new();
-    let mut marks = Vec::new();
-    // The reference first, so the methods lie over it.
-    for c in p.curves {
-        let (style, pattern) = curve_style(c.model, theme);
-        marks.push(Mark {
-            at: c.peak,
-            style,
-            marker: None,
-        });
-        traces.push(Trace {
-            points: c.points,
-            style,
-            pattern,
-        });
-    }
-    let drawn = data
-        .runs
-        .iter()
-        .filter(|r| r.run.solution.is_some())
-        .count();
-    let mut title = format!(
-        "{} · {drawn} of {} methods drawn",
-        kind.title(),
-        data.runs.len()
-    );
+    let columns = area.width.saturating_sub(9);
+    let budget = budget(columns, area.height.saturating_sub(6));
+    let chart = stability_plot::chart(data, kind, columns, budget);
+    let mut title = chart.title.clone();
     if area.width < 60 {
         title = wrap(&title, usize::from(area.width.saturating_sub(2)))
             .into_iter()
             .next()
             .unwrap_or_default();
     }
-    let g = Graph {
-        x: p.x,
-        y: p.y,
-        x_title: p.x_title,
-        y_title: p.y_title,
-        traces,
-        marks,
-        rules: Vec::new(),
-    };
-    graph::render(
-        frame,
-        area,
-        pane(title, theme, roomy),
-        &g,
-        app.marker,
-        theme,
-    );
+    let mut block = pane(title, theme, roomy);
+    if roomy {
+        block = block.title_bottom(graph::legend(
+            &chart,
+            theme,
+            usize::from(area.width.saturating_sub(2)),
+        ));
+    }
+    graph::render(frame, area, block, &chart, app.marker, theme);
 }

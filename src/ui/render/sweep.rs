@@ -3,22 +3,21 @@
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
-use ratatui::text::{Line, Span};
+use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
 use crate::model::Scene;
 use crate::model::scene_key::SceneKey;
 use crate::ui::app::{App, EditTarget, Mode};
 use crate::ui::studies::{StudyKind, SweepData};
-use crate::ui::sweep_plot::{self, LineOf};
-use crate::ui::sweep_settings::{SweepField, key_symbol, key_unit};
-use crate::ui::theme::{LinePattern, Role, Theme};
-use crate::ui::ticks::{NiceAxis, log_axis, nice_axis};
-use crate::ui::units::{self, Unit};
+use crate::ui::sweep_plot;
+use crate::ui::sweep_settings::SweepField;
+use crate::ui::theme::Role;
 
-use super::common::{flow, model_name, pane, span, wrap};
+use super::chart::budget;
+use super::common::{pane, span, wrap};
 use super::editable;
-use super::graph::{self, Graph, Rule, Trace};
+use super::graph;
 use super::layout::{Screen, sweep_areas};
 use super::models;
 
@@ -110,14 +109,7 @@ fn notes(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, data: Option<&
         if let Some((v_yield, v_plastic)) = sweep_plot::onset(data)
             && data.spec.key == SceneKey::V0
         {
-            texts.push((
-                format!(
-                    "v_y = {} yield begins (p₀ = 1.1·σ_y), v_p = {} fully plastic (2.8·σ_y)",
-                    units::engineering(v_yield, units::METRE_PER_SECOND, 3),
-                    units::engineering(v_plastic, units::METRE_PER_SECOND, 3)
-                ),
-                Role::Normal,
-            ));
+            texts.push((sweep_plot::onset_note(v_yield, v_plastic), Role::Normal));
         }
         if let Some((count, first)) = sweep_plot::failures(data) {
             texts.push((
@@ -138,24 +130,8 @@ fn notes(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, data: Option<&
     frame.render_widget(Paragraph::new(lines), area);
 }
 
-fn line_style(of: LineOf, theme: Theme) -> (ratatui::style::Style, LinePattern) {
-    match of {
-        LineOf::Estimate => (theme.style(Role::Normal), LinePattern::Solid),
-        LineOf::Model(m) => (theme.model_style(m), LinePattern::of(m)),
-    }
-}
-
-fn axis(lo: f64, hi: f64, unit: Unit, log: bool, max_labels: usize) -> NiceAxis {
-    if log {
-        log_axis(lo, hi, unit, max_labels)
-    } else {
-        nice_axis(lo, hi, unit, max_labels)
-    }
-}
-
 fn chart(frame: &mut Frame, area: Rect, app: &App, data: Option<&SweepData>, roomy: bool) {
     let theme = app.theme;
-    let output = app.sweep.output;
     let computing = app.studies.is_pending(StudyKind::Sweep);
     let Some(data) = data else {
         let text = if computing {
@@ -169,108 +145,19 @@ fn chart(frame: &mut Frame, area: Rect, app: &App, data: Option<&SweepData>, roo
         frame.render_widget(Paragraph::new(span(text, theme.style(Role::Muted))), inner);
         return;
     };
-    let spec = &data.spec;
-    let lines = sweep_plot::lines(data, output);
-    let x_unit = key_unit(spec.key);
-    let y_unit = output.unit();
-    let max_x_labels = usize::from(area.width / 9).clamp(2, 11);
-    let max_y_labels = usize::from(area.height / 3).clamp(2, 8);
-    let (lo, hi) = (spec.from.min(spec.to), spec.from.max(spec.to));
-    let x = axis(lo, hi, x_unit, spec.log, max_x_labels);
-    // The y axis includes 0, as the explorer's do: outputs are sizes, times, speeds, ratios.
-    let (mut y_lo, mut y_hi) = (0.0f64, 0.0f64);
-    for (_, v) in lines.iter().flat_map(|l| l.runs.iter().flatten()) {
-        y_lo = y_lo.min(*v);
-        y_hi = y_hi.max(*v);
-    }
-    let y = nice_axis(y_lo, y_hi, y_unit, max_y_labels);
-    let to_display = |(px, py): &(f64, f64)| (x.to_display(*px), y.to_display(*py));
-    let mut traces = Vec::new();
-    for line in &lines {
-        let (style, pattern) = line_style(line.of, theme);
-        for run in &line.runs {
-            traces.push(Trace {
-                points: run.iter().map(to_display).collect(),
-                style,
-                pattern,
-            });
-        }
-    }
-    let mut rules = Vec::new();
-    if spec.key == SceneKey::V0
-        && let Some((v_yield, v_plastic)) = sweep_plot::onset(data)
-    {
-        rules.push(Rule {
-            x: x.to_display(v_yield),
-            label: "v_y".into(),
-            style: theme.style(Role::Warning),
-            pattern: LinePattern::Dotted,
-        });
-        rules.push(Rule {
-            x: x.to_display(v_plastic),
-            label: "v_p".into(),
-            style: theme.style(Role::Error),
-            pattern: LinePattern::Dashed,
-        });
-    }
-    let symbol = key_symbol(spec.key);
-    let unit_text = |axis: &NiceAxis, unit: Unit| {
-        let text = format!("{}{}", axis.prefix.symbol, unit.symbol);
-        if text.is_empty() {
-            String::new()
-        } else {
-            format!(" [{text}]")
-        }
-    };
-    let x_title = format!("{symbol}{}", unit_text(&x, x_unit));
-    let y_title = format!("{}{}", output.symbol(), unit_text(&y, y_unit));
-    let mut title = format!(
-        "{} against {} · {} points, {}",
-        output.symbol(),
-        symbol,
-        spec.points,
-        if spec.log { "log" } else { "linear" }
-    );
+    let budget = budget(area.width.saturating_sub(9), area.height.saturating_sub(6));
+    let chart = sweep_plot::chart(data, app.sweep.output, Some(app.focused), budget);
+    let mut title = chart.title.clone();
     if computing {
         title.push_str(" · computing…");
     }
     let mut block = pane(title, theme, roomy);
     if roomy {
-        block = block.title_bottom(legend(
-            &lines,
+        block = block.title_bottom(graph::legend(
+            &chart,
             theme,
             usize::from(area.width.saturating_sub(2)),
         ));
     }
-    let g = Graph {
-        x,
-        y,
-        x_title,
-        y_title,
-        traces,
-        marks: Vec::new(),
-        rules,
-    };
-    graph::render(frame, area, block, &g, app.marker, theme);
-}
-
-fn legend(lines: &[sweep_plot::SweepLine], theme: Theme, width: usize) -> Line<'static> {
-    let items: Vec<Vec<Span>> = lines
-        .iter()
-        .map(|l| {
-            let (style, pattern) = line_style(l.of, theme);
-            let name = match l.of {
-                LineOf::Estimate => "Hertz estimate",
-                LineOf::Model(m) => model_name(m, 9),
-            };
-            vec![
-                span(format!(" {}", pattern.sample()), style),
-                span(format!(" {name} "), style),
-            ]
-        })
-        .collect();
-    flow(items, width, 1, Span::raw(""))
-        .into_iter()
-        .next()
-        .unwrap_or_default()
+    graph::render(frame, area, block, &chart, app.marker, theme);
 }

@@ -4,22 +4,23 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::symbols::Marker;
+use ratatui::style::Modifier;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
 
+use crate::chart::{Ink, method_glyph};
 use crate::model::impact::{MethodChoice, MethodUsed};
 use crate::model::study::reference::REFERENCE_RTOL;
 use crate::model::study::stability::FIXED_STEP_METHODS;
 use crate::ui::app::App;
 use crate::ui::studies::{CurrentPoint, WorkPrecisionData};
-use crate::ui::theme::{LinePattern, Role, Theme};
-use crate::ui::ticks::nice_axis;
+use crate::ui::theme::{Role, Theme, sample};
 use crate::ui::units::{self, sig};
-use crate::ui::wp_plot::{self, Cost, ERROR_FLOOR, MethodLine};
+use crate::ui::wp_plot::{self, CURRENT_GLYPH, Cost, ERROR_FLOOR};
 
+use super::chart::budget;
 use super::common::{flow, pane, span, wrap};
-use super::graph::{self, Graph, Mark, Trace};
+use super::graph;
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let theme = app.theme;
@@ -77,8 +78,9 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     };
     let single = shown.len() == 1;
     for (cost, rect) in shown {
-        let g = diagram(&data, current, cost, rect, theme);
-        let mut heading = format!("log₁₀ error against {}", cost.title());
+        let budget = budget(rect.width.saturating_sub(9), rect.height.saturating_sub(6));
+        let chart = wp_plot::chart(&data, current, cost, budget);
+        let mut heading = chart.title.clone();
         if single {
             heading.push_str(" · c: the other chart");
         }
@@ -86,7 +88,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             frame,
             rect,
             pane(heading, theme, roomy),
-            &g,
+            &chart,
             app.marker,
             theme,
         );
@@ -161,58 +163,7 @@ fn header_lines(
 
 /// The style of the explorer's solve on the charts and in the legend.
 fn current_style(theme: Theme) -> ratatui::style::Style {
-    theme.style(Role::Title)
-}
-
-fn diagram(
-    data: &WorkPrecisionData,
-    current: Option<&CurrentPoint>,
-    cost: Cost,
-    area: Rect,
-    theme: Theme,
-) -> Graph {
-    let lines: Vec<MethodLine> = wp_plot::lines(data, cost);
-    let mark = current.and_then(|p| wp_plot::current(p, cost));
-    let all = lines
-        .iter()
-        .flat_map(|l| l.points.iter().copied())
-        .chain(mark);
-    let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for (x, y) in all {
-        x_lo = x_lo.min(x);
-        x_hi = x_hi.max(x);
-        y_lo = y_lo.min(y);
-        y_hi = y_hi.max(y);
-    }
-    // Three labels at least: log axes cross zero freely, and two labels over a range across zero
-    // would need a step wider than the range.
-    let max_x_labels = usize::from(area.width / 8).clamp(3, 10);
-    let max_y_labels = usize::from(area.height / 3).clamp(3, 8);
-    let x = nice_axis(x_lo, x_hi, units::DIMENSIONLESS, max_x_labels);
-    let y = nice_axis(y_lo, y_hi, units::DIMENSIONLESS, max_y_labels);
-    Graph {
-        x,
-        y,
-        x_title: cost.title().to_string(),
-        y_title: "log₁₀ error".to_string(),
-        traces: lines
-            .into_iter()
-            .map(|l| Trace {
-                style: theme.method_style(l.method),
-                pattern: LinePattern::of_method(l.method),
-                points: l.points,
-            })
-            .collect(),
-        marks: mark
-            .map(|at| Mark {
-                at,
-                style: current_style(theme),
-                marker: Some(Marker::Block),
-            })
-            .into_iter()
-            .collect(),
-        rules: Vec::new(),
-    }
+    theme.ink(Ink::Foreground).add_modifier(Modifier::BOLD)
 }
 
 /// Line sample and name of every drawn method, then the explorer's mark.
@@ -227,14 +178,14 @@ fn legend(
         .map(|l| {
             let style = theme.method_style(l.method);
             vec![
-                span(LinePattern::of_method(l.method).sample(), style),
+                span(sample(method_glyph(l.method)), style),
                 span(format!(" {}", l.method), style),
             ]
         })
         .collect();
     if with_current {
         items.push(vec![
-            span("█", current_style(theme)),
+            span(CURRENT_GLYPH.to_string(), current_style(theme)),
             span(" explorer's solve", theme.style(Role::Normal)),
         ]);
     }

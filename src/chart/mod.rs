@@ -1,0 +1,192 @@
+//! A chart as plain data, for any renderer: the terminal canvas (`crate::ui::render::graph`) or a
+//! figure file ([`figure`]). Views build a [`Chart`]; renderers place ticks, lines and labels.
+//!
+//! Coordinates are display values: SI divided by the axis's prefix and unit, and log₁₀ of that on
+//! a log axis, so that a renderer maps them linearly onto its plot area.
+
+pub mod layout;
+
+pub use layout::{Placed, place_ticks};
+
+use crate::model::ForceModel;
+use crate::model::ode::Method;
+
+/// Whose colour a piece of the chart takes. Renderers map inks to their palettes, so that a model
+/// keeps its colour in every view and in figures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ink {
+    /// The terminal's own foreground (black in figures): references and estimates.
+    Foreground,
+    Model(ForceModel),
+    Method(Method),
+    /// Yield begins (v_y).
+    Warning,
+    /// Fully plastic (v_p), failures.
+    Error,
+}
+
+/// A tick: its place in display values and its label.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tick {
+    pub at: f64,
+    pub label: String,
+}
+
+/// One axis: its range in display values, ticks inside it, and its title with the unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    pub title: String,
+    pub range: [f64; 2],
+    /// The values are log₁₀ of the quantity (the labels show the quantity).
+    pub log: bool,
+    pub ticks: Vec<Tick>,
+}
+
+impl Axis {
+    /// Where `value` falls along the axis, 0 at the start and 1 at the end (outside for values
+    /// off the axis, NaN for non-finite ones).
+    pub fn fraction(&self, value: f64) -> f64 {
+        let [lo, hi] = self.range;
+        if value.is_finite() && hi > lo {
+            (value - lo) / (hi - lo)
+        } else {
+            f64::NAN
+        }
+    }
+}
+
+/// A curve: runs of points (a failed point breaks a run, never bridged).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    pub name: String,
+    pub ink: Ink,
+    /// Marks the curve where colour cannot: at its peak and end, and along it without colour.
+    pub glyph: char,
+    pub runs: Vec<Vec<(f64, f64)>>,
+    /// Drawn last and bold.
+    pub focused: bool,
+    /// The peak this chart shows (F_max, x_max), exact: marked with the glyph.
+    pub peak: Option<(f64, f64)>,
+    /// Each point is a step of a fixed-step method: every one is marked.
+    pub steps: bool,
+}
+
+impl Series {
+    /// The last point drawn, where the curve ends.
+    pub fn end(&self) -> Option<(f64, f64)> {
+        self.runs.iter().rev().find_map(|r| r.last().copied())
+    }
+}
+
+/// A single point with its own glyph and, where given, a label beside it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    pub at: (f64, f64),
+    pub ink: Ink,
+    pub glyph: char,
+    pub label: Option<String>,
+}
+
+/// A vertical line across the plot at `x`, labelled at its top.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rule {
+    pub x: f64,
+    pub ink: Ink,
+    pub label: String,
+}
+
+/// Everything one chart shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chart {
+    pub title: String,
+    pub x: Axis,
+    pub y: Axis,
+    /// In drawing order: the focused series last.
+    pub series: Vec<Series>,
+    pub marks: Vec<Mark>,
+    pub rules: Vec<Rule>,
+    /// Why something is missing ("proposed: step budget exhausted at t = …"), shown with the chart.
+    pub notes: Vec<String>,
+}
+
+/// The paper's Fig. 5 models first (proposed, Hunt–Crossley, Lankarani–Nikravesh), then elastic
+/// Hertz and dry friction, then the other laws in table order: the index that picks a model's
+/// colour and glyph, so the paper's five never share either.
+pub fn style_index(model: ForceModel) -> usize {
+    const PAPER: [ForceModel; 5] = [
+        ForceModel::Proposed,
+        ForceModel::HuntCrossley,
+        ForceModel::LankaraniNikravesh,
+        ForceModel::Quasistatic,
+        ForceModel::DryFriction,
+    ];
+    PAPER.iter().position(|&m| m == model).unwrap_or_else(|| {
+        PAPER.len()
+            + ForceModel::ALL
+                .iter()
+                .filter(|m| !PAPER.contains(m))
+                .position(|&m| m == model)
+                .unwrap_or_default()
+    })
+}
+
+/// The glyph of a force model, each its own: ASCII, so every font and every figure has them.
+pub fn model_glyph(model: ForceModel) -> char {
+    // The paper's five first (proposed, Hunt–Crossley, Lankarani–Nikravesh, Hertz, dry friction),
+    // then the other laws; REFERENCE_GLYPH is never one of them.
+    const GLYPHS: [char; 20] = [
+        '*', 'x', '#', 'o', '+', '%', '@', '&', '$', '~', '^', 'v', 's', 'd', 'k', 'z', 'w', 'h',
+        'n', 'q',
+    ];
+    GLYPHS[style_index(model) % GLYPHS.len()]
+}
+
+/// The glyph of an integration method: each its own.
+pub fn method_glyph(method: Method) -> char {
+    match method {
+        Method::Dopri5 => 'o',
+        Method::Dop853 => '*',
+        Method::Radau5 => '+',
+        Method::Euler => 'x',
+        Method::SymplecticEuler => '#',
+        Method::Verlet => '%',
+        Method::Rk4 => '@',
+    }
+}
+
+/// The glyph of a reference curve (drawn over the methods it judges).
+pub const REFERENCE_GLYPH: char = '=';
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn glyphs_tell_every_model_and_method_apart() {
+        for (i, a) in ForceModel::ALL.iter().enumerate() {
+            for b in &ForceModel::ALL[i + 1..] {
+                assert_ne!(model_glyph(*a), model_glyph(*b));
+            }
+        }
+        for (i, a) in Method::ALL.iter().enumerate() {
+            assert_ne!(method_glyph(*a), REFERENCE_GLYPH);
+            for b in &Method::ALL[i + 1..] {
+                assert_ne!(method_glyph(*a), method_glyph(*b));
+            }
+        }
+    }
+
+    #[test]
+    fn fractions_along_an_axis() {
+        let axis = Axis {
+            title: String::new(),
+            range: [-1.0, 3.0],
+            log: false,
+            ticks: Vec::new(),
+        };
+        assert_eq!(axis.fraction(-1.0), 0.0);
+        assert_eq!(axis.fraction(1.0), 0.5);
+        assert_eq!(axis.fraction(5.0), 1.5);
+        assert!(axis.fraction(f64::NAN).is_nan());
+    }
+}
