@@ -2,7 +2,7 @@
 //! model's colour and pattern, name, and whether the model fits the scene's regime.
 
 use ratatui::Frame;
-use ratatui::layout::Rect;
+use ratatui::layout::{Position, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
@@ -10,7 +10,7 @@ use ratatui::widgets::Paragraph;
 use crate::model::ForceModel;
 use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
-use crate::ui::theme::{LinePattern, Role};
+use crate::ui::theme::{LinePattern, Role, Theme};
 
 use super::common::{model_name, pane, span};
 
@@ -60,4 +60,17 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         })
         .collect();
     frame.render_widget(Paragraph::new(lines), inner);
+}
+
+/// What a click at `position` of the checklist drawn in `area` hits: a model, and whether on its
+/// check box.
+pub fn model_at(area: Rect, roomy: bool, position: Position) -> Option<(ForceModel, bool)> {
+    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    if !inner.contains(position) {
+        return None;
+    }
+    let model = *ForceModel::ALL.get(usize::from(position.y - inner.y))?;
+    // "▸[x]": the box is columns 1–3.
+    let on_box = (1..4).contains(&(position.x - inner.x));
+    Some((model, on_box))
 }
