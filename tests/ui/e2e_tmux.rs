@@ -92,7 +92,11 @@ impl Tmux {
     /// for them.
     fn paste(&self, text: &str) {
         assert!(self.run(&["set-buffer", "--", text]).status.success());
-        assert!(self.run(&["paste-buffer", "-p", "-t", "e2e"]).status.success());
+        assert!(
+            self.run(&["paste-buffer", "-p", "-t", "e2e"])
+                .status
+                .success()
+        );
     }
 
     fn literal(&self, text: &str) {
@@ -202,7 +206,10 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
     tmux.keys(&["End"]);
     tmux.paste("2 0");
     tmux.wait_for("the paste to be refused", |s| s.contains("paste ignored"));
-    assert!(tmux.screen().contains("F(x) force–approach"), "still on tab 1");
+    assert!(
+        tmux.screen().contains("F(x) force–approach"),
+        "still on tab 1"
+    );
     // The cursor back on v₀ (Home, then PgDn twice to the impact section): a paste opens its
     // editor with the text, Enter commits.
     tmux.keys(&["Home"]);
