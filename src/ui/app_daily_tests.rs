@@ -12,7 +12,7 @@ use super::action::Action;
 use super::app::{App, Confirm, Cursor, Mode};
 use super::app_tests::{app, enter_text, key, key_with, settle, temp_path, type_text};
 use super::field::Field;
-use super::keymap::{BINDINGS, action_for_event};
+use super::keymap::{BINDINGS, INPUT_HINTS, action_for_event};
 use super::marker::MarkerStyle;
 use super::render;
 use super::tab::Tab;

@@ -12,59 +12,49 @@ use super::app::{Confirm, Mode};
 use super::field::Nudge;
 use super::tab::Tab;
 
-/// The key bindings, as the help screen lists them: (keys, what they do).
+/// The key bindings, as the help screen lists them: (keys, what they do); one line each at 80
+/// columns, and all of them with the input hints within 24 rows.
 pub const BINDINGS: &[(&str, &str)] = &[
     (
         "1 2 3 4",
         "views: explorer · work–precision · stability · sweep",
     ),
-    ("↑ ↓  k j  Tab S-Tab", "move between fields and models"),
-    (
-        "Home End  g G  PgUp PgDn",
-        "first / last row · previous / next section",
-    ),
+    ("↑ ↓ k j Tab S-Tab", "move between fields and models"),
+    ("Home End g G", "first / last row"),
+    ("PgUp PgDn", "previous / next section"),
     (
         "Enter",
-        "edit the field (Enter commits, Esc cancels) · toggle a model",
+        "edit (Enter commits, Esc cancels) · toggle a model",
     ),
     (
-        "← →  h l  - + =",
-        "nudge by one step of the 2nd digit, up to the domain's bound; cycle choices",
+        "← → h l - + =",
+        "nudge the 2nd digit, up to the bound; cycle choices",
     ),
     (
-        "Space  [ ]",
+        "Space [ ]",
         "check / uncheck the model · focus previous / next",
     ),
     (
-        "u  r",
-        "undo the last change (100 levels) · reset the field to the scene as loaded",
+        "u r",
+        "undo (100 levels) · reset the field to the loaded scene",
     ),
     ("c", "next chart (when only one fits)"),
     (
         "p",
-        "presets: type to filter; Enter loads a scene or applies a material (1 2: body)",
+        "presets: type to filter; Enter loads (1 2: to body 1 2)",
     ),
-    (
-        "s  e",
-        "save the scene (preset name, or a path ending in .toml) · export the focused model (CSV)",
-    ),
-    (
-        "m",
-        "mouse on / off: click tabs, fields, model boxes; the wheel nudges (off: select text)",
-    ),
-    (
-        "paste",
-        "opens the field under the cursor with the pasted text",
-    ),
+    ("s e", "save the scene (name or path.toml) · export as CSV"),
+    ("m", "mouse on / off (off: the terminal selects text)"),
+    ("paste", "opens the field under the cursor with the text"),
     (
         "in 3",
         "Enter types the step (auto: rk4 critical); ← → ½× 2×",
     ),
     ("in 4", "↑ ↓ rows; ← → change; Enter types or switches"),
-    ("?  Esc", "this help · close, cancel, clear the message"),
+    ("? Esc", "this help · close, cancel, clear the message"),
     (
-        "q  Ctrl-C",
-        "quit; with unsaved changes asks (y quits, s saves); Ctrl-C twice quits at once",
+        "q Ctrl-C",
+        "quit (unsaved: asks, y quits); Ctrl-C twice: at once",
     ),
 ];
 
