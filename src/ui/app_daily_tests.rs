@@ -461,6 +461,14 @@ fn help_lists_every_key_that_works() {
             );
         }
     }
+    // At the smallest size every line shows, whole.
+    let mut a = app();
+    key(&mut a, KeyCode::Char('?'));
+    let shown = screen(&a, 80, 24).join("\n");
+    let last_hint = INPUT_HINTS[INPUT_HINTS.len() - 1];
+    for what in BINDINGS.iter().map(|(_, what)| *what).chain([last_hint]) {
+        assert!(shown.contains(what), "{what} is cut at 80×24:\n{shown}");
+    }
 }
 
 impl App {
