@@ -434,19 +434,8 @@ fn save(app: &mut App, text: &str) -> Result<Option<String>, String> {
     if is_path {
         let path = expand_home(text);
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
-        let scene = scene_to_save(app, stem);
-        let view = app.view();
-        let written = app
-            .registry
-            .save_scene_with_view(
-                &scene,
-                app.description.as_deref(),
-                &view,
-                SaveTarget::Path(&path),
-            )
-            .map_err(|e| e.to_string())?;
-        saved(app, scene, view, None);
-        return Ok(Some(format!("saved {}", absolute(&written))));
+        let stem = stem.to_string();
+        return write_scene(app, &stem, SaveTarget::Path(&path)).map(Some);
     }
     if app.registry.is_builtin_scene(text) && !is_user_preset(app, text) {
         app.mode = Mode::Confirm(Confirm::ShadowBuiltin(text.to_string()));
@@ -457,18 +446,20 @@ fn save(app: &mut App, text: &str) -> Result<Option<String>, String> {
 
 /// Writes the user preset `name` (kebab-case), whatever it hides.
 fn save_preset(app: &mut App, name: &str) -> Result<String, String> {
+    write_scene(app, name, SaveTarget::UserPreset { name })
+}
+
+/// Writes the draft (named `name` if edited), its view and description to `target`; a user preset
+/// becomes the preset shown.
+fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<String, String> {
     let scene = scene_to_save(app, name);
     let view = app.view();
+    let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
     let written = app
         .registry
-        .save_scene_with_view(
-            &scene,
-            app.description.as_deref(),
-            &view,
-            SaveTarget::UserPreset { name },
-        )
+        .save_scene_with_view(&scene, app.description.as_deref(), &view, target)
         .map_err(|e| e.to_string())?;
-    saved(app, scene, view, Some(name));
+    saved(app, scene, view, preset);
     Ok(format!("saved {}", absolute(&written)))
 }
 
