@@ -66,6 +66,12 @@ pub fn run(scene: Scene, view: View, marker: MarkerStyle) -> color_eyre::Result<
             return Err(e).wrap_err("cannot set up the terminal");
         }
     };
+    // A panic must not leave the terminal sending mouse reports and paste marks to the shell.
+    let restore = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        runtime::release_terminal_modes();
+        restore(info);
+    }));
     let result = runtime::event_loop(&mut terminal, app);
     ratatui::restore();
     result
