@@ -64,12 +64,17 @@ const KEY_BURST_WAIT: Duration = Duration::from_millis(8);
 pub fn event_loop(terminal: &mut DefaultTerminal, app: App) -> color_eyre::Result<()> {
     execute!(std::io::stdout(), EnableBracketedPaste).wrap_err("cannot enable bracketed paste")?;
     let result = run(terminal, app);
+    release_terminal_modes();
+    result
+}
+
+/// Turns mouse capture and bracketed paste off (harmless when they are off already).
+pub fn release_terminal_modes() {
     let _ = execute!(
         std::io::stdout(),
         DisableMouseCapture,
         DisableBracketedPaste
     );
-    result
 }
 
 /// Draws one frame inside a synchronized update, so the terminal shows it whole.
