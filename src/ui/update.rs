@@ -143,12 +143,13 @@ fn normal(app: &mut App, action: Action) {
         Action::Tab(tab) => app.tab = tab,
         Action::Up => app.move_cursor(false),
         Action::Down => app.move_cursor(true),
-        Action::Jump(jump) => app.jump_cursor(jump),
+        // The form's rows are the explorer's: elsewhere they are not on screen.
+        Action::Jump(jump) if app.tab == Tab::Explorer => app.jump_cursor(jump),
         Action::Nudge(direction) => match app.cursor {
             Cursor::Field(field) => edited::nudge_within_domain(app, field, direction),
             Cursor::Model(_) => app.focused = step_model(app.focused, direction),
         },
-        Action::ResetField => match app.cursor {
+        Action::ResetField if app.tab == Tab::Explorer => match app.cursor {
             Cursor::Field(field) => edited::reset_field(app, field),
             Cursor::Model(_) => app.say("r resets the field under the cursor", true),
         },
@@ -207,6 +208,8 @@ fn normal(app: &mut App, action: Action) {
             }
         }
         Action::Cancel
+        | Action::Jump(_)
+        | Action::ResetField
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit
