@@ -20,13 +20,12 @@ fn main() -> color_eyre::Result<ExitCode> {
 /// terminal itself go through color_eyre.
 fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
     let scene = cli::load_registry().and_then(|registry| {
-        registry
-            .scene_with(&args.scene, &args.overrides)
-            .map_err(CliError::from)
+        let scene = registry.scene_with(&args.scene, &args.overrides)?;
+        Ok((scene, registry.scene_view(&args.scene)?))
     });
     match scene {
-        Ok(scene) => {
-            hertz_tui::ui::run(scene, args.marker)?;
+        Ok((scene, view)) => {
+            hertz_tui::ui::run(scene, view, args.marker)?;
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => Ok(exit(Err(e))),

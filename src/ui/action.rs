@@ -12,7 +12,26 @@ use super::worker::Report;
 /// One step of the state machine, from a key, the terminal or the solver.
 #[derive(Debug, Clone)]
 pub enum Action {
+    /// `q`: quit, asking first when there are unsaved changes.
     Quit,
+    /// `Ctrl-C`: like `Quit`, but a second one quits without asking.
+    Interrupt,
+    /// `y` to the question on screen.
+    Yes,
+    /// Text pasted from the terminal (bracketed paste).
+    Paste(String),
+    /// `u`: back to the draft before the last change.
+    Undo,
+    /// `r`: the field under the cursor back to the value of the scene as loaded or saved.
+    ResetField,
+    /// `Home` `End` `PgUp` `PgDn`: first or last row, previous or next section.
+    Jump(Jump),
+    /// `m`: mouse capture on or off.
+    ToggleMouse,
+    /// A left click at (column, row).
+    Click(u16, u16),
+    /// The wheel at (column, row): up or down.
+    Wheel(u16, u16, Nudge),
     /// Cursor (or picker selection) up / down.
     Up,
     Down,
@@ -44,4 +63,13 @@ pub enum Action {
     Solved(Report),
     /// The study worker finished a study (or panicked).
     Studied(StudyReport),
+}
+
+/// Where `Home` `End` `PgUp` `PgDn` go.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Jump {
+    First,
+    Last,
+    PreviousSection,
+    NextSection,
 }

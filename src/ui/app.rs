@@ -1,5 +1,6 @@
 //! The explorer's state; its transitions are in [`update`](super::update). No terminal here.
 
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use tui_input::Input;
@@ -8,10 +9,12 @@ use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::ode::Method;
 use crate::model::presets::Registry;
+use crate::model::scene_file::View;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::study::stability::critical_step;
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 
+use super::action::Jump;
 use super::field::{self, Draft, Field, Section};
 use super::marker::MarkerStyle;
 use super::picker::Picker;
@@ -65,6 +68,17 @@ pub struct Prompt {
     pub error: Option<String>,
 }
 
+/// What a yes/no question at the bottom of the screen would do on `y`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Confirm {
+    /// Quit with unsaved changes.
+    Quit,
+    /// Save a user preset that hides the built-in of this name.
+    ShadowBuiltin(String),
+    /// Export the model's trajectory over an existing file.
+    Overwrite { path: PathBuf, model: ForceModel },
+}
+
 /// What has the keyboard.
 #[derive(Debug, Clone)]
 pub enum Mode {
@@ -73,6 +87,7 @@ pub enum Mode {
     Help,
     Picker(Picker),
     Prompt(Prompt),
+    Confirm(Confirm),
 }
 
 /// The charts, in the order `c` cycles them.
@@ -111,13 +126,17 @@ pub struct Valid {
     pub params: ImpactParams,
 }
 
-/// Models checked when the explorer opens: the paper's Fig. 5 three plus elastic Hertz.
+/// Models checked when the explorer opens on a bare scene: the paper's Fig. 5 three plus elastic
+/// Hertz, the proposed model focused.
 const DEFAULT_CHECKED: [ForceModel; 4] = [
-    ForceModel::Quasistatic,
     ForceModel::Proposed,
+    ForceModel::Quasistatic,
     ForceModel::HuntCrossley,
     ForceModel::LankaraniNikravesh,
 ];
+
+/// Levels of `u` (undo).
+const UNDO_LEVELS: usize = 100;
 
 /// The whole state of the explorer.
 #[derive(Debug)]
@@ -125,8 +144,17 @@ pub struct App {
     pub draft: Draft,
     /// The scene as last loaded or saved, for the unsaved-changes mark.
     pub(super) saved: Scene,
+    /// The view (models, solver settings) as last loaded or saved, for resetting the solver rows.
+    pub(super) saved_view: View,
     /// The preset the scene was loaded from or saved as, if any.
     pub preset: Option<String>,
+    /// The description of that preset, kept when the scene is saved.
+    pub description: Option<String>,
+    /// Earlier drafts, the latest last, for `u`.
+    pub(super) undo: Vec<Draft>,
+    /// Whether the app asks the terminal for mouse events (`m` toggles; off lets the terminal
+    /// select text).
+    pub mouse: bool,
     pub registry: Registry,
     /// Why the draft scene is invalid, if it is; the results of `valid` stay on screen meanwhile.
     pub scene_error: Option<ModelError>,
@@ -169,25 +197,43 @@ pub(super) fn model_index(model: ForceModel) -> usize {
 impl App {
     /// The explorer on `scene`, with the solves of the checked models queued.
     pub fn new(scene: Scene, registry: Registry, marker: MarkerStyle, theme: Theme) -> App {
-        let mut checked = [false; LAW_COUNT];
-        for model in DEFAULT_CHECKED {
-            checked[model_index(model)] = true;
-        }
+        let view = View {
+            models: DEFAULT_CHECKED.to_vec(),
+            options: SolveOptions::default(),
+        };
+        App::open(scene, view, registry, marker, theme)
+    }
+
+    /// The explorer on `scene` as `view` asks (checked models, the first focused; solver settings).
+    pub fn open(
+        scene: Scene,
+        view: View,
+        registry: Registry,
+        marker: MarkerStyle,
+        theme: Theme,
+    ) -> App {
         let preset = registry
             .scenes()
             .iter()
             .find(|info| registry.scene(&info.name).is_ok_and(|s| s == scene))
             .map(|info| info.name.clone());
+        let description = preset
+            .as_deref()
+            .and_then(|name| registry.scene_description(name).ok().flatten());
         let mut app = App {
-            draft: Draft::new(scene.clone(), SolveOptions::default()),
+            draft: Draft::new(scene.clone(), view.options),
             saved: scene,
+            saved_view: view.clone(),
             preset,
+            description,
+            undo: Vec::new(),
+            mouse: true,
             registry,
             scene_error: None,
             valid: None,
             solutions: Solutions::default(),
-            checked,
-            focused: ForceModel::Proposed,
+            checked: [false; LAW_COUNT],
+            focused: view.focused(),
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
             tab: Tab::Explorer,
@@ -213,8 +259,58 @@ impl App {
                 error: true,
             });
         }
+        app.check_only(&view.models);
         app.recompute();
         app
+    }
+
+    /// Checks exactly `models` (nothing is solved here).
+    fn check_only(&mut self, models: &[ForceModel]) {
+        self.checked = [false; LAW_COUNT];
+        for &model in models {
+            self.checked[model_index(model)] = true;
+        }
+    }
+
+    /// The view to save: the focused model first if checked, then the other checked ones; the
+    /// solver settings of the draft.
+    pub fn view(&self) -> View {
+        let mut models = self.checked_models();
+        if let Some(i) = models.iter().position(|&m| m == self.focused) {
+            models[..=i].rotate_right(1);
+        }
+        if models.is_empty() {
+            models = self.saved_view.models.clone();
+        }
+        View {
+            models,
+            options: self.draft.options,
+        }
+    }
+
+    /// Loads a preset or scene file with its view; `name` becomes the preset shown.
+    pub(super) fn load_preset(&mut self, name: &str) -> Result<(), String> {
+        let scene = self.registry.scene(name).map_err(|e| e.to_string())?;
+        let view = self.registry.scene_view(name).map_err(|e| e.to_string())?;
+        self.description = self.registry.scene_description(name).ok().flatten();
+        self.check_only(&view.models);
+        self.focused = view.focused();
+        self.draft = Draft::new(scene.clone(), view.options);
+        self.saved = scene;
+        self.saved_view = view;
+        self.preset = Some(name.to_string());
+        self.recompute();
+        Ok(())
+    }
+
+    /// Records `before` for `u` when the draft has changed since.
+    pub(super) fn remember_for_undo(&mut self, before: Draft) {
+        if before != self.draft {
+            if self.undo.len() == UNDO_LEVELS {
+                self.undo.remove(0);
+            }
+            self.undo.push(before);
+        }
     }
 
     /// The solves requested since the last call, for the worker.
@@ -468,6 +564,33 @@ impl App {
         }
     }
 
+    /// `Home` `End` `PgUp` `PgDn`: the first or last row, or the first field of the previous or
+    /// next section (the models count as the last section).
+    pub(super) fn jump_cursor(&mut self, jump: Jump) {
+        let rows = self.rows();
+        let section_of = |row: &Cursor| match row {
+            Cursor::Field(f) => Some(f.section()),
+            Cursor::Model(_) => None,
+        };
+        let starts: Vec<usize> = (0..rows.len())
+            .filter(|&i| i == 0 || section_of(&rows[i]) != section_of(&rows[i - 1]))
+            .collect();
+        let here = rows.iter().position(|&r| r == self.cursor).unwrap_or(0);
+        let current = starts.iter().rposition(|&s| s <= here).unwrap_or(0);
+        let target = match jump {
+            Jump::First => 0,
+            Jump::Last => rows.len().saturating_sub(1),
+            // From inside a section, PgUp goes to its own start first.
+            Jump::PreviousSection if starts[current] < here => starts[current],
+            Jump::PreviousSection => starts[current.saturating_sub(1)],
+            Jump::NextSection => starts.get(current + 1).copied().unwrap_or(starts[current]),
+        };
+        self.cursor = rows[target];
+        if let Cursor::Model(model) = self.cursor {
+            self.focused = model;
+        }
+    }
+
     pub(super) fn toggle(&mut self, model: ForceModel) {
         let i = model_index(model);
         self.checked[i] = !self.checked[i];
@@ -476,11 +599,5 @@ impl App {
             // A cached result needs no solve, and then there is no recompute time to report.
             self.request_solves(Instant::now());
         }
-    }
-
-    pub(super) fn load_scene(&mut self, scene: Scene) {
-        self.draft = Draft::new(scene.clone(), self.draft.options);
-        self.saved = scene;
-        self.recompute();
     }
 }

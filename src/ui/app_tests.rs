@@ -18,7 +18,7 @@ use crate::model::{ForceModel, ModelError};
 
 const V0: Field = Field::Number(SceneKey::V0);
 
-fn app() -> App {
+pub(super) fn app() -> App {
     App::new(
         fig5_scene(),
         Registry::builtin().unwrap(),
@@ -28,7 +28,7 @@ fn app() -> App {
 }
 
 /// Solves every queued job on this thread and feeds the outcomes back, as the worker would.
-fn settle(app: &mut App) {
+pub(super) fn settle(app: &mut App) {
     loop {
         let jobs = app.take_jobs();
         if jobs.is_empty() {
@@ -40,25 +40,25 @@ fn settle(app: &mut App) {
     }
 }
 
-fn key_with(app: &mut App, code: KeyCode, modifiers: KeyModifiers) {
+pub(super) fn key_with(app: &mut App, code: KeyCode, modifiers: KeyModifiers) {
     let event = Event::Key(KeyEvent::new(code, modifiers));
     if let Some(action) = action_for_event(&app.mode, &event) {
         update(app, action);
     }
 }
 
-fn key(app: &mut App, code: KeyCode) {
+pub(super) fn key(app: &mut App, code: KeyCode) {
     key_with(app, code, KeyModifiers::NONE);
 }
 
-fn type_text(app: &mut App, text: &str) {
+pub(super) fn type_text(app: &mut App, text: &str) {
     for c in text.chars() {
         key(app, KeyCode::Char(c));
     }
 }
 
 /// Replaces the text of the open editor or prompt by `text` and presses Enter.
-fn enter_text(app: &mut App, text: &str) {
+pub(super) fn enter_text(app: &mut App, text: &str) {
     key_with(app, KeyCode::Char('u'), KeyModifiers::CONTROL);
     type_text(app, text);
     key(app, KeyCode::Enter);
@@ -364,7 +364,7 @@ fn presets_load_scenes_and_apply_materials_to_either_body() {
     assert!(matches!(a.mode, Mode::Normal));
 }
 
-fn temp_path(name: &str) -> std::path::PathBuf {
+pub(super) fn temp_path(name: &str) -> std::path::PathBuf {
     std::env::temp_dir().join(format!("hertz-tui-{}-{name}", std::process::id()))
 }
 
@@ -525,7 +525,11 @@ fn saving_as_a_user_preset_lists_it_in_the_picker() {
     );
     key(&mut a, KeyCode::Char('s'));
     match &a.mode {
-        Mode::Prompt(p) => assert_eq!(p.input.value(), crate::model::presets::DEFAULT_SCENE),
+        // A new name by default: saving never hides the built-in without asking.
+        Mode::Prompt(p) => assert_eq!(
+            p.input.value(),
+            format!("{}-edited", crate::model::presets::DEFAULT_SCENE)
+        ),
         other => panic!("{other:?}"),
     }
     enter_text(&mut a, "my-fig5");

@@ -164,14 +164,14 @@ pub fn all_fields(draft: &Draft) -> Vec<Field> {
         .collect()
 }
 
-fn body(scene: &Scene, index: BodyIndex) -> &crate::model::Body {
+pub(super) fn body(scene: &Scene, index: BodyIndex) -> &crate::model::Body {
     match index {
         BodyIndex::One => &scene.body1,
         BodyIndex::Two => &scene.body2,
     }
 }
 
-fn body_mut(scene: &mut Scene, index: BodyIndex) -> &mut crate::model::Body {
+pub(super) fn body_mut(scene: &mut Scene, index: BodyIndex) -> &mut crate::model::Body {
     match index {
         BodyIndex::One => &mut scene.body1,
         BodyIndex::Two => &mut scene.body2,

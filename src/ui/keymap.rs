@@ -1,51 +1,61 @@
 //! Key → action, per mode. The only place that knows which key does what (the help lists them).
 
-use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use ratatui::crossterm::event::{
+    Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 use tui_input::backend::crossterm::to_input_request;
 
 use crate::model::scene_key::BodyIndex;
 
-use super::action::Action;
-use super::app::Mode;
+use super::action::{Action, Jump};
+use super::app::{Confirm, Mode};
 use super::field::Nudge;
 use super::tab::Tab;
 
-/// The key bindings, as the help screen lists them: (keys, what they do).
+/// The key bindings, as the help screen lists them: (keys, what they do); one line each at 80
+/// columns, and all of them with the input hints within 24 rows.
 pub const BINDINGS: &[(&str, &str)] = &[
     (
         "1 2 3 4",
         "views: explorer · work–precision · stability · sweep",
     ),
-    ("↑ ↓  Tab  S-Tab", "move between fields and models"),
+    ("↑ ↓ k j Tab S-Tab", "move between fields and models"),
+    ("Home End g G", "first / last row"),
+    ("PgUp PgDn", "previous / next section"),
     (
         "Enter",
-        "edit the field (Enter commits, Esc cancels) · toggle a model",
+        "edit (Enter commits, Esc cancels) · toggle a model",
     ),
     (
-        "← →  − +",
-        "nudge the value by one step of its 2nd digit; cycle choices",
+        "← → h l - + =",
+        "nudge the 2nd digit, up to the bound; cycle choices",
     ),
-    ("Space", "check / uncheck the model (drawn and tabulated)"),
-    ("[  ]", "focus the previous / next model"),
+    (
+        "Space [ ]",
+        "check / uncheck the model · focus previous / next",
+    ),
+    (
+        "u r",
+        "undo (100 levels) · reset the field to the loaded scene",
+    ),
     ("c", "next chart (when only one fits)"),
     (
         "p",
-        "presets: scenes; materials (1 / 2 apply one to body 1 / 2)",
+        "presets: type to filter; Enter loads (1 2: to body 1 2)",
     ),
-    (
-        "s",
-        "save the scene (preset name, or a path ending in .toml)",
-    ),
-    ("e", "export the focused model's trajectory as CSV"),
-    ("in 2", "work–precision of every method, focused model"),
+    ("s e", "save the scene (name or path.toml) · export as CSV"),
+    ("m", "mouse on / off (off: the terminal selects text)"),
+    ("paste", "opens the field under the cursor with the text"),
     (
         "in 3",
         "Enter types the step (auto: rk4 critical); ← → ½× 2×",
     ),
     ("in 4", "↑ ↓ rows; ← → change; Enter types or switches"),
-    ("?", "this help"),
-    ("Esc", "close · cancel · clear the message"),
-    ("q  Ctrl-C", "quit (q closes an overlay; q again quits)"),
+    ("? Esc", "this help · close, cancel, clear the message"),
+    (
+        "q Ctrl-C",
+        "quit (unsaved: asks, y quits); Ctrl-C twice: at once",
+    ),
 ];
 
 /// How numbers are typed, and the display options, for the help screen.
@@ -62,13 +72,25 @@ pub fn action_for_event(mode: &Mode, event: &Event) -> Option<Action> {
             action_for_key(mode, event, *key)
         }
         Event::Resize(width, height) => Some(Action::Resize(*width, *height)),
+        Event::Paste(text) => Some(Action::Paste(text.clone())),
+        Event::Mouse(mouse) => action_for_mouse(*mouse),
         _ => None,
     }
 }
 
+fn action_for_mouse(mouse: MouseEvent) -> Option<Action> {
+    let (column, row) = (mouse.column, mouse.row);
+    Some(match mouse.kind {
+        MouseEventKind::Down(MouseButton::Left) => Action::Click(column, row),
+        MouseEventKind::ScrollUp => Action::Wheel(column, row, Nudge::Up),
+        MouseEventKind::ScrollDown => Action::Wheel(column, row, Nudge::Down),
+        _ => return None,
+    })
+}
+
 fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
     if key.modifiers.contains(KeyModifiers::CONTROL) && key.code == KeyCode::Char('c') {
-        return Some(Action::Quit);
+        return Some(Action::Interrupt);
     }
     match mode {
         Mode::Normal => normal(key),
@@ -83,16 +105,31 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
             }
             _ => return None,
         }),
-        Mode::Picker(_) => Some(match key.code {
-            KeyCode::Up | KeyCode::Char('k') | KeyCode::BackTab => Action::Up,
-            KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => Action::Down,
-            KeyCode::Enter => Action::Enter,
-            KeyCode::Char('1') => Action::ApplyMaterialTo(BodyIndex::One),
-            KeyCode::Char('2') => Action::ApplyMaterialTo(BodyIndex::Two),
-            KeyCode::Esc | KeyCode::Char('q') | KeyCode::Char('p') => Action::Cancel,
-            _ => return None,
+        Mode::Picker(picker) => picker_key(picker.filter.is_empty(), event, key),
+        Mode::Confirm(confirm) => Some(match (confirm, key.code) {
+            (_, KeyCode::Char('y' | 'Y')) => Action::Yes,
+            (Confirm::Quit, KeyCode::Char('q')) => Action::Quit,
+            (Confirm::Quit, KeyCode::Char('s')) => Action::Save,
+            _ => Action::Cancel,
         }),
     }
+}
+
+/// In the picker, letters and digits type into the filter; while it is empty `q` and `p` close
+/// the picker and `1` `2` apply a material to body 1 or 2.
+fn picker_key(filter_empty: bool, event: &Event, key: KeyEvent) -> Option<Action> {
+    Some(match key.code {
+        KeyCode::Up | KeyCode::BackTab => Action::Up,
+        KeyCode::Down | KeyCode::Tab => Action::Down,
+        KeyCode::Home | KeyCode::PageUp => Action::Jump(Jump::First),
+        KeyCode::End | KeyCode::PageDown => Action::Jump(Jump::Last),
+        KeyCode::Enter => Action::Enter,
+        KeyCode::Esc => Action::Cancel,
+        KeyCode::Char('1') if filter_empty => Action::ApplyMaterialTo(BodyIndex::One),
+        KeyCode::Char('2') if filter_empty => Action::ApplyMaterialTo(BodyIndex::Two),
+        KeyCode::Char('q' | 'p') if filter_empty => Action::Cancel,
+        _ => return to_input_request(event).map(Action::Input),
+    })
 }
 
 fn normal(key: KeyEvent) -> Option<Action> {
@@ -100,6 +137,10 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('q') => Action::Quit,
         KeyCode::Up | KeyCode::Char('k') | KeyCode::BackTab => Action::Up,
         KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => Action::Down,
+        KeyCode::Home | KeyCode::Char('g') => Action::Jump(Jump::First),
+        KeyCode::End | KeyCode::Char('G') => Action::Jump(Jump::Last),
+        KeyCode::PageUp => Action::Jump(Jump::PreviousSection),
+        KeyCode::PageDown => Action::Jump(Jump::NextSection),
         KeyCode::Left | KeyCode::Char('-') | KeyCode::Char('h') => Action::Nudge(Nudge::Down),
         KeyCode::Right | KeyCode::Char('+') | KeyCode::Char('=') | KeyCode::Char('l') => {
             Action::Nudge(Nudge::Up)
@@ -114,6 +155,9 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,
+        KeyCode::Char('u') => Action::Undo,
+        KeyCode::Char('r') => Action::ResetField,
+        KeyCode::Char('m') => Action::ToggleMouse,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

@@ -9,13 +9,17 @@
 pub mod action;
 pub mod app;
 #[cfg(test)]
+mod app_daily_tests;
+#[cfg(test)]
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+mod edited;
 pub mod export;
 pub mod field;
 pub mod keymap;
 mod marker;
+mod mouse;
 pub mod picker;
 pub mod plot;
 pub mod render;
@@ -43,18 +47,19 @@ use color_eyre::eyre::WrapErr;
 
 use crate::model::Scene;
 use crate::model::presets::Registry;
+use crate::model::scene_file::View;
 
 use app::App;
 use theme::Theme;
 
-/// Opens the explorer on `scene` and runs it until the user quits; the terminal is restored on
+/// Opens the explorer on `scene`, as `view` asks (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
-pub fn run(scene: Scene, marker: MarkerStyle) -> color_eyre::Result<()> {
+pub fn run(scene: Scene, view: View, marker: MarkerStyle) -> color_eyre::Result<()> {
     let registry = Registry::load()
         .or_else(|_| Registry::builtin())
         .wrap_err("cannot load the presets")?;
-    let app = App::new(scene, registry, marker, Theme::from_env());
+    let app = App::open(scene, view, registry, marker, Theme::from_env());
     let mut terminal = match ratatui::try_init() {
         Ok(terminal) => terminal,
         Err(e) => {
@@ -62,6 +67,12 @@ pub fn run(scene: Scene, marker: MarkerStyle) -> color_eyre::Result<()> {
             return Err(e).wrap_err("cannot set up the terminal");
         }
     };
+    // A panic must not leave the terminal sending mouse reports and paste marks to the shell.
+    let restore = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        runtime::release_terminal_modes();
+        restore(info);
+    }));
     let result = runtime::event_loop(&mut terminal, app);
     ratatui::restore();
     result

@@ -1,4 +1,6 @@
-//! The presets picker: built-in and user scenes, then materials.
+//! The presets picker: built-in and user scenes, then materials; typing filters them.
+
+use tui_input::InputRequest;
 
 use crate::model::presets::{Origin, Registry};
 
@@ -19,11 +21,24 @@ pub struct Entry {
     pub origin: String,
 }
 
-/// The picker's rows and selection.
+/// The picker's rows, filter and selection.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Picker {
     pub entries: Vec<Entry>,
+    /// Typed text; the rows shown are those whose name or description contain every word of it.
+    pub filter: String,
+    /// Index into [`Picker::visible`].
     pub selected: usize,
+}
+
+impl Entry {
+    fn matches(&self, filter: &str) -> bool {
+        let haystack = format!("{} {}", self.name, self.description).to_lowercase();
+        filter
+            .to_lowercase()
+            .split_whitespace()
+            .all(|word| haystack.contains(word))
+    }
 }
 
 impl Picker {
@@ -51,17 +66,48 @@ impl Picker {
             .collect();
         Picker {
             entries,
+            filter: String::new(),
             selected: 0,
         }
     }
 
+    /// The rows the filter lets through, in order.
+    pub fn visible(&self) -> Vec<&Entry> {
+        self.entries
+            .iter()
+            .filter(|e| e.matches(&self.filter))
+            .collect()
+    }
+
     pub fn selected(&self) -> Option<&Entry> {
-        self.entries.get(self.selected)
+        self.visible().get(self.selected).copied()
+    }
+
+    /// Types into the filter (characters, backspace, clearing); the selection goes to the top.
+    pub fn edit_filter(&mut self, request: InputRequest) {
+        match request {
+            InputRequest::InsertChar(c) => self.filter.push(c),
+            InputRequest::DeletePrevChar => {
+                self.filter.pop();
+            }
+            InputRequest::DeleteLine | InputRequest::DeleteTillEnd => self.filter.clear(),
+            _ => return,
+        }
+        self.selected = 0;
+    }
+
+    /// The first or the last visible row.
+    pub fn jump(&mut self, to_end: bool) {
+        self.selected = if to_end {
+            self.visible().len().saturating_sub(1)
+        } else {
+            0
+        };
     }
 
     /// Moves the selection, wrapping around.
     pub fn step(&mut self, forward: bool) {
-        let n = self.entries.len();
+        let n = self.visible().len();
         if n == 0 {
             return;
         }
@@ -75,7 +121,7 @@ impl Picker {
     /// Selects the entry of `kind` called `name`, if listed.
     pub fn select(&mut self, kind: EntryKind, name: &str) {
         if let Some(i) = self
-            .entries
+            .visible()
             .iter()
             .position(|e| e.kind == kind && e.name == name)
         {
@@ -110,5 +156,36 @@ mod tests {
         assert_eq!(picker.selected, 0);
         picker.select(EntryKind::Material, "steel");
         assert_eq!(picker.selected().map(|e| e.name.as_str()), Some("steel"));
+    }
+
+    #[test]
+    fn typing_filters_by_name_and_description() {
+        let registry = Registry::builtin().unwrap();
+        let mut picker = Picker::new(&registry);
+        picker.step(true);
+        for c in "FIG 4".chars() {
+            picker.edit_filter(InputRequest::InsertChar(c));
+        }
+        let names: Vec<&str> = picker.visible().iter().map(|e| e.name.as_str()).collect();
+        assert_eq!(
+            names,
+            ["fig4-steel-sphere-r10-plate"],
+            "every word, any case"
+        );
+        assert_eq!(picker.selected, 0, "the selection goes to the top");
+        for c in "zzz".chars() {
+            picker.edit_filter(InputRequest::InsertChar(c));
+        }
+        assert!(picker.selected().is_none(), "nothing matches");
+        picker.edit_filter(InputRequest::DeleteLine);
+        for c in "alumin".chars() {
+            picker.edit_filter(InputRequest::InsertChar(c));
+        }
+        // The aluminium sphere scene by its name, the material by its name.
+        assert_eq!(picker.visible().len(), 2);
+        picker.edit_filter(InputRequest::DeletePrevChar);
+        assert_eq!(picker.filter, "alumi");
+        picker.jump(true);
+        assert_eq!(picker.selected().map(|e| e.kind), Some(EntryKind::Material));
     }
 }

@@ -1,17 +1,20 @@
 //! `update(&mut App, Action)`: the transitions of the state machine, one function per mode.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use tui_input::Input;
+use tui_input::{Input, InputRequest};
 
-use crate::model::ForceModel;
-use crate::model::presets::{Registry, SaveTarget, is_kebab_case, kebab_case};
+use crate::model::presets::{Origin, Registry, SaveTarget, is_kebab_case, kebab_case};
+use crate::model::scene_file::View;
 use crate::model::scene_key::BodyIndex;
+use crate::model::{ForceModel, Scene};
 
-use super::action::Action;
-use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
+use super::action::{Action, Jump};
+use super::app::{App, Confirm, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
+use super::edited;
 use super::export;
 use super::field::{Field, Nudge};
+use super::mouse;
 use super::picker::{EntryKind, Picker};
 use super::study_worker::StudyReport;
 use super::tab::Tab;
@@ -20,31 +23,80 @@ use super::worker::Report;
 
 /// Advances the state machine by one action.
 pub fn update(app: &mut App, action: Action) {
+    let before = app.draft.clone();
+    let undoing = matches!(action, Action::Undo);
     transition(app, action);
+    edited::name_edited_materials(app);
+    if !undoing {
+        app.remember_for_undo(before);
+    }
     // Whatever changed, the shown tab asks for the studies it lacks (same inputs ask nothing).
     app.request_studies();
 }
 
 fn transition(app: &mut App, action: Action) {
     match action {
-        Action::Quit => app.quit = true,
+        Action::Quit if matches!(app.mode, Mode::Normal | Mode::Confirm(Confirm::Quit)) => {
+            quit_or_ask(app, matches!(app.mode, Mode::Confirm(Confirm::Quit)))
+        }
+        Action::Interrupt => quit_or_ask(app, matches!(app.mode, Mode::Confirm(Confirm::Quit))),
         Action::Resize(width, height) => app.screen = (width, height),
         Action::Solved(report) => solved(app, report),
         Action::Studied(report) => studied(app, report),
+        Action::ToggleMouse => {
+            app.mouse = !app.mouse;
+            app.say(
+                if app.mouse {
+                    "mouse on: click and scroll (m: off, to select text)"
+                } else {
+                    "mouse off: the terminal selects text (m: on)"
+                },
+                false,
+            );
+        }
         action => {
             app.message = None;
             match std::mem::replace(&mut app.mode, Mode::Normal) {
                 Mode::Normal => normal(app, action),
                 Mode::Editing(editor) => editing(app, editor, action),
                 Mode::Help => {
-                    if !matches!(action, Action::Cancel | Action::Enter) {
+                    if !matches!(action, Action::Cancel | Action::Enter | Action::Quit) {
                         app.mode = Mode::Help;
                     }
                 }
                 Mode::Picker(picker) => picking(app, picker, action),
                 Mode::Prompt(prompt) => prompting(app, prompt, action),
+                Mode::Confirm(confirm) => confirming(app, confirm, action),
             }
         }
+    }
+}
+
+/// Quits at once when nothing would be lost or `again` (the question was already asked); else asks.
+fn quit_or_ask(app: &mut App, again: bool) {
+    if again || !app.is_dirty() {
+        app.quit = true;
+    } else {
+        app.mode = Mode::Confirm(Confirm::Quit);
+    }
+}
+
+fn confirming(app: &mut App, confirm: Confirm, action: Action) {
+    match (confirm, action) {
+        (Confirm::Quit, Action::Yes) => app.quit = true,
+        (Confirm::Quit, Action::Save) => normal(app, Action::Save),
+        (Confirm::ShadowBuiltin(name), Action::Yes) => match save_preset(app, &name) {
+            Ok(news) => app.say(news, false),
+            Err(reason) => app.say(reason, true),
+        },
+        (Confirm::Overwrite { path, model }, Action::Yes) => {
+            match export_model(app, model, &path) {
+                Ok(news) => app.say(news, false),
+                Err(reason) => app.say(reason, true),
+            }
+        }
+        // Anything else is a no: the question closes and nothing happens.
+        _ => app.say("not done", false),
     }
 }
 
@@ -71,6 +123,14 @@ fn studied(app: &mut App, report: StudyReport) {
 }
 
 fn normal(app: &mut App, action: Action) {
+    // Keys that act the same on every tab.
+    let action = match action {
+        Action::Paste(text) => return paste_in_normal(app, &text),
+        Action::Undo => return undo(app),
+        Action::Click(column, row) => return mouse::click(app, column, row),
+        Action::Wheel(column, row, direction) => return mouse::wheel(app, column, row, direction),
+        action => action,
+    };
     let action = match app.tab {
         Tab::Explorer => action,
         // The study tabs take the keys that act on their own settings; the rest is shared.
@@ -83,26 +143,20 @@ fn normal(app: &mut App, action: Action) {
         Action::Tab(tab) => app.tab = tab,
         Action::Up => app.move_cursor(false),
         Action::Down => app.move_cursor(true),
+        // The form's rows are the explorer's: elsewhere they are not on screen.
+        Action::Jump(jump) if app.tab == Tab::Explorer => app.jump_cursor(jump),
         Action::Nudge(direction) => match app.cursor {
-            Cursor::Field(field) => {
-                if field == Field::Dt && app.draft.options.dt.is_none() {
-                    // ←/→ from `auto` halve/double the solver's own step.
-                    app.draft.options.dt = app.auto_dt();
-                }
-                if field.nudge(direction, &mut app.draft) {
-                    app.recompute();
-                }
-            }
+            Cursor::Field(field) => edited::nudge_within_domain(app, field, direction),
             Cursor::Model(_) => app.focused = step_model(app.focused, direction),
+        },
+        Action::ResetField if app.tab == Tab::Explorer => match app.cursor {
+            Cursor::Field(field) => edited::reset_field(app, field),
+            Cursor::Model(_) => app.say("r resets the field under the cursor", true),
         },
         Action::Enter => match app.cursor {
             Cursor::Field(field) => {
                 let text = field.edit_text(&app.draft);
-                app.mode = Mode::Editing(Editor {
-                    target: EditTarget::Field(field),
-                    input: Input::new(text),
-                    error: None,
-                });
+                open_field_editor(app, field, text);
             }
             Cursor::Model(model) => app.toggle(model),
         },
@@ -121,12 +175,7 @@ fn normal(app: &mut App, action: Action) {
             app.mode = Mode::Picker(picker);
         }
         Action::Save => {
-            let name = &app.draft.scene.name;
-            let suggestion = match &app.preset {
-                Some(preset) => preset.clone(),
-                None if is_kebab_case(name) => name.clone(),
-                None => kebab_case(name),
-            };
+            let suggestion = save_suggestion(app);
             app.mode = Mode::Prompt(Prompt {
                 kind: PromptKind::Save,
                 input: Input::new(suggestion),
@@ -159,13 +208,79 @@ fn normal(app: &mut App, action: Action) {
             }
         }
         Action::Cancel
+        | Action::Jump(_)
+        | Action::ResetField
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit
+        | Action::Interrupt
+        | Action::Yes
+        | Action::Paste(_)
+        | Action::Undo
+        | Action::ToggleMouse
+        | Action::Click(..)
+        | Action::Wheel(..)
         | Action::Resize(..)
         | Action::Solved(_)
         | Action::Studied(_) => {}
     }
+}
+
+fn open_field_editor(app: &mut App, field: Field, text: String) {
+    app.mode = Mode::Editing(Editor {
+        target: EditTarget::Field(field),
+        input: Input::new(text),
+        error: None,
+    });
+}
+
+/// A paste outside an editor opens the field under the cursor with the pasted text (its first
+/// line); elsewhere it is ignored, with a message, so that pasted characters never run commands.
+fn paste_in_normal(app: &mut App, text: &str) {
+    let line = text.lines().next().unwrap_or_default().trim().to_string();
+    match (app.tab, app.cursor) {
+        (Tab::Explorer, Cursor::Field(field)) if !line.is_empty() => {
+            open_field_editor(app, field, line);
+        }
+        _ => app.say(
+            "paste ignored: move to a field of the explorer (1) and paste there",
+            true,
+        ),
+    }
+}
+
+fn undo(app: &mut App) {
+    match app.undo.pop() {
+        Some(draft) => {
+            app.draft = draft;
+            app.recompute();
+            app.say(format!("undone ({} more)", app.undo.len()), false);
+        }
+        None => app.say("nothing to undo", true),
+    }
+}
+
+/// The name `s` proposes: the user preset the scene came from, else a new name that hides no
+/// built-in (`<preset>-edited`, `-edited-2`, …).
+fn save_suggestion(app: &App) -> String {
+    let base = match &app.preset {
+        Some(preset) if !app.registry.is_builtin_scene(preset) => return preset.clone(),
+        Some(preset) => preset.clone(),
+        None if is_kebab_case(&app.draft.scene.name) => app.draft.scene.name.clone(),
+        None => kebab_case(&app.draft.scene.name),
+    };
+    let base = if base.is_empty() {
+        "scene".to_string()
+    } else {
+        base
+    };
+    (1..)
+        .map(|n| match n {
+            1 => format!("{base}-edited"),
+            n => format!("{base}-edited-{n}"),
+        })
+        .find(|name| !app.registry.scenes().iter().any(|s| &s.name == name))
+        .unwrap_or(base)
 }
 
 fn step_model(model: ForceModel, direction: Nudge) -> ForceModel {
@@ -181,6 +296,10 @@ fn editing(app: &mut App, mut editor: Editor, action: Action) {
     match action {
         Action::Input(request) => {
             editor.input.handle(request);
+            app.mode = Mode::Editing(editor);
+        }
+        Action::Paste(text) => {
+            insert(&mut editor.input, &text);
             app.mode = Mode::Editing(editor);
         }
         Action::Enter => {
@@ -211,6 +330,23 @@ fn picking(app: &mut App, mut picker: Picker, action: Action) {
             app.mode = Mode::Picker(picker);
             return;
         }
+        Action::Jump(jump) => {
+            picker.jump(matches!(jump, Jump::Last | Jump::NextSection));
+            app.mode = Mode::Picker(picker);
+            return;
+        }
+        Action::Input(request) => {
+            picker.edit_filter(request);
+            app.mode = Mode::Picker(picker);
+            return;
+        }
+        Action::Paste(text) => {
+            for c in text.lines().next().unwrap_or_default().chars() {
+                picker.edit_filter(InputRequest::InsertChar(c));
+            }
+            app.mode = Mode::Picker(picker);
+            return;
+        }
         Action::Enter => app.cursor_body(),
         Action::ApplyMaterialTo(index) => index,
         Action::Cancel => return,
@@ -220,16 +356,14 @@ fn picking(app: &mut App, mut picker: Picker, action: Action) {
         }
     };
     let Some(entry) = picker.selected().cloned() else {
+        app.mode = Mode::Picker(picker);
+        app.say("no preset matches the filter", true);
         return;
     };
     match entry.kind {
-        EntryKind::Scene => match app.registry.scene(&entry.name) {
-            Ok(scene) => {
-                app.load_scene(scene);
-                app.preset = Some(entry.name.clone());
-                app.say(format!("loaded scene {}", entry.name), false);
-            }
-            Err(e) => app.say(e.to_string(), true),
+        EntryKind::Scene => match app.load_preset(&entry.name) {
+            Ok(()) => app.say(format!("loaded scene {}", entry.name), false),
+            Err(e) => app.say(e, true),
         },
         EntryKind::Material => match app.registry.material(&entry.name) {
             Ok(material) => {
@@ -247,20 +381,33 @@ fn picking(app: &mut App, mut picker: Picker, action: Action) {
     }
 }
 
+/// Types the first line of `text` into `input` at its cursor.
+fn insert(input: &mut Input, text: &str) {
+    for c in text.lines().next().unwrap_or_default().chars() {
+        input.handle(InputRequest::InsertChar(c));
+    }
+}
+
 fn prompting(app: &mut App, mut prompt: Prompt, action: Action) {
     match action {
         Action::Input(request) => {
             prompt.input.handle(request);
             app.mode = Mode::Prompt(prompt);
         }
+        Action::Paste(text) => {
+            insert(&mut prompt.input, &text);
+            app.mode = Mode::Prompt(prompt);
+        }
         Action::Enter => {
             let text = prompt.input.value().trim().to_string();
             let outcome = match prompt.kind {
                 PromptKind::Save => save(app, &text),
-                PromptKind::Export(model) => export_model(app, model, &text),
+                PromptKind::Export(model) => export_asking(app, model, &text),
             };
             match outcome {
-                Ok(news) => app.say(news, false),
+                Ok(Some(news)) => app.say(news, false),
+                // A question took over the bottom line.
+                Ok(None) => {}
                 Err(reason) => {
                     prompt.error = Some(reason);
                     app.mode = Mode::Prompt(prompt);
@@ -280,46 +427,106 @@ fn expand_home(text: &str) -> PathBuf {
     }
 }
 
-/// Saves the draft as a user preset (a kebab-case name) or to a path (with `/` or `.toml`).
-fn save(app: &mut App, text: &str) -> Result<String, String> {
+/// Saves the draft as a user preset (a kebab-case name) or to a path (with `/` or `.toml`);
+/// a built-in's name asks first (`Ok(None)`).
+fn save(app: &mut App, text: &str) -> Result<Option<String>, String> {
     if text.is_empty() {
         return Err("type a preset name or a path ending in .toml".into());
     }
     let is_path = text.contains(['/', '\\']) || text.ends_with(".toml");
-    let scene = app.draft.scene.clone();
-    let written = if is_path {
+    if is_path {
         let path = expand_home(text);
-        app.registry
-            .save_scene(&scene, None, SaveTarget::Path(&path))
-            .map_err(|e| e.to_string())?
-    } else {
-        let path = app
-            .registry
-            .save_scene(&scene, None, SaveTarget::UserPreset { name: text })
-            .map_err(|e| e.to_string())?;
-        app.preset = Some(text.to_string());
-        path
-    };
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
+        let stem = stem.to_string();
+        return write_scene(app, &stem, SaveTarget::Path(&path)).map(Some);
+    }
+    if app.registry.is_builtin_scene(text) && !is_user_preset(app, text) {
+        app.mode = Mode::Confirm(Confirm::ShadowBuiltin(text.to_string()));
+        return Ok(None);
+    }
+    save_preset(app, text).map(Some)
+}
+
+/// Writes the user preset `name` (kebab-case), whatever it hides.
+fn save_preset(app: &mut App, name: &str) -> Result<String, String> {
+    write_scene(app, name, SaveTarget::UserPreset { name })
+}
+
+/// Writes the draft (named `name` if edited), its view and description to `target`; a user preset
+/// becomes the preset shown.
+fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<String, String> {
+    let scene = scene_to_save(app, name);
+    let view = app.view();
+    let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
+    let written = app
+        .registry
+        .save_scene_with_view(&scene, app.description.as_deref(), &view, target)
+        .map_err(|e| e.to_string())?;
+    saved(app, scene, view, preset);
+    Ok(format!("saved {}", absolute(&written)))
+}
+
+/// Whether a user preset called `name` exists already (it already hides the built-in).
+fn is_user_preset(app: &App, name: &str) -> bool {
+    app.registry
+        .scenes()
+        .iter()
+        .any(|s| s.name == name && matches!(s.origin, Origin::User(_)))
+}
+
+/// The draft, named after the file it goes to when it was edited: an edited Fig. 5 saved as
+/// `my-impact` is no longer "Fig. 5: …".
+fn scene_to_save(app: &App, name: &str) -> Scene {
+    let mut scene = app.draft.scene.clone();
+    if app.is_dirty() {
+        scene.name = name.to_string();
+    }
+    scene
+}
+
+/// After a save: the saved scene is the reference for `*` and resets, the registry lists it.
+fn saved(app: &mut App, scene: Scene, view: View, preset: Option<&str>) {
+    app.draft.scene.name = scene.name.clone();
     app.saved = scene;
+    app.saved_view = view;
+    if let Some(name) = preset {
+        app.preset = Some(name.to_string());
+    }
     if let Ok(registry) = Registry::load_from(app.registry.user_dir()) {
         app.registry = registry;
     }
-    Ok(format!("saved {}", written.display()))
 }
 
-fn export_model(app: &App, model: ForceModel, text: &str) -> Result<String, String> {
+/// `path` made absolute for messages (unchanged if the working folder cannot be read).
+fn absolute(path: &Path) -> String {
+    std::path::absolute(path)
+        .unwrap_or_else(|_| path.to_path_buf())
+        .display()
+        .to_string()
+}
+
+/// Exports, asking first when the file exists (`Ok(None)`).
+fn export_asking(app: &mut App, model: ForceModel, text: &str) -> Result<Option<String>, String> {
     if text.is_empty() {
         return Err("type a file name".into());
     }
+    let path = expand_home(text);
+    if path.exists() {
+        app.mode = Mode::Confirm(Confirm::Overwrite { path, model });
+        return Ok(None);
+    }
+    export_model(app, model, &path).map(Some)
+}
+
+fn export_model(app: &App, model: ForceModel, path: &Path) -> Result<String, String> {
     let solution = app
         .solutions
         .solution(model)
         .ok_or_else(|| format!("no solution of {} to export", model.label()))?;
-    let path = expand_home(text);
-    let rows = export::write(&path, solution)?;
+    let rows = export::write(path, solution)?;
     Ok(format!(
         "exported {} ({rows} rows) to {}",
         model.name(),
-        path.display()
+        absolute(path)
     ))
 }

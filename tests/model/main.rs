@@ -17,4 +17,5 @@ mod ode_events;
 mod ode_stability;
 mod presets;
 mod quasistatic_props;
+mod scene_view;
 mod tables;

@@ -1,11 +1,14 @@
 //! End to end: the real binary in a detached tmux session of fixed size with a UTF-8 locale. Edits
-//! v₀ with keystrokes, reads the pane with `capture-pane`, checks that the charts and the results
+//! v₀ with a paste, reads the pane with `capture-pane`, checks that the charts and the results
 //! changed, opens the stability view (tab 3) and halves its step, comes back, quits with `q` and
 //! checks that the terminal is restored (the shell's screen is back and the line discipline cooks
 //! input again). Waits on the screen's content, never on fixed sleeps.
 //!
+//! Also pastes with bracketed paste (`paste-buffer -p`) outside a field and into one, and answers
+//! the question `q` asks when there are unsaved changes.
+//!
 //! Needs tmux (CI installs it; locally `apt-get install -y tmux`). It is never skipped: without
-//! tmux it fails.
+//! tmux it fails with one line saying so, before anything is created (no temp folder to leave).
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -31,6 +34,9 @@ struct Tmux {
 
 impl Tmux {
     fn start() -> Tmux {
+        if Command::new("tmux").arg("-V").output().is_err() {
+            panic!("tmux is needed for the end-to-end tests: install it (apt-get install -y tmux)");
+        }
         let id = std::process::id();
         let config_home = std::env::temp_dir().join(format!("hertz-e2e-config-{id}"));
         std::fs::create_dir_all(&config_home).unwrap();
@@ -82,6 +88,17 @@ impl Tmux {
         assert!(self.run(&args).status.success(), "send-keys {keys:?}");
     }
 
+    /// Pastes `text` as the terminal would: wrapped in bracketed-paste marks when the app asked
+    /// for them.
+    fn paste(&self, text: &str) {
+        assert!(self.run(&["set-buffer", "--", text]).status.success());
+        assert!(
+            self.run(&["paste-buffer", "-p", "-t", "e2e"])
+                .status
+                .success()
+        );
+    }
+
     fn literal(&self, text: &str) {
         assert!(
             self.run(&["send-keys", "-t", "e2e", "-l", text])
@@ -112,8 +129,11 @@ impl Tmux {
 }
 
 impl Drop for Tmux {
+    /// Never panics (a panic while a failed test unwinds would abort the whole binary).
     fn drop(&mut self) {
-        let _ = self.run(&["kill-server"]);
+        let _ = Command::new("tmux")
+            .args(["-L", &self.socket, "kill-server"])
+            .output();
         let _ = std::fs::remove_dir_all(&self.config_home);
     }
 }
@@ -182,10 +202,20 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
     assert!(!curves(&before).is_empty(), "braille curves are drawn");
     assert!(before.contains("v₀     0.3 m/s"), "{before}");
 
-    // The cursor starts on v₀: Enter edits, Ctrl-U clears, type, Enter commits.
-    tmux.keys(&["Enter"]);
-    tmux.keys(&["C-u"]);
-    tmux.literal("50 mm/s");
+    // A paste on a model never runs its characters as keys ("2" would open tab 2, " " uncheck).
+    tmux.keys(&["End"]);
+    tmux.paste("2 0");
+    tmux.wait_for("the paste to be refused", |s| s.contains("paste ignored"));
+    assert!(
+        tmux.screen().contains("F(x) force–approach"),
+        "still on tab 1"
+    );
+    // The cursor back on v₀ (Home, then PgDn twice to the impact section): a paste opens its
+    // editor with the text, Enter commits.
+    tmux.keys(&["Home"]);
+    tmux.keys(&["PageDown"]);
+    tmux.keys(&["PageDown"]);
+    tmux.paste("50 mm/s");
     tmux.keys(&["Enter"]);
     let x_after = expected_x_max(0.05);
     assert_ne!(x_before, x_after);
@@ -232,7 +262,10 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
         s.contains("F(x) force–approach") && results_row(s, "proposed").contains(&x_after)
     });
 
+    // Unsaved changes: q asks, y quits.
     tmux.keys(&["q"]);
+    tmux.wait_for("the question", |s| s.contains("Unsaved changes: y quits"));
+    tmux.keys(&["y"]);
     let restored = tmux.wait_for("the shell after the explorer", |s| s.contains("exited-0"));
     assert!(
         restored.contains("before-42"),

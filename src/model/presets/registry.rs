@@ -12,7 +12,7 @@ use super::user_dir::user_dir;
 use crate::model::material::Material;
 use crate::model::overrides::{self, Override};
 use crate::model::scene::Scene;
-use crate::model::scene_file::{self, Document};
+use crate::model::scene_file::{self, Document, View};
 
 /// Where a preset comes from.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -172,6 +172,12 @@ impl Registry {
             .map(str::to_string))
     }
 
+    /// The view (checked models, solver settings) of a scene preset or scene file.
+    pub fn scene_view(&self, name_or_path: &str) -> Result<View, PresetError> {
+        let (origin, text) = self.source(name_or_path)?;
+        Ok(scene_file::decode_view(&Document::parse(origin, &text)?)?)
+    }
+
     /// `scene` with `overrides` applied, through the same path as a scene file.
     pub fn apply_overrides(
         &self,
@@ -189,7 +195,29 @@ impl Registry {
         description: Option<&str>,
         target: SaveTarget<'_>,
     ) -> Result<PathBuf, PresetError> {
-        save_scene_in(self.user_dir.as_deref(), scene, description, target)
+        save_scene_in(self.user_dir.as_deref(), scene, description, None, target)
+    }
+
+    /// [`Registry::save_scene`] with the view (`models`, `[solver]`) written too.
+    pub fn save_scene_with_view(
+        &self,
+        scene: &Scene,
+        description: Option<&str>,
+        view: &View,
+        target: SaveTarget<'_>,
+    ) -> Result<PathBuf, PresetError> {
+        save_scene_in(
+            self.user_dir.as_deref(),
+            scene,
+            description,
+            Some(view),
+            target,
+        )
+    }
+
+    /// Whether `name` is a built-in scene preset (a user preset of that name would shadow it).
+    pub fn is_builtin_scene(&self, name: &str) -> bool {
+        builtin::SCENES.iter().any(|(n, _)| *n == name)
     }
 
     fn decode(&self, mut doc: Document, overrides: &[Override]) -> Result<Scene, PresetError> {

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use super::error::PresetError;
 use super::user_dir::user_dir;
 use crate::model::scene::Scene;
-use crate::model::scene_file;
+use crate::model::scene_file::{self, View};
 
 /// Where to save a scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -50,7 +50,7 @@ pub fn save_scene(
     description: Option<&str>,
     target: SaveTarget<'_>,
 ) -> Result<PathBuf, PresetError> {
-    save_scene_in(user_dir().as_deref(), scene, description, target)
+    save_scene_in(user_dir().as_deref(), scene, description, None, target)
 }
 
 /// [`save_scene`] with an explicit user preset folder.
@@ -58,6 +58,7 @@ pub(super) fn save_scene_in(
     user_dir: Option<&Path>,
     scene: &Scene,
     description: Option<&str>,
+    view: Option<&View>,
     target: SaveTarget<'_>,
 ) -> Result<PathBuf, PresetError> {
     scene.validate().map_err(PresetError::InvalidScene)?;
@@ -75,7 +76,10 @@ pub(super) fn save_scene_in(
             folder.join(format!("{name}.toml"))
         }
     };
-    write_atomically(&path, &scene_file::to_toml(scene, description))?;
+    write_atomically(
+        &path,
+        &scene_file::to_toml_with_view(scene, description, view),
+    )?;
     Ok(path)
 }
 

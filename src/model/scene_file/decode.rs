@@ -8,6 +8,7 @@ use super::document::{Document, Problem, SceneFileError, join};
 use super::schema::{
     BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, SHAPES, shape_keys,
 };
+use super::view::View;
 use crate::model::body::{Body, Shape};
 use crate::model::material::Material;
 use crate::model::scene::{ImpactConditions, Scene};
@@ -24,14 +25,14 @@ fn describe(value: &Value) -> String {
 }
 
 /// Strict typed reading of a [`Document`].
-struct Decoder<'a> {
-    doc: &'a Document,
+pub(super) struct Decoder<'a> {
+    pub(super) doc: &'a Document,
     materials: &'a BTreeMap<String, Material>,
 }
 
 impl Decoder<'_> {
     /// Refuses keys of `table` (at `path`) that are not in `allowed`.
-    fn check_keys(
+    pub(super) fn check_keys(
         &self,
         path: &str,
         table: &Table,
@@ -62,7 +63,12 @@ impl Decoder<'_> {
         )
     }
 
-    fn wrong_type(&self, path: &str, expected: &'static str, value: &Value) -> SceneFileError {
+    pub(super) fn wrong_type(
+        &self,
+        path: &str,
+        expected: &'static str,
+        value: &Value,
+    ) -> SceneFileError {
         self.doc.error(
             path,
             Problem::WrongType {
@@ -87,7 +93,7 @@ impl Decoder<'_> {
         }
     }
 
-    fn optional_number(
+    pub(super) fn optional_number(
         &self,
         table: &Table,
         prefix: &str,
@@ -113,7 +119,7 @@ impl Decoder<'_> {
             .ok_or_else(|| self.missing(&join(prefix, key), why))
     }
 
-    fn optional_string<'t>(
+    pub(super) fn optional_string<'t>(
         &self,
         table: &'t Table,
         prefix: &str,
@@ -144,6 +150,8 @@ impl Decoder<'_> {
         let body1 = self.body(root, "body1")?;
         let body2 = self.body(root, "body2")?;
         let impact = self.impact(root)?;
+        // Refused here too, so that a bad view is located in the file whoever reads the scene.
+        self.view(root)?;
         Ok(Scene {
             name,
             body1,
@@ -292,6 +300,15 @@ pub fn decode_scene(
     let scene = Decoder { doc, materials }.scene()?;
     scene.validate().map_err(|e| doc.invalid(e))?;
     Ok(scene)
+}
+
+/// Decodes the view of a scene file: its `models` and `[solver]`, defaults where absent.
+pub fn decode_view(doc: &Document) -> Result<View, SceneFileError> {
+    let decoder = Decoder {
+        doc,
+        materials: &BTreeMap::new(),
+    };
+    decoder.view(doc.table())
 }
 
 /// Decodes and validates a material preset file; `name` defaults to `default_name` (the file stem).

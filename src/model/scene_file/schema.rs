@@ -1,7 +1,15 @@
 //! The scene-file schema: which keys exist, what they hold, which a shape needs.
 
-/// Keys of the top level of a scene file; `description` is optional.
-pub(super) const SCENE_KEYS: &[&str] = &["name", "description", "body1", "body2", "impact"];
+/// Keys of the top level of a scene file; `description`, `models` and `[solver]` are optional.
+pub(super) const SCENE_KEYS: &[&str] = &[
+    "name",
+    "description",
+    "models",
+    "body1",
+    "body2",
+    "impact",
+    "solver",
+];
 /// Keys of `[body1]` and `[body2]`; which of radius/length are required depends on the shape.
 pub(super) const BODY_KEYS: &[&str] = &["shape", "radius", "length", "mass", "material"];
 /// Keys of an inline material table (all required).

@@ -5,6 +5,8 @@ use toml::Value;
 use crate::model::body::Shape;
 use crate::model::scene::Scene;
 
+use super::view::View;
+
 /// A float as TOML text that reads back to exactly the same f64, in plain or exponent notation
 /// (Rust prints the shortest round-tripping digits in both).
 pub fn toml_float(x: f64) -> String {
@@ -30,11 +32,19 @@ pub fn toml_float(x: f64) -> String {
 /// Writes a scene in the scene-file schema with materials inline; [`parse_scene`](super::parse_scene) reads it back
 /// to an equal [`Scene`].
 pub fn to_toml(scene: &Scene, description: Option<&str>) -> String {
+    to_toml_with_view(scene, description, None)
+}
+
+/// [`to_toml`] with the view's `models` and `[solver]` written too.
+pub fn to_toml_with_view(scene: &Scene, description: Option<&str>, view: Option<&View>) -> String {
     let mut out = String::new();
     let quote = |s: &str| Value::String(s.to_string()).to_string();
     out.push_str(&format!("name = {}\n", quote(&scene.name)));
     if let Some(description) = description {
         out.push_str(&format!("description = {}\n", quote(description)));
+    }
+    if let Some(view) = view {
+        out.push_str(&view.models_line());
     }
     for (key, body) in [("body1", &scene.body1), ("body2", &scene.body2)] {
         out.push_str(&format!("\n[{key}]\nshape = \"{}\"\n", body.shape.name()));
@@ -81,5 +91,9 @@ pub fn to_toml(scene: &Scene, description: Option<&str>) -> String {
         "plastic_indentation = {}  # x_pl in m, used by the proposed viscous model\n",
         toml_float(i.plastic_indentation)
     ));
+    if let Some(view) = view {
+        out.push('\n');
+        out.push_str(&view.solver_table());
+    }
     out
 }

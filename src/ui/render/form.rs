@@ -70,9 +70,18 @@ fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
     rows
 }
 
-/// Draws the form: one bordered pane per section when they fit, else one scrolling list.
-/// Returns nothing; places the terminal cursor in the field being edited.
-pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+/// Where the rows go: one bordered pane per section when they fit, else one scrolling list with
+/// a header line per section, scrolled to keep the cursor in view.
+enum Placement {
+    Panes(Vec<(Section, Rect, Vec<Row>)>),
+    List {
+        area: Rect,
+        rows: Vec<Row>,
+        offset: usize,
+    },
+}
+
+fn place(app: &App, area: Rect, roomy: bool) -> Placement {
     let inner_width = area.width.saturating_sub(2) as usize;
     let sections: Vec<(Section, Vec<Row>)> = Section::ALL
         .iter()
@@ -86,22 +95,17 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             .collect();
         constraints.push(Constraint::Fill(1));
         let areas = Layout::vertical(constraints).split(area);
-        for ((section, rows), rect) in sections.iter().zip(areas.iter()) {
-            let block = pane(title(app, *section), app.theme, true);
-            let inner = block.inner(*rect);
-            frame.render_widget(block, *rect);
-            draw_rows(frame, inner, app, rows, 0);
-        }
-        return;
+        return Placement::Panes(
+            sections
+                .into_iter()
+                .zip(areas.iter())
+                .map(|((section, rows), rect)| (section, *rect, rows))
+                .collect(),
+        );
     }
-    // One list with a header line per section, scrolled to keep the cursor in view.
-    let block = pane("Scene", app.theme, roomy);
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
+    let inner = pane("Scene", app.theme, roomy).inner(area);
     let mut list: Vec<Row> = Vec::new();
-    let mut headers: Vec<usize> = Vec::new();
     for (section, rows) in sections {
-        headers.push(list.len());
         list.push(Row::Note(title(app, section), Role::Title));
         list.extend(rows);
     }
@@ -112,7 +116,60 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let height = inner.height as usize;
     let max_offset = list.len().saturating_sub(height);
     let offset = cursor_row.saturating_sub(height / 2).min(max_offset);
-    draw_rows(frame, inner, app, &list, offset);
+    Placement::List {
+        area: inner,
+        rows: list,
+        offset,
+    }
+}
+
+/// Draws the form and places the terminal cursor in the field being edited.
+pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+    match place(app, area, roomy) {
+        Placement::Panes(panes) => {
+            for (section, rect, rows) in panes {
+                let block = pane(title(app, section), app.theme, true);
+                let inner = block.inner(rect);
+                frame.render_widget(block, rect);
+                draw_rows(frame, inner, app, &rows, 0);
+            }
+        }
+        Placement::List {
+            area: inner,
+            rows,
+            offset,
+        } => {
+            frame.render_widget(pane("Scene", app.theme, roomy), area);
+            draw_rows(frame, inner, app, &rows, offset);
+        }
+    }
+}
+
+/// The field drawn at `position` of a form drawn in `area` (for mouse clicks), if any.
+pub fn field_at(app: &App, area: Rect, roomy: bool, position: Position) -> Option<Field> {
+    let pick = |inner: Rect, rows: &[Row], offset: usize| {
+        if !inner.contains(position) {
+            return None;
+        }
+        match rows.get(offset + usize::from(position.y - inner.y)) {
+            Some(Row::Field(field)) => Some(*field),
+            _ => None,
+        }
+    };
+    match place(app, area, roomy) {
+        Placement::Panes(panes) => panes.iter().find_map(|(section, rect, rows)| {
+            pick(
+                pane(title(app, *section), app.theme, true).inner(*rect),
+                rows,
+                0,
+            )
+        }),
+        Placement::List {
+            area: inner,
+            rows,
+            offset,
+        } => pick(inner, &rows, offset),
+    }
 }
 
 fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usize) {

@@ -3,11 +3,11 @@
 mod chart;
 mod common;
 mod editable;
-mod form;
+pub(crate) mod form;
 mod graph;
 mod help;
 pub mod layout;
-mod models;
+pub(crate) mod models;
 mod picker;
 mod prompt;
 mod regime;
@@ -15,7 +15,7 @@ mod results;
 mod stability;
 mod status;
 mod sweep;
-mod tabs;
+pub(crate) mod tabs;
 mod too_small;
 mod work_precision;
 
@@ -43,6 +43,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         Mode::Help => help::render(frame, area, app),
         Mode::Picker(picker) => picker::render(frame, area, app, picker),
         Mode::Prompt(prompt) => prompt::render(frame, screen.status, app, prompt),
+        Mode::Confirm(confirm) => prompt::render_question(frame, screen.status, app, confirm),
         Mode::Normal | Mode::Editing(_) => {}
     }
 }

@@ -4,7 +4,7 @@
 //! focused one) in view.
 
 use ratatui::Frame;
-use ratatui::layout::Rect;
+use ratatui::layout::{Position, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
@@ -47,14 +47,9 @@ pub fn scroll_offset(anchor: usize, total: usize, height: usize) -> usize {
     (anchor + 1 - height).min(total - height)
 }
 
-pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
-    let theme = app.theme;
-    let fits: Vec<ForceModel> = app
-        .valid
-        .as_ref()
-        .map(|v| recommend(&v.scene, &v.quasistatic).fits)
-        .unwrap_or_default();
-    let rows = rows();
+/// The first row shown in a list `height` rows high: the model under the cursor (else the focused
+/// one) stays in view.
+fn offset_for(app: &App, rows: &[Row], height: usize) -> usize {
     let anchor_model = match app.cursor {
         Cursor::Model(model) => model,
         _ => app.focused,
@@ -63,10 +58,42 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .iter()
         .position(|r| matches!(r, Row::Model(m) if *m == anchor_model))
         .unwrap_or_default();
+    scroll_offset(anchor, rows.len(), height)
+}
+
+/// What a click at `position` of the checklist drawn in `area` hits: a model (not a family
+/// heading), and whether on its check box.
+pub fn model_at(
+    app: &App,
+    area: Rect,
+    roomy: bool,
+    position: Position,
+) -> Option<(ForceModel, bool)> {
+    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    if !inner.contains(position) {
+        return None;
+    }
+    let rows = rows();
+    let offset = offset_for(app, &rows, usize::from(inner.height));
+    match rows.get(offset + usize::from(position.y - inner.y))? {
+        // "▸[x]": the box is columns 1–3.
+        Row::Model(model) => Some((*model, (1..4).contains(&(position.x - inner.x)))),
+        Row::Heading(_) => None,
+    }
+}
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+    let theme = app.theme;
+    let fits: Vec<ForceModel> = app
+        .valid
+        .as_ref()
+        .map(|v| recommend(&v.scene, &v.quasistatic).fits)
+        .unwrap_or_default();
+    let rows = rows();
     let block = pane("Models · ✓ fits the regime", theme, roomy);
     let inner = block.inner(area);
     let height = usize::from(inner.height);
-    let offset = scroll_offset(anchor, rows.len(), height);
+    let offset = offset_for(app, &rows, height);
     let block = if rows.len() > height {
         let last = (offset + height).min(rows.len());
         block.title_bottom(format!(" {}–{} of {} ", offset + 1, last, rows.len()))

@@ -5,7 +5,7 @@ use ratatui::layout::{Position, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph};
 
-use crate::ui::app::{App, Prompt, PromptKind};
+use crate::ui::app::{App, Confirm, Prompt, PromptKind};
 use crate::ui::theme::Role;
 
 pub fn render(frame: &mut Frame, status: Rect, app: &App, prompt: &Prompt) {
@@ -44,4 +44,25 @@ pub fn render(frame: &mut Frame, status: Rect, app: &App, prompt: &Prompt) {
             above,
         );
     }
+}
+
+/// The yes/no question of a [`Confirm`], over the status line.
+pub fn render_question(frame: &mut Frame, status: Rect, app: &App, confirm: &Confirm) {
+    let question = match confirm {
+        Confirm::Quit => {
+            " Unsaved changes: y quits without saving · s saves · any other key stays ".to_string()
+        }
+        Confirm::ShadowBuiltin(name) => format!(
+            " `{name}` is a built-in preset: y saves a user preset that hides it · any other key: no "
+        ),
+        Confirm::Overwrite { path, .. } => format!(
+            " {} exists: y overwrites it · any other key: no ",
+            path.display()
+        ),
+    };
+    frame.render_widget(Clear, status);
+    frame.render_widget(
+        Paragraph::new(Span::styled(question, app.theme.style(Role::Warning))),
+        status,
+    );
 }

@@ -41,11 +41,14 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let width = inner.width as usize;
     let max_lines = inner.height as usize;
     let mut items: Vec<Vec<Span>> = Vec::new();
-    if let Some(error) = &app.scene_error
-        && app.error_fields().is_empty()
-    {
+    if let Some(error) = &app.scene_error {
         items.push(vec![Span::styled(
-            format!("✗ {error}: showing the last valid scene"),
+            if app.error_fields().is_empty() {
+                format!("✗ {error}: showing the last valid scene")
+            } else {
+                // The form says what is wrong; this says that what follows is not the draft.
+                "last valid scene:".to_string()
+            },
             theme.style(Role::Error),
         )]);
     }

@@ -119,7 +119,15 @@ const COLUMNS: [Column; 9] = [
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let theme = app.theme;
     let checked = app.checked_models();
-    let block = pane("Results", theme, roomy);
+    let block = pane(
+        if app.scene_error.is_some() {
+            "Results · last valid scene"
+        } else {
+            "Results"
+        },
+        theme,
+        roomy,
+    );
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let model_width: u16 = if roomy { 28 } else { 9 };

@@ -59,11 +59,12 @@ fn hints(mode: &Mode, tab: Tab) -> &'static [(&'static str, &'static str)] {
             ("Esc", "close"),
         ],
         (Mode::Prompt(_), _) => &[("Enter", "write"), ("Esc", "cancel")],
+        (Mode::Confirm(_), _) => &[("y", "yes"), ("any other key", "no")],
     }
 }
 
 /// `text` cut to `width` characters, with an ellipsis when cut.
-fn shortened(text: &str, width: usize) -> String {
+pub(crate) fn shortened(text: &str, width: usize) -> String {
     if text.chars().count() <= width {
         text.to_string()
     } else if width == 0 {
@@ -127,11 +128,14 @@ fn path_end(path: &str, budget: usize) -> String {
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let theme = app.theme;
+    // After an edit the scene is no longer the preset it came from: its name would mislead.
+    let name = if app.is_dirty() {
+        "unsaved scene"
+    } else {
+        &app.draft.scene.name
+    };
     let mut left = vec![Span::styled(
-        format!(
-            " {}",
-            shortened(&app.draft.scene.name, usize::from(area.width / 3))
-        ),
+        format!(" {}", shortened(name, usize::from(area.width / 3))),
         theme.style(Role::Title),
     )];
     if app.is_dirty() {
@@ -139,7 +143,10 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     }
     if app.is_computing() || app.is_studying() {
         left.push(Span::styled(" · computing…", theme.style(Role::Warning)));
-    } else if let Some(elapsed) = app.last_recompute {
+    } else if let Some(elapsed) = app.last_recompute
+        // The recompute time is the explorer's; the study views time their own work.
+        && app.tab == Tab::Explorer
+    {
         left.push(Span::styled(
             format!(
                 " · recomputed in {}",

@@ -21,9 +21,31 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         } else {
             (theme.style(Role::Key), theme.style(Role::Muted))
         };
-        spans.push(Span::styled(format!(" {}", tab.key()), key_style));
-        spans.push(Span::styled(format!(" {} ", tab.title()), title_style));
-        spans.push(Span::raw(" "));
+        let [key, title, gap] = labels(tab);
+        spans.push(Span::styled(key, key_style));
+        spans.push(Span::styled(title, title_style));
+        spans.push(Span::raw(gap));
     }
     frame.render_widget(Paragraph::new(Line::from(spans)), area);
+}
+
+/// The key, title and gap of a tab's label on the bar.
+fn labels(tab: Tab) -> [String; 3] {
+    [
+        format!(" {}", tab.key()),
+        format!(" {} ", tab.title()),
+        " ".into(),
+    ]
+}
+
+/// The tab whose label covers `column` of the bar (for mouse clicks).
+pub fn tab_at(column: u16) -> Option<Tab> {
+    let mut start = 0;
+    Tab::ALL.into_iter().find(|&tab| {
+        let width: usize = labels(tab).iter().map(|l| l.chars().count()).sum();
+        let end = start + width as u16;
+        let hit = (start..end).contains(&column);
+        start = end;
+        hit
+    })
 }

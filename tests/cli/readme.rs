@@ -1,0 +1,297 @@
+//! Every TOML and shell block of the README runs as written.
+//!
+//! The README's fenced blocks are found by their info string and checked whatever section they
+//! are in, so new sections are covered without touching this test:
+//!
+//! - ```` ```toml ```` — a scene (it has `[body1]`) is read by the strict scene reader, a material
+//!   (it has `youngs_modulus`) by the material reader; any other block must at least be TOML.
+//!   ```` ```toml file=NAME ```` also writes the block to `NAME` in the folder the commands run in,
+//!   so that a later `--scene NAME` finds it.
+//! - ```` ```sh ```` — each command (lines joined at a trailing `\`, `#` comments dropped) must be
+//!   `hertz-tui …`, optionally after `VAR=value` settings and with `> FILE` at the end; it runs
+//!   against the built binary in a temporary folder with its own user-presets folder and must
+//!   exit 0. Anything else (cargo, the explorer itself, pipes) fails the test unless the block is
+//!   marked ```` ```sh no-run ````, which keeps it out: use it for what cannot run headless here.
+//!
+//! Other languages (`text` captures and error examples) are not run.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use hertz_tui::model::presets::Registry;
+use hertz_tui::model::scene_file::{Document, decode_material, parse_scene};
+
+/// A fenced block: its info string, the README line it starts on, its text.
+struct Block {
+    info: Vec<String>,
+    line: usize,
+    text: String,
+}
+
+impl Block {
+    fn language(&self) -> &str {
+        self.info.first().map_or("", String::as_str)
+    }
+
+    fn has(&self, word: &str) -> bool {
+        self.info.iter().any(|w| w == word)
+    }
+
+    fn option(&self, key: &str) -> Option<&str> {
+        self.info
+            .iter()
+            .find_map(|w| w.strip_prefix(key)?.strip_prefix('='))
+    }
+}
+
+fn blocks(markdown: &str) -> Vec<Block> {
+    let mut blocks = Vec::new();
+    let mut open: Option<Block> = None;
+    for (i, line) in markdown.lines().enumerate() {
+        let fence = line.trim_start().strip_prefix("```");
+        match (&mut open, fence) {
+            (None, Some(info)) => {
+                open = Some(Block {
+                    info: info.split_whitespace().map(str::to_string).collect(),
+                    line: i + 1,
+                    text: String::new(),
+                })
+            }
+            (Some(_), Some(_)) => blocks.extend(open.take()),
+            (Some(block), None) => {
+                block.text.push_str(line);
+                block.text.push('\n');
+            }
+            (None, None) => {}
+        }
+    }
+    assert!(open.is_none(), "README: a fenced block is not closed");
+    blocks
+}
+
+/// Splits a command line into words: quotes group, `#` outside quotes starts a comment.
+fn words(line: &str) -> Vec<String> {
+    let mut words = Vec::new();
+    let mut word: Option<String> = None;
+    let mut quote: Option<char> = None;
+    for c in line.chars() {
+        match (quote, c) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), c) => word.get_or_insert_default().push(c),
+            (None, '\'' | '"') => {
+                quote = Some(c);
+                word.get_or_insert_default();
+            }
+            (None, '#') if word.is_none() => break,
+            (None, c) if c.is_whitespace() => words.extend(word.take()),
+            (None, c) => word.get_or_insert_default().push(c),
+        }
+    }
+    assert!(quote.is_none(), "unclosed quote in: {line}");
+    words.extend(word);
+    words
+}
+
+/// The commands of a shell block, continuation lines joined.
+fn commands(text: &str) -> Vec<String> {
+    let mut commands = Vec::new();
+    let mut current = String::new();
+    for line in text.lines() {
+        match line.trim_end().strip_suffix('\\') {
+            Some(head) => {
+                current.push_str(head);
+                current.push(' ');
+            }
+            None => {
+                current.push_str(line);
+                if !words(&current).is_empty() {
+                    commands.push(current.trim().to_string());
+                }
+                current.clear();
+            }
+        }
+    }
+    commands
+}
+
+/// Runs one README command in `dir`; the error says why it does not run as written.
+fn run(command: &str, dir: &Path) -> Result<(), String> {
+    let mut words = words(command);
+    let mut stdout_file = None;
+    if let Some(i) = words.iter().position(|w| w == ">") {
+        let target = words.get(i + 1).ok_or("`>` without a file")?.clone();
+        if words.len() != i + 2 {
+            return Err("only `> FILE` at the end is supported".into());
+        }
+        stdout_file = Some(dir.join(target));
+        words.truncate(i);
+    }
+    if words
+        .iter()
+        .any(|w| w.contains('|') || w == "&&" || w == ";")
+    {
+        return Err("pipes and command lists are not run: mark the block `sh no-run`".into());
+    }
+    let settings = words.iter().take_while(|w| w.contains('=')).count();
+    let (env, rest) = words.split_at(settings);
+    match rest.first().map(String::as_str) {
+        Some("hertz-tui") => {}
+        Some(other) => {
+            return Err(format!(
+                "`{other}` is not hertz-tui: mark the block `sh no-run` if it must stay"
+            ));
+        }
+        None => return Err("no command".into()),
+    }
+    let args = &rest[1..];
+    let headless = [
+        "list",
+        "solve",
+        "bench",
+        "sweep",
+        "plot",
+        "translate",
+        "restitution",
+        "help",
+    ];
+    if !args
+        .first()
+        .is_some_and(|a| headless.contains(&a.as_str()) || a.starts_with("--h"))
+    {
+        return Err(
+            "opens the explorer, which needs a terminal: mark the block `sh no-run`".into(),
+        );
+    }
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_hertz-tui"));
+    cmd.args(args)
+        .current_dir(dir)
+        .env("XDG_CONFIG_HOME", dir.join("config"))
+        .env_remove("NO_COLOR");
+    for setting in env {
+        let (key, value) = setting.split_once('=').unwrap_or((setting, ""));
+        cmd.env(key, value);
+    }
+    let out = cmd.output().map_err(|e| format!("cannot run: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "exit {:?}: {}",
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).trim()
+        ));
+    }
+    if let Some(file) = stdout_file {
+        fs::write(&file, &out.stdout)
+            .map_err(|e| format!("cannot write {}: {e}", file.display()))?;
+    }
+    Ok(())
+}
+
+/// A TOML block read as what it is; `Err` says why it is refused.
+fn check_toml(block: &Block, registry: &Registry) -> Result<(), String> {
+    let origin = format!("README.md:{}", block.line);
+    let doc = Document::parse(&origin, &block.text).map_err(|e| e.to_string())?;
+    let table = doc.table();
+    if table.contains_key("body1") {
+        parse_scene(&origin, &block.text, registry.material_catalog())
+            .map(drop)
+            .map_err(|e| e.to_string())
+    } else if table.contains_key("youngs_modulus") {
+        decode_material(&doc, "readme")
+            .map(drop)
+            .map_err(|e| e.to_string())
+    } else {
+        Ok(())
+    }
+}
+
+struct TempDir(PathBuf);
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = fs::remove_dir_all(&self.0);
+    }
+}
+
+#[test]
+fn every_toml_and_command_block_of_the_readme_runs_as_written() {
+    let readme = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let dir = TempDir(std::env::temp_dir().join(format!("hertz-readme-{}", std::process::id())));
+    fs::create_dir_all(dir.0.join("config")).unwrap();
+    let registry = Registry::builtin().unwrap();
+    let mut failures = Vec::new();
+    let (mut scenes, mut commands_run) = (0, 0);
+    for block in blocks(&readme) {
+        match block.language() {
+            "toml" => {
+                if let Err(e) = check_toml(&block, &registry) {
+                    failures.push(format!("README.md:{}: toml: {e}", block.line));
+                }
+                if block.text.contains("[body1]") {
+                    scenes += 1;
+                }
+                if let Some(name) = block.option("file") {
+                    fs::write(dir.0.join(name), &block.text).unwrap();
+                }
+            }
+            "sh" if !block.has("no-run") => {
+                for command in commands(&block.text) {
+                    commands_run += 1;
+                    if let Err(e) = run(&command, &dir.0) {
+                        failures.push(format!("README.md:{}: `{command}`: {e}", block.line));
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        scenes >= 1 && commands_run >= 5,
+        "the README's blocks were found"
+    );
+}
+
+#[test]
+fn the_block_reader_and_the_runner_refuse_what_would_not_run() {
+    let markdown = "text\n```sh no-run\ncargo test\n```\n```toml file=a.toml\nx = 1\n```\n";
+    let found = blocks(markdown);
+    assert_eq!(found.len(), 2);
+    assert!(found[0].has("no-run") && found[0].language() == "sh");
+    assert_eq!(
+        (found[1].option("file"), found[1].line),
+        (Some("a.toml"), 5)
+    );
+    assert_eq!(
+        words(r#"hertz-tui solve --scene "my scene.toml"  # comment"#),
+        ["hertz-tui", "solve", "--scene", "my scene.toml"]
+    );
+    assert_eq!(
+        commands("hertz-tui solve \\\n  --scene x\n\n"),
+        ["hertz-tui solve    --scene x"]
+    );
+    let dir = std::env::temp_dir();
+    for (command, why) in [
+        ("cargo test", "is not hertz-tui"),
+        (
+            "hertz-tui --scene fig5-steel-sphere-r10-plate",
+            "opens the explorer",
+        ),
+        ("hertz-tui list | head", "pipes"),
+        ("hertz-tui solve --scene nowhere", "exit Some(2)"),
+    ] {
+        let error = run(command, &dir).unwrap_err();
+        assert!(error.contains(why), "{command}: {error}");
+    }
+    let registry = Registry::builtin().unwrap();
+    let sphere_with_length = Block {
+        info: vec!["toml".into()],
+        line: 1,
+        text: "name = \"x\"\n[body1]\nshape = \"sphere\"\nradius = 0.01\nlength = 0.1\nmaterial = \"steel\"\n[body2]\nshape = \"plane\"\nmaterial = \"steel\"\n[impact]\nv0 = 0.3\nrestitution = 0.6\nplastic_indentation = 0.0\n".into(),
+    };
+    let error = check_toml(&sphere_with_length, &registry).unwrap_err();
+    assert!(
+        error.contains("`body1.length` is not used by a sphere"),
+        "{error}"
+    );
+}
