@@ -1,6 +1,7 @@
 //! The model layer: contact mechanics and impact dynamics in SI units. Knows nothing of the UI.
 
 pub mod body;
+pub mod calibrate;
 pub mod cylinder;
 pub mod error;
 pub mod exact;

@@ -4,6 +4,7 @@
 #[allow(dead_code)]
 mod ode_common;
 
+mod calibration;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
