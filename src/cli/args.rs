@@ -38,6 +38,21 @@ pub enum Command {
     Bench(BenchArgs),
     /// Vary one scene key over a range and solve every point (in parallel; rows in order).
     Sweep(SweepArgs),
+    /// The restitution each law really gives for requested e = 0.1, 0.3, 0.5, 0.7, 0.9.
+    Restitution(RestitutionArgs),
+}
+
+/// Options of `hertz-tui restitution`.
+#[derive(Debug, Args)]
+pub struct RestitutionArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// Force model (repeatable; default every law).
+    #[arg(long = "model", value_name = "MODEL")]
+    pub models: Vec<ForceModel>,
+    /// Output format (table, json or csv).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
 }
 
 /// The scene a headless command works on.

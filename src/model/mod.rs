@@ -17,6 +17,7 @@ pub mod presets;
 pub mod pressure;
 pub mod quasistatic;
 pub mod recommend;
+pub mod restitution;
 pub mod scene;
 pub mod scene_file;
 pub mod scene_key;

@@ -66,3 +66,53 @@ fn calibrate_makes_every_law_with_damping_rebound_with_the_requested_e() {
     ]);
     assert!(table.contains("χ = 0.9749*"), "{table}");
 }
+
+#[test]
+fn restitution_tabulates_the_realised_e_of_every_law() {
+    let v = json(&["restitution", "--scene", FIG5]);
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), ForceModel::ALL.len());
+    for row in rows {
+        let model: ForceModel = row["model"].as_str().unwrap().parse().unwrap();
+        let points = row["points"].as_array().unwrap();
+        let requested: Vec<f64> = points
+            .iter()
+            .map(|p| p["e_requested"].as_f64().unwrap())
+            .collect();
+        assert_eq!(requested, [0.1, 0.3, 0.5, 0.7, 0.9]);
+        for p in points {
+            let (e, e_out) = (
+                p["e_requested"].as_f64().unwrap(),
+                p["e_out"].as_f64().unwrap(),
+            );
+            match model.name() {
+                // The bilateral linear law realises e exactly (docs/physics.md §6.3).
+                "kelvin-voigt-tension" => assert!((e_out - e).abs() < 1e-12, "{row}"),
+                "quasistatic" => assert_eq!(e_out, 1.0),
+                _ => assert!(e_out > 0.0 && e_out <= 1.0, "{row}"),
+            }
+        }
+    }
+    // Hunt–Crossley realises 0.663 for 0.5 asked: the gap the calibration closes.
+    let hc = &rows[ForceModel::HuntCrossley.index()]["points"][2];
+    assert!((hc["e_out"].as_f64().unwrap() - 0.663).abs() < 5e-4, "{hc}");
+
+    let csv = ok(&[
+        "restitution",
+        "--scene",
+        FIG5,
+        "--format",
+        "csv",
+        "--model",
+        "flores",
+    ]);
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "model,e_requested,e_out,error");
+    assert_eq!(lines.len(), 6);
+    assert!(lines[1].starts_with("flores,0.1,0.069"), "{csv}");
+    let table = ok(&["restitution", "--scene", FIG5, "--model", "hunt-crossley"]);
+    assert!(
+        table.contains("e = 0.1") && table.contains("0.6630"),
+        "{table}"
+    );
+}

@@ -244,11 +244,11 @@ pub const LAWS: &[LawSpec] = &[
         id: "zhiying-qishao",
         label: "Zhiying–Qishao",
         short: "Z–Q",
-        source: "χ = (3/4)(1−e²)·e^{2(1−e)}; Zhiying & Qishao, Acta Mech. Sin. 22 (2006)",
+        source: "χ = (3/4)(1−e²)·exp(2(1−e)); Zhiying & Qishao, Acta Mech. Sin. 22 (2006); docs/physics.md §6.1",
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e) * e.powf(2.0 * (1.0 - e))),
+        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
     },
     LawSpec {
         id: "flores",
