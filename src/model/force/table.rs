@@ -72,6 +72,8 @@ pub enum Kind {
     HuntCrossley(fn(f64) -> f64),
     HertzViscous,
     KelvinVoigt,
+    /// F = k·(xⁿ + A·xⁿ⁻¹·ẋ): the proposed model's equations with b = k·A.
+    KuwabaraKono,
 }
 
 /// One law of the table.
@@ -189,6 +191,20 @@ pub const LAWS: &[LawSpec] = &[
         damping: Some(KV_C),
         contact: ContactRule::TensionAllowed,
         kind: Kind::KelvinVoigt,
+    },
+    LawSpec {
+        id: "kuwabara-kono",
+        label: "Kuwabara–Kono",
+        short: "K–K",
+        source: "Kuwabara & Kono, Jpn. J. Appl. Phys. 26 (1987); Brilliantov et al., Phys. Rev. E 53 (1996); docs/physics.md §6.5",
+        family: Family::Viscous,
+        damping: Some(DampingParam {
+            symbol: "A",
+            key: "a",
+            unit: "s",
+        }),
+        contact: ContactRule::ForceZero,
+        kind: Kind::KuwabaraKono,
     },
     LawSpec {
         id: "hunt-crossley",
