@@ -38,6 +38,21 @@ pub enum Command {
     Bench(BenchArgs),
     /// Vary one scene key over a range and solve every point (in parallel; rows in order).
     Sweep(SweepArgs),
+    /// The restitution each law really gives for requested e = 0.1, 0.3, 0.5, 0.7, 0.9.
+    Restitution(RestitutionArgs),
+}
+
+/// Options of `hertz-tui restitution`.
+#[derive(Debug, Args)]
+pub struct RestitutionArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// Force model (repeatable; default every law).
+    #[arg(long = "model", value_name = "MODEL")]
+    pub models: Vec<ForceModel>,
+    /// Output format (table, json or csv).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
 }
 
 /// The scene a headless command works on.
@@ -60,10 +75,14 @@ pub struct SolveArgs {
     /// Output format; csv prints the trajectory t,x,v,F of the one --model given.
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Force model (repeatable; default all five): quasistatic, dry-friction, proposed,
-    /// hunt-crossley, lankarani-nikravesh.
+    /// Force model (repeatable; default every law): a law id such as hunt-crossley or kelvin-voigt
+    /// (a wrong id lists them all).
     #[arg(long = "model", value_name = "MODEL")]
     pub models: Vec<ForceModel>,
+    /// Calibrate each law's damping parameter so that its realised e equals the scene's
+    /// restitution (closed form for the Hunt–Crossley family, a bracketed root for the others).
+    #[arg(long)]
+    pub calibrate: bool,
     /// Solution method: auto, euler, symplectic-euler, verlet, rk4, dopri5, dop853, radau5.
     #[arg(long, value_name = "METHOD", default_value = "auto")]
     pub method: MethodChoice,
@@ -120,7 +139,7 @@ pub struct SweepArgs {
     /// Space the points geometrically (bounds of one sign).
     #[arg(long)]
     pub log: bool,
-    /// Force model (repeatable; default all five).
+    /// Force model (repeatable; default every law).
     #[arg(long = "model", value_name = "MODEL")]
     pub models: Vec<ForceModel>,
     /// Solution method of every impact (default auto).

@@ -6,13 +6,16 @@ pub mod error;
 mod layout;
 mod list;
 mod report;
+pub mod restitution;
 pub mod solve;
 pub mod sweep;
 pub mod units;
 
 use std::io::Write;
 
-pub use args::{BenchArgs, Cli, Command, Format, SceneSelection, SolveArgs, SweepArgs};
+pub use args::{
+    BenchArgs, Cli, Command, Format, RestitutionArgs, SceneSelection, SolveArgs, SweepArgs,
+};
 pub use error::CliError;
 
 use crate::format::csv::trajectory_csv;
@@ -49,6 +52,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         },
         Command::Bench(args) => bench::run(args, &registry)?,
         Command::Sweep(args) => sweep::run(args, &registry)?,
+        Command::Restitution(args) => restitution::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

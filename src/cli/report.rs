@@ -180,6 +180,7 @@ fn impact_section(impacts: &[ImpactRow]) -> String {
             "t_contact",
             "v_out",
             "e_out",
+            "damping",
             "x_residual",
             "dissipated",
             "energy err",
@@ -209,6 +210,7 @@ fn impact_section(impacts: &[ImpactRow]) -> String {
             optional(r.t_contact, |x| engineering(x, "s")),
             optional(r.v_out, |x| engineering(x, "m/s")),
             optional(r.e_out, |x| significant(x, 4)),
+            damping_cell(r),
             optional(r.x_residual, |x| engineering(x, "m")),
             optional(r.energy_dissipated, |x| engineering(x, "J")),
             optional(r.energy_residual, |x| scientific(x, "")),
@@ -242,5 +244,42 @@ fn impact_section(impacts: &[ImpactRow]) -> String {
         out.push_str("Compressive-only rule:\n");
         out.push_str(&cutoffs.concat());
     }
+    let calibration: Vec<String> = impacts
+        .iter()
+        .filter_map(|r| {
+            r.calibration_error
+                .as_ref()
+                .map(|why| format!("  {why}: the scene's damping is shown\n"))
+        })
+        .collect();
+    if !calibration.is_empty() {
+        out.push_str("Not calibrated:\n");
+        out.push_str(&calibration.concat());
+    }
     out
+}
+
+/// `χ = 0.9749` (`*` when calibrated), or `-` for a law without damping.
+fn damping_cell(r: &ImpactRow) -> String {
+    r.damping.as_ref().map_or("-".into(), |d| {
+        let unit = if d.unit == "1" {
+            String::new()
+        } else {
+            format!(" {}", d.unit)
+        };
+        let mark = if r.calibrated { "*" } else { "" };
+        format!(
+            "{} = {}{unit}{mark}",
+            d.symbol,
+            scientific_or_plain(d.value)
+        )
+    })
+}
+
+fn scientific_or_plain(x: f64) -> String {
+    if x != 0.0 && !(1e-3..1e4).contains(&x.abs()) {
+        scientific(x, "")
+    } else {
+        significant(x, 4)
+    }
 }

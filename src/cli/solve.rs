@@ -4,9 +4,11 @@ use serde::Serialize;
 
 use super::args::{SceneSelection, SolveArgs};
 use super::error::CliError;
+use crate::model::calibrate::calibrate;
+use crate::model::force::{AnyLaw, Damping};
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
-use crate::model::{ForceModel, Quasistatic, Scene};
+use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 
 /// Everything `solve` computed; serialized as the JSON output.
 #[derive(Debug, Serialize)]
@@ -26,7 +28,16 @@ pub struct ImpactRow {
     pub f_max: Option<f64>,
     pub t_contact: Option<f64>,
     pub v_out: Option<f64>,
+    /// The scene's restitution e, which the law's damping was set from (or calibrated to).
+    pub e_requested: f64,
+    /// The realised restitution v_out/v₀.
     pub e_out: Option<f64>,
+    /// The law's damping parameter as used (`None` for elastic Hertz).
+    pub damping: Option<DampingUsed>,
+    /// Whether the damping was calibrated so that e_out = e_requested (`--calibrate`).
+    pub calibrated: bool,
+    /// Why `--calibrate` could not calibrate this law (the row then uses the scene's damping).
+    pub calibration_error: Option<String>,
     pub x_residual: Option<f64>,
     pub energy_dissipated: Option<f64>,
     pub energy_residual: Option<f64>,
@@ -41,9 +52,69 @@ pub struct ImpactRow {
     pub error: Option<String>,
 }
 
+/// A damping parameter with its name and unit, as JSON reports it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DampingUsed {
+    /// Its key, e.g. `chi`, `gamma`, `p`, `b`, `c`.
+    pub parameter: &'static str,
+    pub symbol: &'static str,
+    pub value: f64,
+    /// SI unit; `1` for a pure number.
+    pub unit: &'static str,
+}
+
+impl From<Damping> for DampingUsed {
+    fn from(d: Damping) -> Self {
+        DampingUsed {
+            parameter: d.param.key,
+            symbol: d.param.symbol,
+            value: d.value,
+            unit: d.param.unit,
+        }
+    }
+}
+
+/// The law a row solves: the scene's, or with `calibrate` its damping calibrated to the scene's e
+/// (with the reason when that fails, the scene's law then standing in).
+pub fn row_law(
+    model: ForceModel,
+    params: &ImpactParams,
+    calibrated: bool,
+) -> Result<(AnyLaw, Result<bool, String>), ImpactError> {
+    let scene_law = model.law(params)?;
+    if !calibrated || model.spec().damping.is_none() {
+        return Ok((scene_law, Ok(false)));
+    }
+    Ok(match calibrate(model, params) {
+        Ok(c) => (c.law, Ok(true)),
+        Err(e) => (scene_law, Err(e.to_string())),
+    })
+}
+
 impl ImpactRow {
     fn new(
         model: ForceModel,
+        params: &ImpactParams,
+        requested: &SolveOptions,
+        calibrate: bool,
+    ) -> Self {
+        let (law, calibration) = match row_law(model, params, calibrate) {
+            Ok(found) => found,
+            Err(e) => return Self::from_result(model, params.restitution, requested, Err(&e)),
+        };
+        let result = impact::solve_law(&law, requested);
+        let mut row = Self::from_result(model, params.restitution, requested, result.as_ref());
+        row.damping = law.damping().map(DampingUsed::from);
+        match calibration {
+            Ok(done) => row.calibrated = done,
+            Err(why) => row.calibration_error = Some(why),
+        }
+        row
+    }
+
+    fn from_result(
+        model: ForceModel,
+        e_requested: f64,
         requested: &SolveOptions,
         result: Result<&ImpactSolution, &ImpactError>,
     ) -> Self {
@@ -57,7 +128,11 @@ impl ImpactRow {
                     f_max: Some(s.f_max),
                     t_contact: Some(s.t_contact),
                     v_out: Some(s.v_out),
+                    e_requested,
                     e_out: Some(s.e_out),
+                    damping: None,
+                    calibrated: false,
+                    calibration_error: None,
                     x_residual: Some(s.x_residual),
                     energy_dissipated: Some(s.energy_dissipated),
                     energy_residual: Some(s.energy_residual),
@@ -77,7 +152,11 @@ impl ImpactRow {
                 f_max: None,
                 t_contact: None,
                 v_out: None,
+                e_requested,
                 e_out: None,
+                damping: None,
+                calibrated: false,
+                calibration_error: None,
                 x_residual: None,
                 energy_dissipated: None,
                 energy_residual: None,
@@ -110,7 +189,7 @@ pub fn load_scene(source: &SceneSelection, registry: &Registry) -> Result<Scene,
     Ok(registry.scene_with(&source.scene, &source.overrides)?)
 }
 
-/// The models to solve: those given, else all five.
+/// The models to solve: those given, else every law of the table.
 pub fn models_or_all(given: &[ForceModel]) -> Vec<ForceModel> {
     if given.is_empty() {
         ForceModel::ALL.to_vec()
@@ -127,10 +206,7 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
     let options = solve_options(args);
     let impacts = models_or_all(&args.models)
         .into_iter()
-        .map(|model| {
-            let result = impact::solve_impact(model, &params, &options);
-            ImpactRow::new(model, &options, result.as_ref())
-        })
+        .map(|model| ImpactRow::new(model, &params, &options, args.calibrate))
         .collect();
     Ok(SolveReport {
         scene,
@@ -152,6 +228,11 @@ pub fn trajectory(args: &SolveArgs, registry: &Registry) -> Result<ImpactSolutio
     let scene = load_scene(&args.source, registry)?;
     let quasistatic = scene.quasistatic()?;
     let options = solve_options(args);
-    impact::solve_impact(model, &scene.impact_params(&quasistatic), &options)
-        .map_err(|source| CliError::Impact { model, source })
+    let params = scene.impact_params(&quasistatic);
+    let (law, calibration) = row_law(model, &params, args.calibrate)
+        .map_err(|source| CliError::Impact { model, source })?;
+    if let Err(why) = calibration {
+        return Err(CliError::Usage(format!("--calibrate: {why}")));
+    }
+    impact::solve_law(&law, &options).map_err(|source| CliError::Impact { model, source })
 }

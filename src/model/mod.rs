@@ -1,6 +1,7 @@
 //! The model layer: contact mechanics and impact dynamics in SI units. Knows nothing of the UI.
 
 pub mod body;
+pub mod calibrate;
 pub mod cylinder;
 pub mod error;
 pub mod exact;
@@ -16,6 +17,7 @@ pub mod presets;
 pub mod pressure;
 pub mod quasistatic;
 pub mod recommend;
+pub mod restitution;
 pub mod scene;
 pub mod scene_file;
 pub mod scene_key;

@@ -65,7 +65,7 @@ fn stderr(output: &Output) -> String {
 }
 
 /// A successful run's stdout.
-fn ok(args: &[&str]) -> String {
+pub(crate) fn ok(args: &[&str]) -> String {
     let output = run(args);
     assert!(
         output.status.success(),
@@ -75,7 +75,7 @@ fn ok(args: &[&str]) -> String {
     stdout(&output)
 }
 
-fn json(args: &[&str]) -> Value {
+pub(crate) fn json(args: &[&str]) -> Value {
     let mut all = args.to_vec();
     all.extend(["--format", "json"]);
     serde_json::from_str(&ok(&all)).expect("solve prints JSON")

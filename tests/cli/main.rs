@@ -1,5 +1,6 @@
 //! The command line driven as a user would: the real binary, its output parsed.
 
 mod commands;
+mod laws;
 mod readme;
 mod studies;

@@ -4,12 +4,14 @@
 #[allow(dead_code)]
 mod ode_common;
 
+mod calibration;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
 mod impact_props;
 mod impact_stability;
 mod impact_trajectory;
+mod laws_kuwabara_kono;
 mod laws_viscous;
 mod ode_convergence;
 mod ode_crosscheck;

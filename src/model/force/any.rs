@@ -111,6 +111,17 @@ any_law! {
     KelvinVoigt(KelvinVoigt),
 }
 
+/// C₁ of the Kuwabara–Kono restitution series e = 1 − C₁·ε + C₂·ε² − …, ε = A·(k/m)^{2/5}·v₀^{1/5}:
+/// 2·(2/5)·B(3/5, 3/2)·(5/4)^{3/5} = 1.1534489 (docs/physics.md §6.5; published as 1.15344).
+pub const KUWABARA_KONO_C1: f64 = 1.153_448_858_095_288;
+
+/// A from e at the scene's v₀ by the series' first term, A = (1 − e)/(C₁·(k/m)^{2/5}·v₀^{1/5})
+/// (docs/physics.md §6.5): a material constant, so e then falls as v₀ grows.
+pub fn kuwabara_kono_a(params: &ImpactParams) -> f64 {
+    let (k, m, v0) = (params.law.k, params.mass, params.v0);
+    (1.0 - params.restitution) / (KUWABARA_KONO_C1 * (k / m).powf(0.4) * v0.powf(0.2))
+}
+
 /// A law's damping parameter and the value in use.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Damping {
@@ -170,6 +181,11 @@ impl AnyLaw {
                 damping.unwrap_or_else(|| HertzViscous::default_gamma(params)),
                 tension_allowed,
             )),
+            Kind::KuwabaraKono => AnyLaw::Proposed(Proposed::kuwabara_kono(
+                model,
+                params,
+                damping.unwrap_or_else(|| kuwabara_kono_a(params)),
+            )),
             Kind::KelvinVoigt => AnyLaw::KelvinVoigt(KelvinVoigt::new(
                 model,
                 params,
@@ -181,10 +197,14 @@ impl AnyLaw {
 
     /// The damping parameter in use, `None` for a law without one.
     pub fn damping(&self) -> Option<Damping> {
-        let param = self.model().spec().damping?;
+        let spec = self.model().spec();
+        let param = spec.damping?;
         let value = match self {
             AnyLaw::Elastic(_) => return None,
             AnyLaw::DryFriction(l) => l.p(),
+            AnyLaw::Proposed(l) if matches!(spec.kind, Kind::KuwabaraKono) => {
+                l.b() / l.params().law.k
+            }
             AnyLaw::Proposed(l) => l.b(),
             AnyLaw::Hysteresis(l) => l.chi(),
             AnyLaw::HertzViscous(l) => l.gamma(),

@@ -1,4 +1,5 @@
-//! The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18), b = k·x_pl/(v₀·e).
+//! The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18), b = k·x_pl/(v₀·e). The same law with
+//! b = k·A is the Kuwabara–Kono / Brilliantov viscoelastic sphere (docs/physics.md §6.5).
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
 use super::{ForceModel, ImpactParams};
@@ -9,6 +10,7 @@ use crate::model::exact::{ExactImpact, elastic::elastic};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Proposed {
     params: ImpactParams,
+    model: ForceModel,
     b: f64,
 }
 
@@ -17,13 +19,28 @@ impl Proposed {
     pub fn new(params: &ImpactParams) -> Self {
         Proposed {
             params: *params,
+            model: ForceModel::Proposed,
             b: params.law.k * params.plastic_indentation / (params.v0 * params.restitution),
         }
     }
 
     /// The law with an explicit damping factor b, N·s/mⁿ.
     pub fn with_b(params: &ImpactParams, b: f64) -> Self {
-        Proposed { params: *params, b }
+        Proposed {
+            params: *params,
+            model: ForceModel::Proposed,
+            b,
+        }
+    }
+
+    /// The table's law `model` of this form, F = k·(xⁿ + A·xⁿ⁻¹·ẋ): b = k·A (Kuwabara & Kono,
+    /// Jpn. J. Appl. Phys. 26, 1987; Brilliantov et al., Phys. Rev. E 53, 1996), A in s.
+    pub fn kuwabara_kono(model: ForceModel, params: &ImpactParams, a: f64) -> Self {
+        Proposed {
+            params: *params,
+            model,
+            b: params.law.k * a,
+        }
     }
 
     /// The damping factor b, N·s/mⁿ.
@@ -34,7 +51,7 @@ impl Proposed {
 
 impl ForceLaw for Proposed {
     fn model(&self) -> ForceModel {
-        ForceModel::Proposed
+        self.model
     }
 
     fn params(&self) -> &ImpactParams {

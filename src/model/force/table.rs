@@ -72,6 +72,8 @@ pub enum Kind {
     HuntCrossley(fn(f64) -> f64),
     HertzViscous,
     KelvinVoigt,
+    /// F = k·(xⁿ + A·xⁿ⁻¹·ẋ): the proposed model's equations with b = k·A.
+    KuwabaraKono,
 }
 
 /// One law of the table.
@@ -191,6 +193,20 @@ pub const LAWS: &[LawSpec] = &[
         kind: Kind::KelvinVoigt,
     },
     LawSpec {
+        id: "kuwabara-kono",
+        label: "Kuwabara–Kono",
+        short: "K–K",
+        source: "Kuwabara & Kono, Jpn. J. Appl. Phys. 26 (1987); Brilliantov et al., Phys. Rev. E 53 (1996); docs/physics.md §6.5",
+        family: Family::Viscous,
+        damping: Some(DampingParam {
+            symbol: "A",
+            key: "a",
+            unit: "s",
+        }),
+        contact: ContactRule::ForceZero,
+        kind: Kind::KuwabaraKono,
+    },
+    LawSpec {
         id: "hunt-crossley",
         label: "Hunt–Crossley (eq 19)",
         short: "H–C",
@@ -244,11 +260,11 @@ pub const LAWS: &[LawSpec] = &[
         id: "zhiying-qishao",
         label: "Zhiying–Qishao",
         short: "Z–Q",
-        source: "χ = (3/4)(1−e²)·e^{2(1−e)}; Zhiying & Qishao, Acta Mech. Sin. 22 (2006)",
+        source: "χ = (3/4)(1−e²)·exp(2(1−e)); Zhiying & Qishao, Acta Mech. Sin. 22 (2006); docs/physics.md §6.1",
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e) * e.powf(2.0 * (1.0 - e))),
+        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
     },
     LawSpec {
         id: "flores",

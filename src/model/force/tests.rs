@@ -230,3 +230,51 @@ fn an_infinite_proposed_damping_is_refused_naming_the_plastic_indentation() {
         "{msg}"
     );
 }
+
+#[test]
+fn the_law_table_has_unique_ids_and_the_paper_five_keep_theirs() {
+    let mut ids: Vec<&str> = LAWS.iter().map(|l| l.id).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), LAW_COUNT, "ids are unique");
+    for (model, id) in [
+        (ForceModel::Quasistatic, "quasistatic"),
+        (ForceModel::DryFriction, "dry-friction"),
+        (ForceModel::Proposed, "proposed"),
+        (ForceModel::HuntCrossley, "hunt-crossley"),
+        (ForceModel::LankaraniNikravesh, "lankarani-nikravesh"),
+    ] {
+        assert_eq!(model.name(), id);
+        assert_eq!(id.parse::<ForceModel>(), Ok(model));
+    }
+    for (i, model) in ForceModel::ALL.iter().enumerate() {
+        assert_eq!(model.index(), i);
+        assert_eq!(
+            serde_json::to_string(model).unwrap(),
+            format!("\"{model}\"")
+        );
+    }
+    let err = "hertz".parse::<ForceModel>().unwrap_err();
+    assert!(
+        err.contains("kelvin-voigt") && err.contains("gharib-hurmuzlu"),
+        "{err}"
+    );
+}
+
+#[test]
+fn every_hunt_crossley_chi_damps_more_as_e_falls_and_vanishes_at_e_1() {
+    // A χ(e) must be 0 at e = 1 and grow as e falls; read as a power of e, Zhiying–Qishao's
+    // e^{2(1−e)} would fall back to 0 as e → 0 (docs/physics.md §6.1).
+    for spec in LAWS {
+        let table::Kind::HuntCrossley(chi) = spec.kind else {
+            continue;
+        };
+        assert_eq!(chi(1.0), 0.0, "{}", spec.id);
+        let mut last = 0.0;
+        for i in (1..100).rev() {
+            let value = chi(f64::from(i) / 100.0);
+            assert!(value > last, "{} at e = {}", spec.id, f64::from(i) / 100.0);
+            last = value;
+        }
+    }
+}
