@@ -85,4 +85,8 @@ impl ForceLaw for AnyLaw {
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
         dispatch!(self, l => l.exact(rtol))
     }
+
+    fn impulse_coefficient(&self) -> f64 {
+        dispatch!(self, l => l.impulse_coefficient())
+    }
 }

@@ -214,7 +214,7 @@ pub fn solve_law(law: &AnyLaw, opts: &SolveOptions) -> Result<ImpactSolution, Im
     validate_options(opts)?;
     let params = law.params();
     params.validate()?;
-    let scales = scale::Scales::new(params);
+    let scales = scale::Scales::of_law(law);
     let law = *law;
     // Monomorphise the solver per law: the force is evaluated in the integrators' inner loop.
     match law {

@@ -41,10 +41,11 @@ pub(crate) struct RunOptions {
 pub(crate) struct Run {
     pub loading: DenseOutput,
     pub unloading: DenseOutput,
-    /// Scaled time and state at maximum compression (ẋ set to exactly 0).
+    /// Scaled time and (X, V) at maximum compression (ẋ set to exactly 0); the dense outputs hold
+    /// the solver's (X, W) ([`Scales::xv`] converts).
     pub t_switch: f64,
     pub y_switch: State,
-    /// Scaled time and state at the end of contact.
+    /// Scaled time and (X, V) at the end of contact.
     pub t_end: f64,
     pub y_end: State,
     pub end: End,
@@ -102,7 +103,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     };
 
     // Loading: from first contact to maximum compression.
-    let at_rest = |_: f64, y: &State| y[1];
+    let at_rest = |_: f64, y: &State| sc.velocity(y);
     let loading_events = [Event {
         g: &at_rest,
         direction: Direction::Falling,
@@ -112,7 +113,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         ro.method,
         &mut sys,
         0.0,
-        State::new(0.0, 1.0),
+        sc.xw(0.0, 1.0),
         &loading_events,
         &opts,
     )
@@ -130,6 +131,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     } = loading;
     // The event lies on the far side of ẋ = 0 by a rounding error; start unloading exactly at rest.
     let y_switch = State::new(y[0], 0.0);
+    let w_switch = sc.xw(y[0], 0.0);
 
     // Unloading: events in a fixed order, x = 0 first.
     let spent = stats.steps + stats.rejected_steps;
@@ -150,7 +152,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         .map(|seg| seg.t_end() - seg.t_start())
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());
     let approach = |_: f64, y: &State| y[0];
-    let tension = |_: f64, y: &State| law.tension(y[0] * sc.x, y[1] * sc.v);
+    let tension = |_: f64, y: &State| law.tension(y[0] * sc.x, sc.velocity(y) * sc.v);
     let watch_tension = law.may_turn_tensile() || law.contact_end() == ContactEnd::ForceZero;
     let all_events = [
         Event {
@@ -172,7 +174,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         ro.method,
         &mut sys,
         t_switch,
-        y_switch,
+        w_switch,
         unloading_events,
         &opts,
     )
@@ -190,7 +192,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         t_switch,
         y_switch,
         t_end: unloading.t,
-        y_end: unloading.y,
+        y_end: sc.xv(&unloading.y),
         end,
         stats,
         force_evals,

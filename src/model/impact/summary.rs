@@ -25,7 +25,7 @@ fn phase_peak<L: ForceLaw>(
     t_lo: f64,
     t_hi: f64,
 ) -> (f64, f64) {
-    let force = |y: State| law.phase_force(y[0] * sc.x, y[1] * sc.v, phase);
+    let force = |y: State| law.phase_force(y[0] * sc.x, sc.velocity(&y) * sc.v, phase);
     let segments = dense.segments();
     let mut best = (t_lo, force(dense.eval(t_lo)));
     let end = (t_hi, force(dense.eval(t_hi)));
@@ -71,7 +71,7 @@ fn phase_work<L: ForceLaw>(
     (t_lo, t_hi): (f64, f64),
 ) -> f64 {
     let power = |seg: &Segment, t: f64| {
-        let y = seg.eval(t);
+        let y = sc.xv(&seg.eval(t));
         law.dissipative_force(y[0] * sc.x, y[1] * sc.v, phase) / sc.f * y[1]
     };
     let segments = dense.segments();

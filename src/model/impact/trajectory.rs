@@ -157,15 +157,16 @@ impl Trajectory {
             return None;
         }
         let tau = t / self.scales.t;
+        let xv = |y: State| self.scales.xv(&y);
         Some(if tau <= curves.t_switch {
-            (curves.loading.eval(tau), Phase::Loading)
+            (xv(curves.loading.eval(tau)), Phase::Loading)
         } else if tau <= curves.unloading.t_end() {
-            (curves.unloading.eval(tau), Phase::Unloading)
+            (xv(curves.unloading.eval(tau)), Phase::Unloading)
         } else {
             // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
             // below the integrator's resolution and it cut contact off): the bodies coast.
             let t_curve = curves.unloading.t_end();
-            let end = curves.unloading.eval(t_curve);
+            let end = xv(curves.unloading.eval(t_curve));
             let coast = end[1] * (tau - t_curve);
             (
                 State::new((end[0] + coast).max(0.0), end[1]),
