@@ -41,8 +41,8 @@ pub(crate) struct RunOptions {
 pub(crate) struct Run {
     pub loading: DenseOutput,
     pub unloading: DenseOutput,
-    /// Scaled time and (X, V) at maximum compression (ẋ set to exactly 0); the dense outputs hold
-    /// the solver's (X, W) ([`Scales::xv`] converts).
+    /// Scaled time and (X, V) at maximum compression (ẋ set to exactly 0). The loading dense
+    /// output holds the solver's (X, W) ([`Scales::xv`] converts), the unloading one (X, V).
     pub t_switch: f64,
     pub y_switch: State,
     /// Scaled time and (X, V) at the end of contact.
@@ -131,7 +131,9 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     } = loading;
     // The event lies on the far side of ẋ = 0 by a rounding error; start unloading exactly at rest.
     let y_switch = State::new(y[0], 0.0);
-    let w_switch = sc.xw(y[0], 0.0);
+    // Unloading integrates V itself: W's advantage is at first contact only, and near the end of
+    // a heavily damped unloading V ≪ γ·Xⁿ, where recovering V from W would cost digits.
+    let usc = sc.without_shift();
 
     // Unloading: events in a fixed order, x = 0 first.
     let spent = stats.steps + stats.rejected_steps;
@@ -152,7 +154,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         .map(|seg| seg.t_end() - seg.t_start())
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());
     let approach = |_: f64, y: &State| y[0];
-    let tension = |_: f64, y: &State| law.tension(y[0] * sc.x, sc.velocity(y) * sc.v);
+    let tension = |_: f64, y: &State| law.tension(y[0] * sc.x, y[1] * sc.v);
     let watch_tension = law.may_turn_tensile() || law.contact_end() == ContactEnd::ForceZero;
     let all_events = [
         Event {
@@ -169,12 +171,12 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     } else {
         &all_events[..1]
     };
-    let mut sys = ImpactSystem::new(law, Phase::Unloading, *sc);
+    let mut sys = ImpactSystem::new(law, Phase::Unloading, usc);
     let unloading = ode::integrate(
         ro.method,
         &mut sys,
         t_switch,
-        w_switch,
+        y_switch,
         unloading_events,
         &opts,
     )
@@ -192,7 +194,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         t_switch,
         y_switch,
         t_end: unloading.t,
-        y_end: sc.xv(&unloading.y),
+        y_end: unloading.y,
         end,
         stats,
         force_evals,

@@ -58,6 +58,14 @@ impl Scales {
         sc
     }
 
+    /// These scales with W = V (for methods that read the second variable as ẋ).
+    pub fn without_shift(&self) -> Self {
+        Scales {
+            shift: 0.0,
+            ..*self
+        }
+    }
+
     /// The scaled velocity V of a solver state (X, W).
     #[inline]
     pub fn velocity(&self, y: &State) -> f64 {

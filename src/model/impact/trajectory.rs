@@ -161,12 +161,13 @@ impl Trajectory {
         Some(if tau <= curves.t_switch {
             (xv(curves.loading.eval(tau)), Phase::Loading)
         } else if tau <= curves.unloading.t_end() {
-            (xv(curves.unloading.eval(tau)), Phase::Unloading)
+            // Unloading is integrated in (X, V) itself (see `phases::Run`).
+            (curves.unloading.eval(tau), Phase::Unloading)
         } else {
             // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
             // below the integrator's resolution and it cut contact off): the bodies coast.
             let t_curve = curves.unloading.t_end();
-            let end = xv(curves.unloading.eval(t_curve));
+            let end = curves.unloading.eval(t_curve);
             let coast = end[1] * (tau - t_curve);
             (
                 State::new((end[0] + coast).max(0.0), end[1]),

@@ -123,6 +123,7 @@ fn validate(method: Method, t0: f64, opts: &Options) -> Result<(), OdeError> {
     Ok(())
 }
 
+#[allow(clippy::too_many_arguments)]
 fn run<S: Scheme>(
     method: Method,
     mut scheme: S,
@@ -198,15 +199,17 @@ fn run<S: Scheme>(
     }
 }
 
-/// Newton corrections of the event time after the first landing: the interpolant's root is within
-/// the local error of the true one, so one correction reaches rounding and a second confirms it.
-const LANDING_CORRECTIONS: usize = 2;
+/// Corrections of the event time after the first landing: the interpolant's root is within the
+/// local error of the true one; Newton with the interpolant's rate, then secants through the
+/// landed states, reach rounding in two or three.
+const LANDING_CORRECTIONS: usize = 3;
 
 /// Ends an adaptive integration on an event with the method's full order: the interpolant of a
 /// step is an order lower than the step itself (DOPRI5's is 4th order) and, in the step that
 /// straddles the event, was built from stages beyond it. So the step from `start` is retaken to
 /// end exactly at the located time `t_hit`, and that time is corrected by Newton's method on the
-/// event function along the new end state (its rate taken from the straddling `segment`).
+/// event function along the new end state (its rate first taken from the straddling `segment`,
+/// then by secant through the landed states).
 #[allow(clippy::too_many_arguments)]
 fn land(
     method: Method,
@@ -222,11 +225,13 @@ fn land(
     // dg/dt along the solution, by a central difference on the straddling step's interpolant.
     let h_step = segment.t_end() - t_start;
     let delta = 1e-5 * h_step;
-    let rate = (g(t_hit + delta, &segment.eval(t_hit + delta))
+    let mut rate = (g(t_hit + delta, &segment.eval(t_hit + delta))
         - g(t_hit - delta, &segment.eval(t_hit - delta)))
         / (2.0 * delta);
     let mut target = t_hit;
     let mut corrections = 0;
+    // The previous landing (time, g), for a secant rate from the landed states themselves.
+    let mut previous: Option<(f64, f64)> = None;
     loop {
         let spent = stats.steps + stats.rejected_steps;
         let span = target - t_start;
@@ -239,7 +244,15 @@ fn land(
         };
         let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts)?;
         *stats += landing.stats;
-        let dt = -g(landing.t, &landing.y) / rate;
+        let g_landed = g(landing.t, &landing.y);
+        if let Some((t_prev, g_prev)) = previous {
+            let secant = (g_landed - g_prev) / (landing.t - t_prev);
+            if secant.is_finite() && secant != 0.0 {
+                rate = secant;
+            }
+        }
+        previous = Some((landing.t, g_landed));
+        let dt = -g_landed / rate;
         corrections += 1;
         // Corrections below rounding of t, a non-finite rate, or a target that would fall out of
         // the straddling step's reach: the landed state stands.

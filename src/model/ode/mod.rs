@@ -87,6 +87,12 @@ impl Method {
         matches!(self, Method::Dopri5 | Method::Dop853 | Method::Radau5)
     }
 
+    /// Partitioned methods read y = (x, v) as position and velocity (ẋ = y[1]) and only the
+    /// acceleration f(t, y)[1]; the others integrate any first-order system.
+    pub fn is_partitioned(self) -> bool {
+        matches!(self, Method::SymplecticEuler | Method::Verlet)
+    }
+
     /// Classical order of convergence.
     pub fn order(self) -> u32 {
         match self {
