@@ -29,7 +29,7 @@ fn choices(t_c: f64) -> Vec<(String, SolveOptions)> {
     let adaptive = |method: Method| SolveOptions {
         method: MethodChoice::Integrator(method),
         rtol: 1e-8,
-        atol: 1e-10,
+        atol: None,
         ..SolveOptions::default()
     };
     let fixed = |method: Method| SolveOptions {

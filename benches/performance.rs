@@ -39,7 +39,7 @@ fn impacts(c: &mut Criterion) {
     let dopri5 = SolveOptions {
         method: MethodChoice::Integrator(Method::Dopri5),
         rtol: 1e-8,
-        atol: 1e-8,
+        atol: Some(1e-8),
         ..SolveOptions::default()
     };
     for model in ForceModel::ALL {

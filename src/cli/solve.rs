@@ -178,7 +178,7 @@ pub fn solve_options(args: &SolveArgs) -> SolveOptions {
     SolveOptions {
         method: args.method,
         rtol: args.rtol.unwrap_or(defaults.rtol),
-        atol: args.atol.unwrap_or(defaults.atol),
+        atol: args.atol.or(defaults.atol),
         dt: args.dt.or(defaults.dt),
         ..defaults
     }

@@ -115,7 +115,6 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
     let opts = SolveOptions {
         method: MethodChoice::Auto,
         rtol: SOLVE_RTOL,
-        atol: SOLVE_RTOL * 1e-2,
         ..SolveOptions::default()
     };
     let e_out = |d: f64| -> Result<f64, CalibrationError> {

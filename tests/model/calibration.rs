@@ -50,7 +50,7 @@ fn every_law_with_damping_hits_the_requested_e_to_1e_10() {
     let check = SolveOptions {
         method: MethodChoice::Integrator(Method::Dop853),
         rtol: 1e-12,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     for p in scenes(6) {
@@ -79,7 +79,7 @@ fn hunt_crossley_restitution_depends_on_chi_alone() {
     let dop853 = SolveOptions {
         method: MethodChoice::Integrator(Method::Dop853),
         rtol: 1e-12,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     for e in [0.05, 0.3, 0.6, 0.95] {

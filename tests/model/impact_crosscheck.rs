@@ -114,7 +114,7 @@ fn ours(p: &ImpactParams, method: MethodChoice) -> ImpactSummary {
     let opts = SolveOptions {
         method,
         rtol: RTOL,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     solve_impact(ForceModel::Proposed, p, &opts)

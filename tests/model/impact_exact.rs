@@ -54,7 +54,7 @@ fn solve(model: ForceModel, params: &ImpactParams, method: MethodChoice) -> Impa
     let opts = SolveOptions {
         method,
         rtol: 1e-12,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     solve_impact(model, params, &opts).unwrap().summary
@@ -157,7 +157,7 @@ fn auto_reports_the_exact_solution_where_one_exists() {
         ] {
             let opts = SolveOptions {
                 rtol: 1e-12,
-                atol: 1e-14,
+                atol: Some(1e-14),
                 ..SolveOptions::default()
             };
             let sol = solve_impact(model, &params, &opts).unwrap();

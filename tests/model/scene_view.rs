@@ -89,7 +89,7 @@ fn solver_settings_read_as_on_the_command_line() {
     assert_eq!(view.options.method, MethodChoice::Integrator(Method::Rk4));
     assert_eq!(
         (view.options.rtol, view.options.atol, view.options.dt),
-        (1e-6, 1e-9, Some(2e-7))
+        (1e-6, Some(1e-9), Some(2e-7))
     );
     assert_eq!(view.options.max_steps, SolveOptions::default().max_steps);
 }
@@ -147,7 +147,7 @@ fn saving_writes_the_view_back() {
         options: SolveOptions {
             method: MethodChoice::Integrator(Method::Verlet),
             rtol: 1e-5,
-            atol: 1e-11,
+            atol: Some(1e-11),
             dt: Some(1.25e-7),
             ..SolveOptions::default()
         },

@@ -98,6 +98,12 @@ macro_rules! any_law {
                     $(AnyLaw::$variant(l) => l.exact(rtol)),*
                 }
             }
+
+            fn impulse_coefficient(&self) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.impulse_coefficient()),*
+                }
+            }
         }
     };
 }

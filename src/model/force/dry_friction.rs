@@ -127,9 +127,12 @@ impl ForceLaw for DryFriction {
         self.x_cut > 0.0
     }
 
-    /// Unloading F/x = k·xⁿ⁻¹ − P.
+    /// (x − x*)/x*: the sign of the unloading F/x = k·xⁿ⁻¹ − P, which vanishes at x* in closed
+    /// form. Linear in x, so a step that carries x through x* and on below 0 cannot hide the
+    /// crossing (F/x, continued as k·|x|ⁿ⁻¹ − P, turns positive again below −x*: a dip too
+    /// narrow for an event search to see at e ≥ 0.985).
     fn tension(&self, x: f64, _v: f64) -> f64 {
-        self.params.law.k * abs_pow_nm1(x, self.params.law.n) - self.p
+        (x - self.x_cut) / self.x_cut
     }
 
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {

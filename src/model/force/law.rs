@@ -80,6 +80,14 @@ pub trait ForceLaw {
     /// The exact impact (closed form or quadrature) where one exists; quadratures aim at `rtol`.
     fn exact(&self, rtol: f64) -> Option<ExactImpact>;
 
+    /// β where the dissipative force is n·β·xⁿ⁻¹·ẋ = d(β·xⁿ)/dt, so that its impulse is β·xⁿ in
+    /// closed form (the proposed model, eq 18: β = b/n); 0 for every other law. The solver then
+    /// integrates w = ẋ + β·xⁿ/m, whose equation m·ẇ = −k·xⁿ is as smooth as the elastic one,
+    /// instead of ẋ, whose √x damping at first contact costs adaptive methods their order.
+    fn impulse_coefficient(&self) -> f64 {
+        0.0
+    }
+
     /// F(x, ẋ), N: zero out of contact (x ≤ 0), else the law with sign(ẋ) deciding the phase.
     fn force(&self, x: f64, v: f64) -> f64 {
         if x > 0.0 {

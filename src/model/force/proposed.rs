@@ -96,6 +96,11 @@ impl ForceLaw for Proposed {
         self.params.law.k * x + self.b * v
     }
 
+    /// b·xⁿ⁻¹·ẋ = d(b·xⁿ/n)/dt.
+    fn impulse_coefficient(&self) -> f64 {
+        self.b / self.params.law.n
+    }
+
     /// Only the elastic limit b = 0 has a closed form.
     fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
         (self.b == 0.0).then(|| elastic(&self.params))

@@ -20,6 +20,7 @@ use crate::model::ode::{Method, OdeError};
 use super::phases::{self, Run, RunOptions};
 use super::scale::Scales;
 use super::summary::summarize;
+use super::tolerance::integrator_tolerances;
 use super::{
     ImpactError, ImpactSolution, ImpactSummary, MethodUsed, SolveOptions, TensileCutoff, Trajectory,
 };
@@ -58,10 +59,11 @@ pub(super) fn solve<L: ForceLaw>(
         });
     }
 
+    let (rtol, atol) = integrator_tolerances(Method::Dopri5, opts.rtol, opts.atol);
     let dopri5 = RunOptions {
         method: Method::Dopri5,
-        rtol: opts.rtol,
-        atol: opts.atol,
+        rtol,
+        atol,
         dt: None,
         max_steps: opts.max_steps.min(DOPRI5_BUDGET),
     };
@@ -79,11 +81,11 @@ pub(super) fn solve<L: ForceLaw>(
         }) => 0,
         Err(other) => return Err(other),
     };
+    let (rtol, atol) = integrator_tolerances(Method::Radau5, opts.rtol, opts.atol);
     let radau5 = RunOptions {
         method: Method::Radau5,
-        // Radau5 needs rtol > 10·ε; it maps rtol to 0.1·rtol^{2/3} internally.
-        rtol: opts.rtol.max(1e-13),
-        atol: opts.atol,
+        rtol,
+        atol,
         dt: None,
         max_steps: opts.max_steps.saturating_sub(spent).max(1),
     };

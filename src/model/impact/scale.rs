@@ -1,7 +1,9 @@
 //! The solver's dimensionless variables X = x/x_e, V = v/v₀, T = t·v₀/x_e, with x_e the elastic
 //! x_max (eq 5), so that rtol/atol mean the same thing for every scene.
 
-use crate::model::force::ImpactParams;
+use crate::model::force::law::signed_pow_n;
+use crate::model::force::{ForceLaw, ImpactParams};
+use crate::model::ode::State;
 
 /// Reference scales of one impact, SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,6 +24,9 @@ pub(crate) struct Scales {
     pub mass: f64,
     /// Exponent n.
     pub n: f64,
+    /// γ of the solver's second variable W = V + γ·Xⁿ (the scaled w = ẋ + β·xⁿ/m of
+    /// [`ForceLaw::impulse_coefficient`]); 0 when it is V itself.
+    pub shift: f64,
 }
 
 impl Scales {
@@ -39,7 +44,48 @@ impl Scales {
             t_contact: elastic_contact_time(law.n),
             mass: m,
             n: law.n,
+            shift: 0.0,
         }
+    }
+
+    /// Scales of `law`'s validated parameters, with its closed-form damping impulse taken into
+    /// the second variable: γ = β·x_eⁿ/(m·v₀).
+    pub fn of_law<L: ForceLaw>(law: &L) -> Self {
+        let mut sc = Scales::new(law.params());
+        // β·(x_e·X)ⁿ/(m·v₀) = β·x_eⁿ/(m·v₀)·Xⁿ, and x_eⁿ = F_ref/k.
+        let k = law.params().law.k;
+        sc.shift = law.impulse_coefficient() * (sc.f / k) / (sc.mass * sc.v);
+        sc
+    }
+
+    /// These scales with W = V (for methods that read the second variable as ẋ).
+    pub fn without_shift(&self) -> Self {
+        Scales {
+            shift: 0.0,
+            ..*self
+        }
+    }
+
+    /// The scaled velocity V of a solver state (X, W).
+    #[inline]
+    pub fn velocity(&self, y: &State) -> f64 {
+        if self.shift == 0.0 {
+            y[1]
+        } else {
+            y[1] - self.shift * signed_pow_n(y[0], self.n)
+        }
+    }
+
+    /// (X, V) of a solver state (X, W).
+    #[inline]
+    pub fn xv(&self, y: &State) -> State {
+        State::new(y[0], self.velocity(y))
+    }
+
+    /// The solver state (X, W) of (X, V).
+    #[inline]
+    pub fn xw(&self, x: f64, v: f64) -> State {
+        State::new(x, v + self.shift * signed_pow_n(x, self.n))
     }
 
     /// Mechanical energy ½mv² + k·x^{n+1}/(n+1) over ½mv₀², in scaled variables: V² + |X|^{n+1}

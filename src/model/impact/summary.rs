@@ -2,6 +2,7 @@
 //! dF/dt, not a sample near it) and the work ∮F dx (Gauss–Legendre on every step's interpolant).
 
 use crate::model::exact::quadrature::{gauss_legendre_4, gauss_legendre_6};
+use crate::model::force::law::signed_pow_n;
 use crate::model::force::{ContactEnd, ForceLaw, Phase};
 use crate::model::numeric::roots::brent_max;
 use crate::model::ode::{DenseOutput, Segment, State};
@@ -25,7 +26,7 @@ fn phase_peak<L: ForceLaw>(
     t_lo: f64,
     t_hi: f64,
 ) -> (f64, f64) {
-    let force = |y: State| law.phase_force(y[0] * sc.x, y[1] * sc.v, phase);
+    let force = |y: State| law.phase_force(y[0] * sc.x, sc.velocity(&y) * sc.v, phase);
     let segments = dense.segments();
     let mut best = (t_lo, force(dense.eval(t_lo)));
     let end = (t_hi, force(dense.eval(t_hi)));
@@ -60,9 +61,12 @@ fn phase_peak<L: ForceLaw>(
 
 /// ∫ F_d·ẋ dt over [t_lo, t_hi] of one phase, in units of F_ref·x_e (F_d the dissipative force).
 /// Each step's interpolant gets four-point Gauss–Legendre (its error, ~6e-10·(h·∂)^8 of the step's
-/// share, is far below any integrator's); the first step of loading (first contact) and the last
-/// of unloading (separation) get six points after the substitution T = T₀ + h·u²(3 − 2u), which
-/// turns the xⁿ ∝ (T − T₀)ⁿ behaviour there into a smooth integrand.
+/// share, is far below any integrator's). Loading steps are integrated in s = √(T − T₀), which
+/// turns the xⁿ⁻¹ ∝ (T − T₀)ⁿ⁻¹ behaviour of first contact into a smooth integrand on every step,
+/// not only the first (the proposed model's damping is ∝ √x there, and steps a few lengths from
+/// first contact still feel it); the first step gets six points. The last step of unloading
+/// (separation) gets six points after the substitution T = T₀ + h·u²(3 − 2u). A loading phase
+/// integrated in (X, W) ([`Scales::shift`]) integrates the damping's work by parts.
 fn phase_work<L: ForceLaw>(
     law: &L,
     sc: &Scales,
@@ -71,8 +75,16 @@ fn phase_work<L: ForceLaw>(
     (t_lo, t_hi): (f64, f64),
 ) -> f64 {
     let power = |seg: &Segment, t: f64| {
-        let y = seg.eval(t);
-        law.dissipative_force(y[0] * sc.x, y[1] * sc.v, phase) / sc.f * y[1]
+        let y = sc.xv(&seg.eval(t));
+        if sc.shift == 0.0 {
+            law.dissipative_force(y[0] * sc.x, y[1] * sc.v, phase) / sc.f * y[1]
+        } else {
+            // F_d = d(β·xⁿ)/dt, so ∫F_d·ẋ dt = [β·xⁿ·ẋ] + ∫β·xⁿ·F/m dt, and the bracket vanishes
+            // over loading (x = 0 at its start, ẋ = 0 at its end): γ·Xⁿ·F/F_ref has no xⁿ⁻¹
+            // singularity at first contact for the quadrature to miss.
+            sc.shift * signed_pow_n(y[0], sc.n) * law.phase_force(y[0] * sc.x, y[1] * sc.v, phase)
+                / sc.f
+        }
     };
     let segments = dense.segments();
     let last = segments.len().saturating_sub(1);
@@ -83,11 +95,17 @@ fn phase_work<L: ForceLaw>(
             continue;
         }
         let h = tb - ta;
-        let graded = match phase {
-            Phase::Loading => i == 0,
-            Phase::Unloading => i == last,
-        };
-        work += if graded {
+        if phase == Phase::Loading {
+            let (sa, sb) = ((ta - t_lo).max(0.0).sqrt(), (tb - t_lo).sqrt());
+            let integrand = |s: f64| power(seg, t_lo + s * s) * 2.0 * s;
+            work += if i == 0 {
+                gauss_legendre_6(integrand, sa, sb)
+            } else {
+                gauss_legendre_4(integrand, sa, sb)
+            };
+            continue;
+        }
+        work += if i == last {
             gauss_legendre_6(
                 |u| power(seg, ta + h * u * u * (3.0 - 2.0 * u)) * 6.0 * h * u * (1.0 - u),
                 0.0,
@@ -106,7 +124,7 @@ pub(crate) fn cycle_work<L: ForceLaw>(law: &L, sc: &Scales, run: &Run) -> f64 {
     let dissipative = phase_work(law, sc, &run.loading, Phase::Loading, (0.0, run.t_switch))
         + phase_work(
             law,
-            sc,
+            &sc.without_shift(),
             &run.unloading,
             Phase::Unloading,
             (run.t_switch, run.t_end),
@@ -125,7 +143,7 @@ pub(crate) fn summarize<L: ForceLaw>(
     let loading_peak = phase_peak(law, sc, &run.loading, Phase::Loading, 0.0, run.t_switch);
     let unloading_peak = phase_peak(
         law,
-        sc,
+        &sc.without_shift(),
         &run.unloading,
         Phase::Unloading,
         run.t_switch,

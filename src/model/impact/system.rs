@@ -1,5 +1,10 @@
 //! m·ẍ = −F(x, ẋ) as a first-order system in scaled variables, with the energy guard.
+//!
+//! The state is (X, W) with W = V + γ·Xⁿ ([`Scales::shift`]): for the proposed model the damping
+//! impulse is taken into W, whose rate is then the elastic force alone; for every other law γ = 0
+//! and W = V.
 
+use crate::model::force::law::{abs_pow_nm1, signed_pow_n};
 use crate::model::force::{ForceLaw, Phase};
 use crate::model::ode::{OdeSystem, State};
 use nalgebra::Matrix2;
@@ -11,7 +16,8 @@ use super::scale::Scales;
 /// moderate growth honestly (e.g. explicit Euler's e_out > 1) and stops a blow-up early.
 pub const ENERGY_LIMIT: f64 = 1.5;
 
-/// dX/dT = V, dV/dT = −(x_e/(m·v₀²))·F(x_e·X, v₀·V) in one phase of the impact.
+/// dX/dT = V, dV/dT = −(x_e/(m·v₀²))·F(x_e·X, v₀·V) in one phase of the impact; with γ ≠ 0,
+/// dX/dT = W − γ·Xⁿ, dW/dT = −(x_e/(m·v₀²))·k·xⁿ (the damping's rate n·γ·Xⁿ⁻¹·V cancels it exactly).
 pub(crate) struct ImpactSystem<'a, L> {
     pub law: &'a L,
     pub phase: Phase,
@@ -39,8 +45,14 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
     fn rhs(&mut self, _t: f64, y: &State) -> State {
         self.force_evals += 1;
         let sc = &self.scales;
-        let f = self.law.phase_force(y[0] * sc.x, y[1] * sc.v, self.phase);
-        State::new(y[1], -sc.accel * f)
+        if sc.shift == 0.0 {
+            let f = self.law.phase_force(y[0] * sc.x, y[1] * sc.v, self.phase);
+            State::new(y[1], -sc.accel * f)
+        } else {
+            // k·xⁿ/F_ref = Xⁿ, and accel·F_ref = (n+1)/2.
+            let xn = signed_pow_n(y[0], sc.n);
+            State::new(y[1] - sc.shift * xn, -sc.accel * sc.f * xn)
+        }
     }
 
     /// [[0, 1], [−accel·x_e·∂F/∂x, −accel·v₀·∂F/∂ẋ]] from the law's partials, taken at
@@ -49,14 +61,18 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
     /// stand-in costs nothing in accuracy.
     fn jacobian(&mut self, _t: f64, y: &State) -> Matrix2<f64> {
         let sc = &self.scales;
-        let (fx, fv) = self
-            .law
-            .partials(y[0].max(1e-3) * sc.x, y[1] * sc.v, self.phase);
-        Matrix2::new(0.0, 1.0, -sc.accel * sc.x * fx, -sc.accel * sc.v * fv)
+        let x = y[0].max(1e-3);
+        if sc.shift == 0.0 {
+            let (fx, fv) = self.law.partials(x * sc.x, y[1] * sc.v, self.phase);
+            Matrix2::new(0.0, 1.0, -sc.accel * sc.x * fx, -sc.accel * sc.v * fv)
+        } else {
+            let dxn = sc.n * abs_pow_nm1(x, sc.n);
+            Matrix2::new(-sc.shift * dxn, 1.0, -sc.accel * sc.f * dxn, 0.0)
+        }
     }
 
     fn check(&mut self, _t: f64, y: &State) -> Result<(), String> {
-        let energy = self.scales.energy(y[0], y[1]);
+        let energy = self.scales.energy(y[0], self.scales.velocity(y));
         if energy > ENERGY_LIMIT {
             self.growth = Some(energy - 1.0);
             Err(format!(

@@ -157,9 +157,11 @@ impl Trajectory {
             return None;
         }
         let tau = t / self.scales.t;
+        let xv = |y: State| self.scales.xv(&y);
         Some(if tau <= curves.t_switch {
-            (curves.loading.eval(tau), Phase::Loading)
+            (xv(curves.loading.eval(tau)), Phase::Loading)
         } else if tau <= curves.unloading.t_end() {
+            // Unloading is integrated in (X, V) itself (see `phases::Run`).
             (curves.unloading.eval(tau), Phase::Unloading)
         } else {
             // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed

@@ -59,19 +59,19 @@ pub(super) fn integrate(
             // `validate` guarantees dt is present and positive.
             let dt = opts.dt.unwrap_or(f64::NAN);
             let scheme = FixedStep::new(kind, sys, &mut stats, t0, &y0, dt, opts)?;
-            run(scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts)
         }
         Method::Dopri5 => {
             let scheme = Dopri5::new(sys, &mut stats, t0, &y0, opts)?;
-            run(scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts)
         }
         Method::Dop853 => {
             let scheme = Dop853::new(sys, &mut stats, t0, &y0, opts)?;
-            run(scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts)
         }
         Method::Radau5 => {
             let scheme = Radau5::new(sys, &mut stats, t0, &y0, opts)?;
-            run(scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts)
         }
     }
 }
@@ -123,7 +123,9 @@ fn validate(method: Method, t0: f64, opts: &Options) -> Result<(), OdeError> {
     Ok(())
 }
 
+#[allow(clippy::too_many_arguments)]
 fn run<S: Scheme>(
+    method: Method,
     mut scheme: S,
     sys: &mut dyn OdeSystem,
     mut stats: Stats,
@@ -147,18 +149,45 @@ fn run<S: Scheme>(
             (step.t, step.y)
         };
         let hit = tracker.check(events, &step.segment, t, t_b, &y_b);
-        dense.push(step.segment);
         if let Some(hit) = hit {
-            dense.truncate_at(hit.t);
+            let landed = if method.is_adaptive() {
+                Some(land(
+                    method,
+                    sys,
+                    &mut stats,
+                    (t, y),
+                    &step.segment,
+                    &events[hit.index],
+                    hit.t,
+                    opts,
+                )?)
+            } else {
+                None
+            };
+            dense.push(step.segment);
+            let (t_hit, y_hit) = match landed {
+                Some(landing) => {
+                    dense.truncate_at(t);
+                    for segment in landing.dense.segments() {
+                        dense.push(segment.clone());
+                    }
+                    (landing.t, landing.y)
+                }
+                None => {
+                    dense.truncate_at(hit.t);
+                    (hit.t, hit.y)
+                }
+            };
             return finish(
                 sys,
                 dense,
-                hit.t,
-                hit.y,
+                t_hit,
+                y_hit,
                 Stop::Event { index: hit.index },
                 stats,
             );
         }
+        dense.push(step.segment);
         if beyond {
             dense.truncate_at(t_b);
             return finish(sys, dense, t_b, y_b, Stop::TimeLimit, stats);
@@ -167,6 +196,77 @@ fn run<S: Scheme>(
         y = step.y;
         sys.check(t, &y)
             .map_err(|reason| OdeError::Aborted { t, reason })?;
+    }
+}
+
+/// Corrections of the event time after the first landing: the interpolant's root is within the
+/// local error of the true one; Newton with the interpolant's rate, then secants through the
+/// landed states, reach rounding in two or three.
+const LANDING_CORRECTIONS: usize = 3;
+
+/// Ends an adaptive integration on an event with the method's full order: the interpolant of a
+/// step is an order lower than the step itself (DOPRI5's is 4th order) and, in the step that
+/// straddles the event, was built from stages beyond it. So the step from `start` is retaken to
+/// end exactly at the located time `t_hit`, and that time is corrected by Newton's method on the
+/// event function along the new end state (its rate first taken from the straddling `segment`,
+/// then by secant through the landed states).
+#[allow(clippy::too_many_arguments)]
+fn land(
+    method: Method,
+    sys: &mut dyn OdeSystem,
+    stats: &mut Stats,
+    (t_start, y_start): (f64, State),
+    segment: &Segment,
+    event: &Event,
+    t_hit: f64,
+    opts: &Options,
+) -> Result<Integration, OdeError> {
+    let g = |t: f64, y: &State| (event.g)(t, y);
+    // dg/dt along the solution, by a central difference on the straddling step's interpolant.
+    let h_step = segment.t_end() - t_start;
+    let delta = 1e-5 * h_step;
+    let mut rate = (g(t_hit + delta, &segment.eval(t_hit + delta))
+        - g(t_hit - delta, &segment.eval(t_hit - delta)))
+        / (2.0 * delta);
+    let mut target = t_hit;
+    let mut corrections = 0;
+    // The previous landing (time, g), for a secant rate from the landed states themselves.
+    let mut previous: Option<(f64, f64)> = None;
+    loop {
+        let spent = stats.steps + stats.rejected_steps;
+        let span = target - t_start;
+        let sub_opts = Options {
+            h_initial: Some(span),
+            h_max: span,
+            t_max: target,
+            max_steps: opts.max_steps.saturating_sub(spent).max(1),
+            ..*opts
+        };
+        let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts)?;
+        *stats += landing.stats;
+        let g_landed = g(landing.t, &landing.y);
+        if let Some((t_prev, g_prev)) = previous {
+            let secant = (g_landed - g_prev) / (landing.t - t_prev);
+            if secant.is_finite() && secant != 0.0 {
+                rate = secant;
+            }
+        }
+        previous = Some((landing.t, g_landed));
+        let dt = -g_landed / rate;
+        corrections += 1;
+        // Corrections below rounding of t, a non-finite rate, or a target that would fall out of
+        // the straddling step's reach: the landed state stands.
+        let settled =
+            !(dt.is_finite()) || dt.abs() <= 4.0 * f64::EPSILON * target.abs().max(h_step);
+        let next = target + dt;
+        if settled
+            || corrections > LANDING_CORRECTIONS
+            || next <= t_start
+            || next > t_start + 2.0 * h_step
+        {
+            return Ok(landing);
+        }
+        target = next;
     }
 }
 

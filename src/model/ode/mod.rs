@@ -87,6 +87,12 @@ impl Method {
         matches!(self, Method::Dopri5 | Method::Dop853 | Method::Radau5)
     }
 
+    /// Partitioned methods read y = (x, v) as position and velocity (ẋ = y[1]) and only the
+    /// acceleration f(t, y)[1]; the others integrate any first-order system.
+    pub fn is_partitioned(self) -> bool {
+        matches!(self, Method::SymplecticEuler | Method::Verlet)
+    }
+
     /// Classical order of convergence.
     pub fn order(self) -> u32 {
         match self {
@@ -249,9 +255,11 @@ pub struct Integration {
 ///   their last step onto `t_max` exactly and need `atol > 0`.
 /// - Events are checked after every accepted step at its ends and at three interior points of
 ///   its interpolant; the first crossing is located by Brent's method to ≈ 4·ε·|t| on the dense
-///   output. The returned event time lies on the far side of the crossing (g has changed sign
-///   or is 0 there), so re-starting from it does not fire the same event again. An event whose
-///   g is exactly 0 at t₀ does not fire at t₀.
+///   output. Fixed-step methods return that time, on the far side of the crossing (g has changed
+///   sign or is 0 there), and the interpolated state. Adaptive methods then retake the step to
+///   end exactly there and correct the time by Newton's method on g, so the final state has the
+///   method's full order (not its interpolant's) and |g| is at rounding level, on either side.
+///   An event whose g is exactly 0 at t₀ does not fire at t₀.
 /// - `OdeSystem::check` runs after every accepted step and on the final state.
 /// - `Stats::rhs_evals` counts the integrator's own calls of `rhs`; evaluations made inside
 ///   `OdeSystem::jacobian` (e.g. by its finite-difference default) are counted only as

@@ -62,11 +62,13 @@ impl View {
     pub fn solver_table(&self) -> String {
         let options = &self.options;
         let mut out = format!(
-            "[solver]\nmethod = \"{}\"\nrtol = {}\natol = {}\n",
+            "[solver]\nmethod = \"{}\"\nrtol = {}\n",
             options.method,
             toml_float(options.rtol),
-            toml_float(options.atol),
         );
+        if let Some(atol) = options.atol {
+            out.push_str(&format!("atol = {}\n", toml_float(atol)));
+        }
         if let Some(dt) = options.dt {
             out.push_str(&format!("dt = {}  # s\n", toml_float(dt)));
         }
@@ -150,7 +152,7 @@ impl Decoder<'_> {
             if !(atol > 0.0 && atol.is_finite()) {
                 return Err(bad("atol", format!("must be > 0 and finite, got {atol}")));
             }
-            options.atol = atol;
+            options.atol = Some(atol);
         }
         if let Some(dt) = self.optional_number(table, "solver", "dt")? {
             if !(dt > 0.0 && dt.is_finite()) {

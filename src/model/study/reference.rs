@@ -24,7 +24,7 @@ pub fn reference_solution(
     let tight = SolveOptions {
         method: MethodChoice::Auto,
         rtol: REFERENCE_RTOL,
-        atol: REFERENCE_RTOL * 1e-2,
+        atol: Some(REFERENCE_RTOL * 1e-2),
         ..SolveOptions::default()
     };
     let auto = solve_impact(model, params, &tight)?;

@@ -89,7 +89,7 @@ pub fn work_precision_until(
             let opts = SolveOptions {
                 method: MethodChoice::Integrator(method),
                 rtol,
-                atol: rtol,
+                atol: None,
                 ..SolveOptions::default()
             };
             rows.push(measure(
