@@ -8,11 +8,15 @@ mod list;
 mod report;
 pub mod solve;
 pub mod sweep;
+pub mod translate;
 pub mod units;
 
 use std::io::Write;
 
-pub use args::{BenchArgs, Cli, Command, Format, SceneSelection, SolveArgs, SweepArgs};
+pub use args::{
+    BenchArgs, Cli, Command, Format, SceneSelection, SolveArgs, SweepArgs, TranslateArgs,
+    TranslateFormat,
+};
 pub use error::CliError;
 
 use crate::format::csv::trajectory_csv;
@@ -49,6 +53,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         },
         Command::Bench(args) => bench::run(args, &registry)?,
         Command::Sweep(args) => sweep::run(args, &registry)?,
+        Command::Translate(args) => translate::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

@@ -2,6 +2,7 @@
 
 pub mod body;
 pub mod cylinder;
+pub mod engine;
 pub mod error;
 pub mod exact;
 pub mod force;

@@ -4,6 +4,7 @@
 #[allow(dead_code)]
 mod ode_common;
 
+mod engines;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
