@@ -40,6 +40,9 @@ pub enum Command {
     Sweep(SweepArgs),
     /// The restitution each law really gives for requested e = 0.1, 0.3, 0.5, 0.7, 0.9.
     Restitution(RestitutionArgs),
+    /// Contact parameters for a simulation engine: its input fragment, calibrated so its realised
+    /// restitution at v₀ is the scene's, and what the engine will really give.
+    Translate(TranslateArgs),
 }
 
 /// Options of `hertz-tui restitution`.
@@ -151,6 +154,28 @@ pub struct SweepArgs {
     /// Output format (table, json or csv).
     #[arg(long, value_enum, default_value_t = Format::Csv)]
     pub format: Format,
+}
+
+/// Options of `hertz-tui translate`.
+#[derive(Debug, Args)]
+pub struct TranslateArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// The engine: drake, simbody, chrono, liggghts, lammps, lammps-tsuji, yade, adams, mujoco.
+    #[arg(long, value_name = "ENGINE")]
+    pub engine: String,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = TranslateFormat::Text)]
+    pub format: TranslateFormat,
+}
+
+/// How `translate` prints its result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TranslateFormat {
+    /// The law, parameters, realised numbers, notes and the fragments to paste.
+    Text,
+    /// One JSON object, SI units.
+    Json,
 }
 
 /// How `solve` prints its results.

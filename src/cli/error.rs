@@ -6,6 +6,7 @@ use thiserror::Error;
 
 use crate::model::ForceModel;
 use crate::model::ModelError;
+use crate::model::engine::EngineError;
 use crate::model::impact::ImpactError;
 use crate::model::presets::PresetError;
 
@@ -24,6 +25,8 @@ pub enum CliError {
         #[source]
         source: ImpactError,
     },
+    #[error("{0}")]
+    Engine(#[from] EngineError),
     #[error("cannot write the output: {0}")]
     Output(#[from] io::Error),
 }

@@ -9,12 +9,14 @@ mod report;
 pub mod restitution;
 pub mod solve;
 pub mod sweep;
+pub mod translate;
 pub mod units;
 
 use std::io::Write;
 
 pub use args::{
     BenchArgs, Cli, Command, Format, RestitutionArgs, SceneSelection, SolveArgs, SweepArgs,
+    TranslateArgs, TranslateFormat,
 };
 pub use error::CliError;
 
@@ -53,6 +55,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         Command::Bench(args) => bench::run(args, &registry)?,
         Command::Sweep(args) => sweep::run(args, &registry)?,
         Command::Restitution(args) => restitution::run(args, &registry)?,
+        Command::Translate(args) => translate::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

@@ -3,6 +3,7 @@
 pub mod body;
 pub mod calibrate;
 pub mod cylinder;
+pub mod engine;
 pub mod error;
 pub mod exact;
 pub mod force;

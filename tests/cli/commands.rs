@@ -540,3 +540,103 @@ fn help_and_version_work() {
         assert!(out.contains(flag), "{flag} missing:\n{out}");
     }
 }
+
+#[test]
+fn translate_json_for_every_engine_realises_the_scene_restitution() {
+    for engine in [
+        "drake",
+        "simbody",
+        "chrono",
+        "liggghts",
+        "lammps",
+        "lammps-tsuji",
+        "yade",
+        "adams",
+        "mujoco",
+    ] {
+        let v = json(&[
+            "translate",
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--set",
+            "impact.restitution=0.4",
+            "--engine",
+            engine,
+        ]);
+        assert_eq!(v["engine"], engine);
+        assert_eq!(number(&v, "e_requested"), 0.4);
+        let tolerance = if engine == "chrono" { 1e-6 } else { 1e-8 };
+        assert!(
+            (number(&v, "realised.e_out") - 0.4).abs() < tolerance,
+            "{engine}: {v}"
+        );
+        for key in ["f_max", "t_contact", "x_max", "dt_stable"] {
+            assert!(number(&v["realised"], key) > 0.0, "{engine}: {key}");
+        }
+        assert_eq!(v["e_of_v"].as_array().map(Vec::len), Some(7), "{engine}");
+        let fragment = v["fragments"][0]["text"].as_str().unwrap_or_default();
+        for p in v["parameters"].as_array().into_iter().flatten() {
+            assert!(
+                p["value"].as_f64().is_some_and(f64::is_finite),
+                "{engine}: {p}"
+            );
+        }
+        assert!(!fragment.is_empty(), "{engine}");
+    }
+}
+
+#[test]
+fn translate_text_ends_with_the_fragment() {
+    let out = ok(&[
+        "translate",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--engine",
+        "drake",
+    ]);
+    for heading in [
+        "engine law",
+        "Parameters",
+        "What the engine gives",
+        "e_out against v₀",
+    ] {
+        assert!(out.contains(heading), "{heading}: {out}");
+    }
+    assert!(
+        out.trim_end().ends_with("</collision>"),
+        "the SDF fragment comes last: {out}"
+    );
+}
+
+#[test]
+fn translate_errors_name_the_engine_or_the_limit() {
+    let err = user_error(&[
+        "translate",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--engine",
+        "bullet",
+    ]);
+    assert!(
+        err.contains("unknown engine 'bullet'") && err.contains("drake"),
+        "{err}"
+    );
+    let err = user_error(&[
+        "translate",
+        "--scene",
+        "steel-cylinders-r20-l100",
+        "--engine",
+        "chrono",
+    ]);
+    assert!(err.contains("point contact"), "{err}");
+    let err = user_error(&[
+        "translate",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--set",
+        "impact.restitution=0.05",
+        "--engine",
+        "lammps-tsuji",
+    ]);
+    assert!(err.contains("cannot be reached"), "{err}");
+}

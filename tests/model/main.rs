@@ -5,6 +5,7 @@
 mod ode_common;
 
 mod calibration;
+mod engines;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;

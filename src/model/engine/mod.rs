@@ -1,0 +1,285 @@
+//! Contact parameters for the engine a user simulates in (docs/physics.md §7).
+//!
+//! Each engine is one file holding its documented law (source named in its doc comment), the rule
+//! that maps the scene to its parameters, and its input fragment; [`ENGINES`] lists them. The
+//! engine's law is written as a [`contact::ContactLaw`] and solved by hertz-tui itself, so the
+//! translation states what the engine will really give: realised restitution at v₀ and over a
+//! range of v₀, peak force, contact time and the largest stable explicit step.
+
+use serde::Serialize;
+
+use super::error::ModelError;
+use super::power_law::PowerLaw;
+use super::{Body, Scene, Shape};
+use crate::format::round_trip;
+
+pub mod adams;
+pub mod calibrate;
+pub mod chrono;
+pub mod contact;
+pub mod drake;
+pub mod error;
+pub mod lammps;
+pub mod lammps_tsuji;
+pub mod liggghts;
+pub mod mujoco;
+pub mod simbody;
+pub mod tsuji;
+pub mod yade;
+
+pub use contact::{ContactLaw, Damping, EndRule, EngineImpact};
+pub use error::EngineError;
+
+/// One engine: its `--engine` id, its name, and how it translates a scene.
+#[derive(Debug, Clone, Copy)]
+pub struct Engine {
+    pub id: &'static str,
+    pub name: &'static str,
+    /// The documentation or source file its law was read from.
+    pub source: &'static str,
+    pub translate: fn(&EngineScene) -> Result<Translation, EngineError>,
+}
+
+/// Every engine hertz-tui translates for; adding one is a file and a row here.
+pub const ENGINES: [Engine; 9] = [
+    drake::ENGINE,
+    simbody::ENGINE,
+    chrono::ENGINE,
+    liggghts::ENGINE,
+    lammps::ENGINE,
+    lammps_tsuji::ENGINE,
+    yade::ENGINE,
+    adams::ENGINE,
+    mujoco::ENGINE,
+];
+
+/// The engine with `id`.
+pub fn find(id: &str) -> Result<&'static Engine, EngineError> {
+    ENGINES.iter().find(|e| e.id == id).ok_or_else(|| {
+        let ids: Vec<_> = ENGINES.iter().map(|e| e.id).collect();
+        EngineError::UnknownEngine(id.to_string(), ids.join(", "))
+    })
+}
+
+/// Translates `scene` for the engine `id`.
+pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
+    let engine = find(id)?;
+    (engine.translate)(&EngineScene::new(scene)?)
+}
+
+/// What every engine needs of a scene, SI units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EngineScene {
+    pub scene: Scene,
+    /// Reduced mass m, kg (eq 4).
+    pub mass: f64,
+    pub v0: f64,
+    /// The requested restitution e.
+    pub restitution: f64,
+    /// The scene's elastic law F = k·xⁿ (Hertz for spheres, the fitted law for cylinders).
+    pub elastic: PowerLaw,
+    /// Effective modulus E* = 1/η, Pa (eq 3).
+    pub e_star: f64,
+    /// Reduced radius R, m (eq 2; ∞ for two planes).
+    pub r_star: f64,
+    pub point_contact: bool,
+    /// Elastic contact time and maximum approach at v₀ (eqs 5, 7).
+    pub t_contact: f64,
+    pub x_max: f64,
+}
+
+impl EngineScene {
+    pub fn new(scene: &Scene) -> Result<Self, ModelError> {
+        let quasistatic = scene.quasistatic()?;
+        let pair = scene.pair()?;
+        Ok(EngineScene {
+            scene: scene.clone(),
+            mass: quasistatic.reduced_mass,
+            v0: scene.impact.v0,
+            restitution: scene.impact.restitution,
+            elastic: quasistatic.law(),
+            e_star: 1.0 / pair.elastic_factor(),
+            r_star: pair.reduced_radius(),
+            point_contact: pair.kind().is_point_contact(),
+            t_contact: quasistatic.t_contact,
+            x_max: quasistatic.x_max,
+        })
+    }
+
+    /// Refuses line contact for an engine whose law is Hertz's point contact.
+    pub fn require_point_contact(&self, engine: &'static str) -> Result<(), EngineError> {
+        if self.point_contact {
+            Ok(())
+        } else {
+            Err(EngineError::NeedsPointContact {
+                engine,
+                pair: format!(
+                    "{}–{}",
+                    self.scene.body1.shape.name(),
+                    self.scene.body2.shape.name()
+                ),
+            })
+        }
+    }
+
+    /// The linear stiffness whose undamped contact time π√(m/K) equals the scene's elastic Hertz
+    /// contact time t_c (eq 7): K = m·(π/t_c)², N/m. The rule every linear engine here uses.
+    pub fn linear_stiffness(&self) -> f64 {
+        self.mass * (std::f64::consts::PI / self.t_contact).powi(2)
+    }
+
+    /// The two bodies, the moving one (a body of finite mass) first.
+    pub fn bodies(&self) -> [&Body; 2] {
+        let (b1, b2) = (&self.scene.body1, &self.scene.body2);
+        if b1.mass().is_finite() || !b2.mass().is_finite() {
+            [b1, b2]
+        } else {
+            [b2, b1]
+        }
+    }
+}
+
+/// One parameter as the engine takes it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Parameter {
+    /// The engine's own name for it.
+    pub name: &'static str,
+    /// The value printed in the fragment (rounded to 10 significant digits).
+    pub value: f64,
+    pub unit: &'static str,
+    /// How it was obtained.
+    pub rule: String,
+}
+
+impl Parameter {
+    pub fn new(
+        name: &'static str,
+        value: f64,
+        unit: &'static str,
+        rule: impl Into<String>,
+    ) -> Self {
+        Parameter {
+            name,
+            value: pasteable(value),
+            unit,
+            rule: rule.into(),
+        }
+    }
+
+    /// The value as the fragment prints it.
+    pub fn text(&self) -> String {
+        shown(self.value)
+    }
+}
+
+/// `x` rounded to 10 significant digits: what a fragment prints, and what the realised numbers
+/// are computed from, so that pasting reproduces them.
+pub fn pasteable(x: f64) -> f64 {
+    format!("{x:.9e}").parse().unwrap_or(x)
+}
+
+/// `x` as prose and fragments show it: [`pasteable`], shortest text.
+pub fn shown(x: f64) -> String {
+    round_trip(pasteable(x))
+}
+
+/// Ready-to-paste engine input.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Fragment {
+    /// What it is (e.g. "SDF collision element").
+    pub title: &'static str,
+    /// Its language, for a fenced block: xml, cpp, python, text.
+    pub language: &'static str,
+    pub text: String,
+}
+
+/// The realised restitution at one impact velocity.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct VelocityPoint {
+    pub v0: f64,
+    pub e_out: f64,
+}
+
+/// The translation of a scene for one engine.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Translation {
+    pub engine: &'static str,
+    pub name: &'static str,
+    pub source: &'static str,
+    /// The engine's law with its parameters, in words.
+    pub law: String,
+    /// The same law among hertz-tui's.
+    pub hertz_tui_law: String,
+    pub end_rule: EndRule,
+    /// Where the translation approximates the engine (`None`: the engine's law exactly).
+    pub approximation: Option<String>,
+    pub parameters: Vec<Parameter>,
+    pub fragments: Vec<Fragment>,
+    /// Assumptions and caveats.
+    pub notes: Vec<String>,
+    pub v0: f64,
+    pub e_requested: f64,
+    /// What the engine's law gives at the scene's v₀.
+    pub realised: EngineImpact,
+    /// Realised restitution over v₀/10 … 10·v₀.
+    pub e_of_v: Vec<VelocityPoint>,
+}
+
+/// The factors of v₀ at which [`Translation::e_of_v`] is evaluated: two decades around the scene.
+pub const VELOCITY_FACTORS: [f64; 7] = [0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0];
+
+/// What the engine's law gives: at v₀, and its restitution at [`VELOCITY_FACTORS`]·v₀.
+pub fn realise(
+    law: &ContactLaw,
+    scene: &EngineScene,
+) -> Result<(EngineImpact, Vec<VelocityPoint>), EngineError> {
+    let at_v0 = contact::solve(law, scene.mass, scene.v0)?;
+    let e_of_v = VELOCITY_FACTORS
+        .iter()
+        .map(|f| {
+            let v0 = f * scene.v0;
+            contact::solve(law, scene.mass, v0).map(|r| VelocityPoint { v0, e_out: r.e_out })
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((at_v0, e_of_v))
+}
+
+/// How a body's geometry reads in prose ("sphere R = 0.01 m").
+pub fn describe(shape: &Shape) -> String {
+    match *shape {
+        Shape::Sphere { radius } => format!("sphere R = {} m", round_trip(radius)),
+        Shape::Cylinder { radius, length } => format!(
+            "cylinder R = {} m, L = {} m",
+            round_trip(radius),
+            round_trip(length)
+        ),
+        Shape::Plane => "plane".into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_engine_is_found_by_its_id_and_ids_are_unique() {
+        for engine in &ENGINES {
+            assert_eq!(find(engine.id).map(|e| e.name), Ok(engine.name));
+        }
+        let mut ids: Vec<_> = ENGINES.iter().map(|e| e.id).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        assert_eq!(ids.len(), ENGINES.len());
+        let err = find("bullet").map(|e| e.id).unwrap_err().to_string();
+        assert!(
+            err.contains("unknown engine 'bullet'") && err.contains("mujoco"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn pasteable_keeps_ten_significant_digits() {
+        assert_eq!(pasteable(0.123456789012345), 0.1234567890);
+        assert_eq!(pasteable(2e11), 2e11);
+    }
+}
