@@ -4,6 +4,7 @@
 //! Coordinates are display values: SI divided by the axis's prefix and unit, and log₁₀ of that on
 //! a log axis, so that a renderer maps them linearly onto its plot area.
 
+pub mod figure;
 pub mod layout;
 
 pub use layout::{Placed, place_ticks};
@@ -23,6 +24,48 @@ pub enum Ink {
     Warning,
     /// Fully plastic (v_p), failures.
     Error,
+}
+
+/// The colour of an ink, by name: the terminal shows it in the ANSI colour of that name (not the
+/// bright variant, which fades on white), a figure in a print colour of that hue.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hue {
+    Foreground,
+    Red,
+    Green,
+    Yellow,
+    Blue,
+    Magenta,
+    Cyan,
+}
+
+impl Ink {
+    /// The hue of this ink: a model or method keeps its hue everywhere. The five models take
+    /// five hues; the seven methods six hues and the foreground (radau5: never in the stability
+    /// view, where the reference is the foreground).
+    pub fn hue(self) -> Hue {
+        match self {
+            Ink::Foreground => Hue::Foreground,
+            Ink::Model(m) => match m {
+                ForceModel::Proposed => Hue::Red,
+                ForceModel::HuntCrossley => Hue::Cyan,
+                ForceModel::LankaraniNikravesh => Hue::Magenta,
+                ForceModel::Quasistatic => Hue::Blue,
+                ForceModel::DryFriction => Hue::Green,
+            },
+            Ink::Method(m) => match m {
+                Method::Dopri5 => Hue::Yellow,
+                Method::Dop853 => Hue::Cyan,
+                Method::Radau5 => Hue::Foreground,
+                Method::Euler => Hue::Red,
+                Method::SymplecticEuler => Hue::Green,
+                Method::Verlet => Hue::Blue,
+                Method::Rk4 => Hue::Magenta,
+            },
+            Ink::Warning => Hue::Yellow,
+            Ink::Error => Hue::Red,
+        }
+    }
 }
 
 /// A tick: its place in display values and its label.

@@ -5,7 +5,7 @@
 
 use ratatui::style::{Color, Modifier, Style};
 
-use crate::chart::Ink;
+use crate::chart::{Hue, Ink};
 use crate::model::ForceModel;
 use crate::model::ode::Method;
 
@@ -13,6 +13,19 @@ use crate::model::ode::Method;
 /// curve's peak and end (and along it without colour).
 pub fn sample(glyph: char) -> String {
     format!("─{glyph}──")
+}
+
+/// The ANSI colour of a hue.
+fn color_of(hue: Hue) -> Color {
+    match hue {
+        Hue::Foreground => Color::Reset,
+        Hue::Red => Color::Red,
+        Hue::Green => Color::Green,
+        Hue::Yellow => Color::Yellow,
+        Hue::Blue => Color::Blue,
+        Hue::Magenta => Color::Magenta,
+        Hue::Cyan => Color::Cyan,
+    }
 }
 
 /// What a piece of text is, for styling.
@@ -78,34 +91,19 @@ impl Theme {
         if !self.color {
             return Color::Reset;
         }
-        match model {
-            ForceModel::Proposed => Color::Red,
-            ForceModel::HuntCrossley => Color::Cyan,
-            ForceModel::LankaraniNikravesh => Color::Magenta,
-            ForceModel::Quasistatic => Color::Blue,
-            ForceModel::DryFriction => Color::Green,
-        }
+        color_of(Ink::Model(model).hue())
     }
 
     pub fn model_style(self, model: ForceModel) -> Style {
         Style::default().fg(self.model_color(model))
     }
 
-    /// The colour of an integration method's line: radau5 (never in the stability view, where the
-    /// reference is) takes the foreground, so seven methods need no two alike.
+    /// The colour of an integration method's line.
     pub fn method_color(self, method: Method) -> Color {
         if !self.color {
             return Color::Reset;
         }
-        match method {
-            Method::Dopri5 => Color::Yellow,
-            Method::Dop853 => Color::Cyan,
-            Method::Radau5 => Color::Reset,
-            Method::Euler => Color::Red,
-            Method::SymplecticEuler => Color::Green,
-            Method::Verlet => Color::Blue,
-            Method::Rk4 => Color::Magenta,
-        }
+        color_of(Ink::Method(method).hue())
     }
 
     pub fn method_style(self, method: Method) -> Style {
