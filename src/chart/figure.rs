@@ -228,18 +228,21 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         text_style(14, BLACK, HPos::Left, VPos::Top),
     ))?;
     for rule in &chart.rules {
-        let (Some(a), Some(b)) = (
-            p.at(chart, (rule.x, chart.y.range[0])),
-            p.at(chart, (rule.x, chart.y.range[1])),
-        ) else {
+        let [a, b] = rule.ends(chart);
+        let (Some(a), Some(b)) = (p.at(chart, a), p.at(chart, b)) else {
             continue;
         };
         let style = color(rule.ink).stroke_width(2);
         area.draw(&DashedPathElement::new(vec![a, b], 8, 5, style))?;
+        let (at, pos) = if rule.horizontal {
+            ((b.0 - 5, b.1 - 4), (HPos::Right, VPos::Bottom))
+        } else {
+            ((b.0 + 5, b.1 + 4), (HPos::Left, VPos::Top))
+        };
         area.draw(&Text::new(
             rule.label.clone(),
-            (b.0 + 5, b.1 + 4),
-            text_style(14, color(rule.ink), HPos::Left, VPos::Top),
+            at,
+            text_style(14, color(rule.ink), pos.0, pos.1),
         ))?;
     }
     for s in &chart.series {
@@ -371,7 +374,8 @@ mod tests {
             ],
             marks: Vec::new(),
             rules: vec![Rule {
-                x: 4.0,
+                at: 4.0,
+                horizontal: false,
                 ink: Ink::Warning,
                 label: "v_y".into(),
             }],

@@ -24,6 +24,8 @@ pub enum Ink {
     Warning,
     /// Fully plastic (v_p), failures.
     Error,
+    /// A line of its own hue (one scene among several).
+    Plain(Hue),
 }
 
 /// The colour of an ink, by name: the terminal shows it in the ANSI colour of that name (not the
@@ -64,6 +66,7 @@ impl Ink {
             },
             Ink::Warning => Hue::Yellow,
             Ink::Error => Hue::Red,
+            Ink::Plain(hue) => hue,
         }
     }
 }
@@ -130,12 +133,25 @@ pub struct Mark {
     pub label: Option<String>,
 }
 
-/// A vertical line across the plot at `x`, labelled at its top.
+/// A line across the plot at a value of x (vertical, labelled at its top) or of y (horizontal,
+/// labelled at its right end).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rule {
-    pub x: f64,
+    pub at: f64,
+    pub horizontal: bool,
     pub ink: Ink,
     pub label: String,
+}
+
+impl Rule {
+    /// Its two ends in display values, across the whole plot of `chart`.
+    pub fn ends(&self, chart: &Chart) -> [(f64, f64); 2] {
+        if self.horizontal {
+            [(chart.x.range[0], self.at), (chart.x.range[1], self.at)]
+        } else {
+            [(self.at, chart.y.range[0]), (self.at, chart.y.range[1])]
+        }
+    }
 }
 
 /// Everything one chart shows.

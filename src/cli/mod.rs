@@ -5,6 +5,7 @@ pub mod bench;
 pub mod error;
 mod layout;
 mod list;
+pub mod plot;
 mod report;
 pub mod solve;
 pub mod sweep;
@@ -12,7 +13,7 @@ pub mod units;
 
 use std::io::Write;
 
-pub use args::{BenchArgs, Cli, Command, Format, SceneSelection, SolveArgs, SweepArgs};
+pub use args::{BenchArgs, Cli, Command, Format, PlotArgs, SceneSelection, SolveArgs, SweepArgs};
 pub use error::CliError;
 
 use crate::format::csv::trajectory_csv;
@@ -49,6 +50,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         },
         Command::Bench(args) => bench::run(args, &registry)?,
         Command::Sweep(args) => sweep::run(args, &registry)?,
+        Command::Plot(args) => plot::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

@@ -118,6 +118,8 @@ impl Theme {
             Ink::Method(m) => self.method_style(m),
             Ink::Warning => self.style(Role::Warning),
             Ink::Error => self.style(Role::Error).remove_modifier(Modifier::BOLD),
+            Ink::Plain(hue) if self.color => Style::default().fg(color_of(hue)),
+            Ink::Plain(_) => Style::default(),
         }
     }
 }

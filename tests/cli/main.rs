@@ -1,4 +1,5 @@
 //! The command line driven as a user would: the real binary, its output parsed.
 
 mod commands;
+mod plot;
 mod studies;
