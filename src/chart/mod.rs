@@ -4,6 +4,7 @@
 //! Coordinates are display values: SI divided by the axis's prefix and unit, and log₁₀ of that on
 //! a log axis, so that a renderer maps them linearly onto its plot area.
 
+pub mod figure;
 pub mod layout;
 
 pub use layout::{Placed, place_ticks};
@@ -23,6 +24,58 @@ pub enum Ink {
     Warning,
     /// Fully plastic (v_p), failures.
     Error,
+    /// A line of its own hue (one scene among several).
+    Plain(Hue),
+}
+
+/// The colour of an ink, by name: the terminal shows it in the ANSI colour of that name (not the
+/// bright variant, which fades on white), a figure in a print colour of that hue.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hue {
+    Foreground,
+    Red,
+    Green,
+    Yellow,
+    Blue,
+    Magenta,
+    Cyan,
+}
+
+impl Ink {
+    /// The hue of this ink: a model or method keeps its hue everywhere. The five models take
+    /// five hues; the seven methods six hues and the foreground (radau5: never in the stability
+    /// view, where the reference is the foreground).
+    pub fn hue(self) -> Hue {
+        match self {
+            Ink::Foreground => Hue::Foreground,
+            Ink::Model(m) => {
+                // The paper's five take five hues; further laws cycle through six hues and the
+                // foreground, their glyphs telling them apart (model_glyph).
+                const HUES: [Hue; 7] = [
+                    Hue::Red,
+                    Hue::Cyan,
+                    Hue::Magenta,
+                    Hue::Blue,
+                    Hue::Green,
+                    Hue::Yellow,
+                    Hue::Foreground,
+                ];
+                HUES[style_index(m) % HUES.len()]
+            }
+            Ink::Method(m) => match m {
+                Method::Dopri5 => Hue::Yellow,
+                Method::Dop853 => Hue::Cyan,
+                Method::Radau5 => Hue::Foreground,
+                Method::Euler => Hue::Red,
+                Method::SymplecticEuler => Hue::Green,
+                Method::Verlet => Hue::Blue,
+                Method::Rk4 => Hue::Magenta,
+            },
+            Ink::Warning => Hue::Yellow,
+            Ink::Error => Hue::Red,
+            Ink::Plain(hue) => hue,
+        }
+    }
 }
 
 /// A tick: its place in display values and its label.
@@ -87,12 +140,25 @@ pub struct Mark {
     pub label: Option<String>,
 }
 
-/// A vertical line across the plot at `x`, labelled at its top.
+/// A line across the plot at a value of x (vertical, labelled at its top) or of y (horizontal,
+/// labelled at its right end).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rule {
-    pub x: f64,
+    pub at: f64,
+    pub horizontal: bool,
     pub ink: Ink,
     pub label: String,
+}
+
+impl Rule {
+    /// Its two ends in display values, across the whole plot of `chart`.
+    pub fn ends(&self, chart: &Chart) -> [(f64, f64); 2] {
+        if self.horizontal {
+            [(chart.x.range[0], self.at), (chart.x.range[1], self.at)]
+        } else {
+            [(self.at, chart.y.range[0]), (self.at, chart.y.range[1])]
+        }
+    }
 }
 
 /// Everything one chart shows.

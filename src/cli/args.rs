@@ -43,6 +43,8 @@ pub enum Command {
     /// Contact parameters for a simulation engine: its input fragment, calibrated so its realised
     /// restitution at v₀ is the scene's, and what the engine will really give.
     Translate(TranslateArgs),
+    /// Write a chart as the explorer draws it to an SVG or PNG figure.
+    Plot(PlotArgs),
 }
 
 /// Options of `hertz-tui restitution`.
@@ -56,6 +58,89 @@ pub struct RestitutionArgs {
     /// Output format (table, json or csv).
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+}
+
+/// The charts `plot` draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ChartChoice {
+    /// Force against approach.
+    Fx,
+    /// Force against time.
+    Ft,
+    /// Velocity against approach.
+    Vx,
+    /// One output against a scene key (--param, --quantity), a line per model or scene.
+    Sweep,
+    /// log error against cost of every method on the first --model.
+    WorkPrecision,
+    /// Every fixed-step method at one step (--dt) over the reference, on the first --model.
+    Stability,
+}
+
+/// What a sweep chart shows against the swept key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum QuantityChoice {
+    /// Maximum contact pressure of the quasistatic estimate (the paper's Fig. 2).
+    P0,
+    /// Contact radius or half-width of the estimate.
+    ContactSize,
+    XMax,
+    FMax,
+    TC,
+    VOut,
+    EOut,
+}
+
+/// Options of `hertz-tui plot`.
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    /// A preset name or scene file; repeat it with --chart sweep for one line per scene.
+    #[arg(long, value_name = "NAME|PATH", required = true)]
+    pub scene: Vec<String>,
+    /// Override a key of every scene by its dotted path (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<Override>,
+    /// The chart.
+    #[arg(long, value_enum)]
+    pub chart: ChartChoice,
+    /// Force model (repeatable; default all five; the first is focused, and the one studied by
+    /// work-precision and stability, default proposed).
+    #[arg(long = "model", value_name = "MODEL")]
+    pub models: Vec<ForceModel>,
+    /// Solution method of fx, ft, vx and sweep (default auto).
+    #[arg(long, value_name = "METHOD", default_value = "auto")]
+    pub method: MethodChoice,
+    /// Relative tolerance of the adaptive methods (default 1e-8).
+    #[arg(long, value_name = "R", value_parser = positive_number, allow_hyphen_values = true)]
+    pub rtol: Option<f64>,
+    /// Step, s: of the fixed-step methods (fx, ft, vx, sweep) and of the stability chart
+    /// (default there: the rk4 critical step).
+    #[arg(long, value_name = "S", value_parser = positive_number, allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+    /// Sweep: the scene key varied.
+    #[arg(long, value_name = "KEY", default_value = "impact.v0")]
+    pub param: SceneKey,
+    /// Sweep: what is drawn against the key.
+    #[arg(long, value_enum, default_value_t = QuantityChoice::EOut)]
+    pub quantity: QuantityChoice,
+    /// Sweep: first value, SI (default: the explorer's range around the scene's value).
+    #[arg(long, value_name = "A", allow_hyphen_values = true, requires = "to")]
+    pub from: Option<f64>,
+    /// Sweep: last value, SI.
+    #[arg(long, value_name = "B", allow_hyphen_values = true, requires = "from")]
+    pub to: Option<f64>,
+    /// Sweep: space the points geometrically (with --from/--to; the default range picks its own).
+    #[arg(long)]
+    pub log: bool,
+    /// Sweep: number of points.
+    #[arg(long, value_name = "N", default_value_t = 200, value_parser = clap::value_parser!(u32).range(2..=100_000))]
+    pub points: u32,
+    /// The figure file: .svg (vector) or .png.
+    #[arg(short = 'o', long = "out", value_name = "FILE")]
+    pub out: std::path::PathBuf,
+    /// Figure size in pixels, WIDTHxHEIGHT.
+    #[arg(long, value_name = "WxH", default_value = "1200x800")]
+    pub size: String,
 }
 
 /// The scene a headless command works on.

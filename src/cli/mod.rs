@@ -5,6 +5,7 @@ pub mod bench;
 pub mod error;
 mod layout;
 mod list;
+pub mod plot;
 mod report;
 pub mod restitution;
 pub mod solve;
@@ -15,8 +16,8 @@ pub mod units;
 use std::io::Write;
 
 pub use args::{
-    BenchArgs, Cli, Command, Format, RestitutionArgs, SceneSelection, SolveArgs, SweepArgs,
-    TranslateArgs, TranslateFormat,
+    BenchArgs, Cli, Command, Format, PlotArgs, RestitutionArgs, SceneSelection, SolveArgs,
+    SweepArgs, TranslateArgs, TranslateFormat,
 };
 pub use error::CliError;
 
@@ -56,6 +57,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         Command::Sweep(args) => sweep::run(args, &registry)?,
         Command::Restitution(args) => restitution::run(args, &registry)?,
         Command::Translate(args) => translate::run(args, &registry)?,
+        Command::Plot(args) => plot::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

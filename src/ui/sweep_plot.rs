@@ -4,7 +4,7 @@
 use crate::model::ForceModel;
 use crate::model::study::sweep::SweepRow;
 
-use crate::chart::{Chart, Ink, Rule, Series, model_glyph};
+use crate::chart::{Chart, Hue, Ink, Rule, Series, model_glyph};
 use crate::model::scene_key::SceneKey;
 
 use super::studies::SweepData;
@@ -96,33 +96,92 @@ fn axis_title(symbol: &str, axis: &NiceAxis, unit: Unit) -> String {
     }
 }
 
-/// The sweep chart of `output`, with at most `max_x` × `max_y` tick labels; `focused` is drawn
-/// last and bold. A v₀ sweep gets the yield-onset velocities as rules.
+/// One sweep on a chart: its data, and a name where several scenes share the chart (each then
+/// drawn in its own hue and glyph).
+pub struct SweepSet<'a> {
+    pub name: Option<String>,
+    pub data: &'a SweepData,
+    /// σ_y of the pair: p₀ charts get the 1.1·σ_y (yield begins) and 2.8·σ_y (fully plastic)
+    /// levels as horizontal rules, as the paper's Fig. 2 draws them.
+    pub yield_stress: Option<f64>,
+}
+
+/// Hues and glyphs of the scenes after the first on a shared chart.
+const SCENE_LOOKS: [(Hue, char); 5] = [
+    (Hue::Blue, '+'),
+    (Hue::Red, 'x'),
+    (Hue::Green, '#'),
+    (Hue::Magenta, '%'),
+    (Hue::Cyan, '@'),
+];
+
+/// The sweep chart of `output` over `sets` (all sweeping the same key), with at most
+/// `max_x` × `max_y` tick labels; `focused` is drawn last and bold. A v₀ sweep of one scene gets
+/// the yield-onset velocities as vertical rules.
 pub fn chart(
-    data: &SweepData,
+    sets: &[SweepSet],
     output: SweepOutput,
     focused: Option<ForceModel>,
     (max_x, max_y): (usize, usize),
 ) -> Chart {
-    let spec = &data.spec;
-    let lines = lines(data, output);
+    let Some(first) = sets.first() else {
+        return Chart {
+            title: String::new(),
+            x: nice_axis(0.0, 1.0, units::DIMENSIONLESS, 2).chart_axis(String::new()),
+            y: nice_axis(0.0, 1.0, units::DIMENSIONLESS, 2).chart_axis(String::new()),
+            series: Vec::new(),
+            marks: Vec::new(),
+            rules: Vec::new(),
+            notes: Vec::new(),
+        };
+    };
+    let spec = &first.data.spec;
     let x_unit = key_unit(spec.key);
     let y_unit = output.unit();
-    let (lo, hi) = (spec.from.min(spec.to), spec.from.max(spec.to));
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for set in sets {
+        let s = &set.data.spec;
+        lo = lo.min(s.from.min(s.to));
+        hi = hi.max(s.from.max(s.to));
+    }
     let x = axis(lo, hi, x_unit, spec.log, max_x);
+    let per_set: Vec<Vec<SweepLine>> = sets.iter().map(|s| lines(s.data, output)).collect();
+    let levels: Vec<(usize, f64, &str)> = sets
+        .iter()
+        .enumerate()
+        .filter(|_| output == SweepOutput::PeakPressure)
+        .filter_map(|(i, s)| s.yield_stress.map(|sy| (i, sy)))
+        .flat_map(|(i, sy)| [(i, 1.1 * sy, "1.1·σ_y"), (i, 2.8 * sy, "2.8·σ_y")])
+        .collect();
     // The y axis includes 0, as the explorer's do: outputs are sizes, times, speeds, ratios.
     let (mut y_lo, mut y_hi) = (0.0f64, 0.0f64);
-    for (_, v) in lines.iter().flat_map(|l| l.runs.iter().flatten()) {
-        y_lo = y_lo.min(*v);
-        y_hi = y_hi.max(*v);
+    let values = per_set
+        .iter()
+        .flatten()
+        .flat_map(|l| l.runs.iter().flatten().map(|p| p.1))
+        .chain(levels.iter().map(|l| l.1));
+    for v in values {
+        y_lo = y_lo.min(v);
+        y_hi = y_hi.max(v);
     }
     let y = nice_axis(y_lo, y_hi, y_unit, max_y);
     let to_display = |(px, py): &(f64, f64)| (x.to_display(*px), y.to_display(*py));
-    let mut series: Vec<Series> = lines
-        .iter()
-        .map(|line| {
-            let (name, ink, glyph) = line.of.look();
-            Series {
+    let look_of = |i: usize, of: LineOf| {
+        let (name, ink, glyph) = of.look();
+        match (&sets[i].name, i) {
+            (None, _) => (name, ink, glyph),
+            (Some(scene), 0) => (format!("{scene}: {name}"), ink, glyph),
+            (Some(scene), _) => {
+                let (hue, glyph) = SCENE_LOOKS[(i - 1) % SCENE_LOOKS.len()];
+                (format!("{scene}: {name}"), Ink::Plain(hue), glyph)
+            }
+        }
+    };
+    let mut series: Vec<Series> = Vec::new();
+    for (i, set_lines) in per_set.iter().enumerate() {
+        for line in set_lines {
+            let (name, ink, glyph) = look_of(i, line.of);
+            series.push(Series {
                 name,
                 ink,
                 glyph,
@@ -134,23 +193,42 @@ pub fn chart(
                 focused: matches!(line.of, LineOf::Model(m) if Some(m) == focused),
                 peak: None,
                 steps: false,
-            }
-        })
-        .collect();
+            });
+        }
+    }
     series.sort_by_key(|s| s.focused);
     let mut rules = Vec::new();
-    if spec.key == SceneKey::V0
-        && let Some((v_yield, v_plastic)) = onset(data)
+    if sets.len() == 1
+        && spec.key == SceneKey::V0
+        && let Some((v_yield, v_plastic)) = onset(first.data)
     {
+        for (v, ink, label) in [
+            (v_yield, Ink::Warning, "v_y"),
+            (v_plastic, Ink::Error, "v_p"),
+        ] {
+            rules.push(Rule {
+                at: x.to_display(v),
+                horizontal: false,
+                ink,
+                label: label.into(),
+            });
+        }
+    }
+    for (i, level, label) in levels {
+        let ink = if sets.len() == 1 {
+            Ink::Foreground
+        } else {
+            look_of(i, LineOf::Estimate).1
+        };
+        let label = match &sets[i].name {
+            Some(scene) if sets.len() > 1 => format!("{label} {scene}"),
+            _ => label.to_string(),
+        };
         rules.push(Rule {
-            x: x.to_display(v_yield),
-            ink: Ink::Warning,
-            label: "v_y".into(),
-        });
-        rules.push(Rule {
-            x: x.to_display(v_plastic),
-            ink: Ink::Error,
-            label: "v_p".into(),
+            at: y.to_display(level),
+            horizontal: true,
+            ink,
+            label,
         });
     }
     let symbol = key_symbol(spec.key);

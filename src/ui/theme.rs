@@ -5,7 +5,7 @@
 
 use ratatui::style::{Color, Modifier, Style};
 
-use crate::chart::{Ink, style_index};
+use crate::chart::{Hue, Ink};
 use crate::model::ForceModel;
 use crate::model::ode::Method;
 
@@ -13,6 +13,19 @@ use crate::model::ode::Method;
 /// curve's peak and end (and along it without colour).
 pub fn sample(glyph: char) -> String {
     format!("─{glyph}──")
+}
+
+/// The ANSI colour of a hue.
+fn color_of(hue: Hue) -> Color {
+    match hue {
+        Hue::Foreground => Color::Reset,
+        Hue::Red => Color::Red,
+        Hue::Green => Color::Green,
+        Hue::Yellow => Color::Yellow,
+        Hue::Blue => Color::Blue,
+        Hue::Magenta => Color::Magenta,
+        Hue::Cyan => Color::Cyan,
+    }
 }
 
 /// What a piece of text is, for styling.
@@ -78,37 +91,19 @@ impl Theme {
         if !self.color {
             return Color::Reset;
         }
-        const HUES: [Color; 7] = [
-            Color::Red,
-            Color::Cyan,
-            Color::Magenta,
-            Color::Blue,
-            Color::Green,
-            Color::Yellow,
-            Color::Reset,
-        ];
-        HUES[style_index(model) % HUES.len()]
+        color_of(Ink::Model(model).hue())
     }
 
     pub fn model_style(self, model: ForceModel) -> Style {
         Style::default().fg(self.model_color(model))
     }
 
-    /// The colour of an integration method's line: radau5 (never in the stability view, where the
-    /// reference is) takes the foreground, so seven methods need no two alike.
+    /// The colour of an integration method's line.
     pub fn method_color(self, method: Method) -> Color {
         if !self.color {
             return Color::Reset;
         }
-        match method {
-            Method::Dopri5 => Color::Yellow,
-            Method::Dop853 => Color::Cyan,
-            Method::Radau5 => Color::Reset,
-            Method::Euler => Color::Red,
-            Method::SymplecticEuler => Color::Green,
-            Method::Verlet => Color::Blue,
-            Method::Rk4 => Color::Magenta,
-        }
+        color_of(Ink::Method(method).hue())
     }
 
     pub fn method_style(self, method: Method) -> Style {
@@ -123,6 +118,8 @@ impl Theme {
             Ink::Method(m) => self.method_style(m),
             Ink::Warning => self.style(Role::Warning),
             Ink::Error => self.style(Role::Error).remove_modifier(Modifier::BOLD),
+            Ink::Plain(hue) if self.color => Style::default().fg(color_of(hue)),
+            Ink::Plain(_) => Style::default(),
         }
     }
 }
@@ -164,7 +161,7 @@ mod tests {
         // Seven hues for every law: the first seven in style order (the paper's five among them)
         // never share a colour; past them the glyph tells curves apart (chart::model_glyph).
         let mut by_style = ForceModel::ALL.to_vec();
-        by_style.sort_by_key(|m| style_index(*m));
+        by_style.sort_by_key(|m| crate::chart::style_index(*m));
         for (i, a) in by_style.iter().enumerate() {
             assert!(!FADING.contains(&theme.model_color(*a)));
             for b in by_style[i + 1..].iter().take(6usize.saturating_sub(i)) {

@@ -2,5 +2,6 @@
 
 mod commands;
 mod laws;
+mod plot;
 mod readme;
 mod studies;

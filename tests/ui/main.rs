@@ -1,4 +1,5 @@
 //! The explorer: rendered into ratatui's TestBackend, and the real binary driven in tmux.
 
+mod axes;
 mod e2e_tmux;
 mod render;

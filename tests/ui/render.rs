@@ -24,7 +24,7 @@ use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 use ratatui::style::Color;
 
 /// The explorer on the built-in default scene, every solve done, with a fixed recompute time.
-fn app_with(marker: MarkerStyle, theme: Theme) -> App {
+pub fn app_with(marker: MarkerStyle, theme: Theme) -> App {
     let registry = Registry::builtin().unwrap();
     let scene = registry.scene(DEFAULT_SCENE).unwrap();
     let mut app = App::new(scene, registry, marker, theme);
@@ -32,13 +32,13 @@ fn app_with(marker: MarkerStyle, theme: Theme) -> App {
     app
 }
 
-fn app() -> App {
+pub fn app() -> App {
     app_with(MarkerStyle::Braille, Theme { color: true })
 }
 
 /// Solves and studies everything queued on this thread, as the workers would, then puts fixed
 /// stand-ins in place of the measured wall times so that snapshots are deterministic.
-fn settle(app: &mut App) {
+pub fn settle(app: &mut App) {
     loop {
         let jobs = app.take_jobs();
         let studies = app.take_studies();
@@ -96,7 +96,7 @@ fn press(app: &mut App, code: KeyCode) {
     }
 }
 
-fn render(app: &App, width: u16, height: u16) -> Terminal<TestBackend> {
+pub fn render(app: &App, width: u16, height: u16) -> Terminal<TestBackend> {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|frame| draw(frame, app)).unwrap();
     terminal

@@ -65,11 +65,23 @@ pub fn describe(app: &App, kind: ChartKind, columns: u16, rows: u16) -> Chart {
     chart
 }
 
-pub fn render(frame: &mut Frame, area: Rect, app: &App, kind: ChartKind, roomy: bool) {
+/// Draws the chart of `kind`; `single` where it is the only one shown, so the title says which
+/// key shows the others.
+pub fn render(
+    frame: &mut Frame,
+    area: Rect,
+    app: &App,
+    kind: ChartKind,
+    roomy: bool,
+    single: bool,
+) {
     let theme = app.theme;
     let mut title = kind.title().to_string();
     if app.scene_error.is_some() {
         title.push_str(" · last valid scene");
+    }
+    if single {
+        title.push_str(" · c: next chart");
     }
     let block = pane(title, theme, roomy);
     let inner = block.inner(area);

@@ -194,17 +194,20 @@ const GLYPH_SPACING: f64 = 6.0;
 fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) {
     let along = glyphs_along(theme, marker);
     for rule in &chart.rules {
-        let (Some(a), Some(b)) = (
-            canvas.to_dots(chart, (rule.x, chart.y.range[0])),
-            canvas.to_dots(chart, (rule.x, chart.y.range[1])),
-        ) else {
+        let [a, b] = rule.ends(chart);
+        let (Some(a), Some(b)) = (canvas.to_dots(chart, a), canvas.to_dots(chart, b)) else {
             continue;
         };
         // Dotted: every other dot, so curves crossing it stay visible.
-        let mut y = a.1;
-        while y <= b.1 {
-            canvas.set(a.0, y, rule.ink, false);
-            y += 2.0;
+        let steps = (b.0 - a.0).max(b.1 - a.1).max(0.0) as u32 / 2;
+        for k in 0..=steps {
+            let s = f64::from(k) / f64::from(steps.max(1));
+            canvas.set(
+                a.0 + (b.0 - a.0) * s,
+                a.1 + (b.1 - a.1) * s,
+                rule.ink,
+                false,
+            );
         }
     }
     let spacing = GLYPH_SPACING * f64::from(canvas.dx);
@@ -351,10 +354,17 @@ fn axes(
 fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker: MarkerStyle) {
     let plot = f.plot;
     for rule in &chart.rules {
-        let Some((col, _)) = cell_of(chart, plot, marker, (rule.x, chart.y.range[1])) else {
+        let [_, end] = rule.ends(chart);
+        let Some((col, row)) = cell_of(chart, plot, marker, end) else {
             continue;
         };
         let w = width(&rule.label);
+        if rule.horizontal {
+            // At the right end, on the rule's row.
+            let x = plot.right().saturating_sub(w).max(plot.x);
+            put(buf, x, row, &rule.label, theme.ink(rule.ink), plot);
+            continue;
+        }
         let x = if col + 1 + w <= plot.right() {
             col + 1
         } else if col >= plot.x + w {
@@ -566,7 +576,8 @@ mod tests {
                 label: Some("here".into()),
             }],
             rules: vec![Rule {
-                x: 5.0,
+                at: 5.0,
+                horizontal: false,
                 ink: Ink::Error,
                 label: "v_p".into(),
             }],

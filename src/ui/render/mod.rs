@@ -56,8 +56,9 @@ fn explorer(frame: &mut Frame, app: &App) {
     regime::render(frame, areas.info, app, areas.roomy);
     form::render(frame, areas.form, app, areas.roomy);
     models::render(frame, areas.models, app, areas.roomy);
+    let single = areas.charts.len() == 1;
     for (kind, rect) in &areas.charts {
-        chart::render(frame, *rect, app, *kind, areas.roomy);
+        chart::render(frame, *rect, app, *kind, areas.roomy, single);
     }
     results::render(frame, areas.results, app, areas.roomy);
 }

@@ -146,7 +146,17 @@ fn chart(frame: &mut Frame, area: Rect, app: &App, data: Option<&SweepData>, roo
         return;
     };
     let budget = budget(area.width.saturating_sub(9), area.height.saturating_sub(6));
-    let chart = sweep_plot::chart(data, app.sweep.output, Some(app.focused), budget);
+    let yield_stress = app
+        .valid
+        .as_ref()
+        .and_then(|v| v.scene.pair().ok())
+        .map(|p| p.yield_stress());
+    let set = sweep_plot::SweepSet {
+        name: None,
+        data,
+        yield_stress,
+    };
+    let chart = sweep_plot::chart(&[set], app.sweep.output, Some(app.focused), budget);
     let mut title = chart.title.clone();
     if computing {
         title.push_str(" · computing…");

@@ -1,0 +1,225 @@
+//! `hertz-tui plot`: the figure files, read back. The SVG has the chart's titles, tick labels at
+//! pixels linear in their values, one path per curve, the peak where the solver puts it, and the
+//! paper's Fig. 2 levels; bad arguments are user errors.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
+        .args(args)
+        .env(
+            "XDG_CONFIG_HOME",
+            std::env::temp_dir().join("hertz-tui-plot-no-config"),
+        )
+        .output()
+        .expect("the binary runs")
+}
+
+fn out_file(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("hertz-tui-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn plot(args: &[&str], file: &str) -> String {
+    let path = out_file(file);
+    let mut all = vec!["plot"];
+    all.extend(args);
+    all.extend(["-o", path.to_str().unwrap()]);
+    let output = run(&all);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    std::fs::read_to_string(&path).unwrap()
+}
+
+/// (text, x, y) of every `<text>` element.
+fn texts(svg: &str) -> Vec<(String, f64, f64)> {
+    let attr = |element: &str, name: &str| -> f64 {
+        let start = element.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        let rest = &element[start..];
+        rest[..rest.find('"').unwrap()].parse().unwrap()
+    };
+    svg.split("<text")
+        .skip(1)
+        .map(|t| {
+            let content = t.split_once('>').unwrap().1;
+            let content = content.split("</text>").next().unwrap().trim().to_string();
+            (content, attr(t, "x"), attr(t, "y"))
+        })
+        .collect()
+}
+
+/// Where labels that are numbers put `v`: interpolated between the two around it, by `coord`
+/// (x or y pixel) of the labels in `labels`.
+fn pixel(labels: &[(f64, f64)], v: f64) -> f64 {
+    let w = labels
+        .windows(2)
+        .find(|w| w[0].0.min(w[1].0) <= v && v <= w[0].0.max(w[1].0))
+        .unwrap_or_else(|| panic!("{v} not within {labels:?}"));
+    w[0].1 + (v - w[0].0) / (w[1].0 - w[0].0) * (w[1].1 - w[0].1)
+}
+
+#[test]
+fn fig5_svg_puts_the_proposed_peak_where_its_labels_say() {
+    let svg = plot(
+        &[
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--chart",
+            "fx",
+            "--model",
+            "proposed",
+            "--model",
+            "hunt-crossley",
+            "--model",
+            "lankarani-nikravesh",
+        ],
+        "fig5.svg",
+    );
+    for title in [
+        "F(x) force–approach",
+        "x [µm]",
+        "F [N]",
+        "proposed viscous (eq 18)",
+    ] {
+        assert!(svg.contains(title), "{title}");
+    }
+    // One polyline per curve in each model's colour (red, cyan, magenta), the focused one wider.
+    let curves = |colour: &str, width: &str| {
+        svg.split("<polyline")
+            .filter(|p| p.contains(colour) && p.contains(&format!("stroke-width=\"{width}\"")))
+            .count()
+    };
+    assert_eq!(curves("#D62728", "3"), 1, "proposed");
+    assert_eq!(
+        curves("#00A0BE", "2"),
+        2,
+        "hunt-crossley: its curve and its legend sample"
+    );
+    assert_eq!(curves("#B428AA", "2"), 2, "lankarani-nikravesh");
+    let all = texts(&svg);
+    // Tick labels: x labels share one row, y labels one column; each evenly spaced in value is
+    // evenly spaced in pixels.
+    let numbers: Vec<(f64, f64, f64)> = all
+        .iter()
+        .filter_map(|(t, x, y)| t.parse::<f64>().ok().map(|v| (v, *x, *y)))
+        .collect();
+    let bottom = numbers.iter().map(|n| n.2).fold(f64::MIN, f64::max);
+    let xs: Vec<(f64, f64)> = numbers
+        .iter()
+        .filter(|n| n.2 == bottom)
+        .map(|n| (n.0, n.1))
+        .collect();
+    let left = numbers.iter().map(|n| n.1).fold(f64::MAX, f64::min);
+    let ys: Vec<(f64, f64)> = numbers
+        .iter()
+        .filter(|n| n.1 == left)
+        .map(|n| (n.0, n.2))
+        .collect();
+    assert!(xs.len() >= 4 && ys.len() >= 4, "{xs:?} {ys:?}");
+    for w in xs.windows(3) {
+        let (a, b) = (w[1].1 - w[0].1, w[2].1 - w[1].1);
+        let scaled = b * (w[1].0 - w[0].0) / (w[2].0 - w[1].0);
+        assert!((a - scaled).abs() <= 1.0, "whole pixels: {xs:?}");
+    }
+    // F_max of the proposed model as `solve` reports it: the peak glyph lies at its pixel row.
+    let solved = run(&[
+        "solve",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--model",
+        "proposed",
+        "--format",
+        "json",
+    ]);
+    let json: Value = serde_json::from_slice(&solved.stdout).unwrap();
+    let f_max = json["impacts"][0]["f_max"].as_f64().unwrap();
+    let row = pixel(&ys, f_max);
+    let star = all
+        .iter()
+        .filter(|(t, _, _)| t == "*")
+        .map(|(_, _, y)| (y - row).abs())
+        .fold(f64::INFINITY, f64::min);
+    assert!(star <= 1.5, "* is {star} px off the row of F_max = {f_max}");
+}
+
+#[test]
+fn fig2_has_both_materials_and_their_yield_levels() {
+    let svg = plot(
+        &[
+            "--scene",
+            "steel-sphere-r10-plate",
+            "--scene",
+            "aluminium-sphere-r10-plate",
+            "--chart",
+            "sweep",
+            "--quantity",
+            "p0",
+            "--from",
+            "0.01",
+            "--to",
+            "1",
+            "--log",
+        ],
+        "fig2.svg",
+    );
+    for label in [
+        "1.1·σ_y steel",
+        "2.8·σ_y steel",
+        "1.1·σ_y aluminium-alloy",
+        "2.8·σ_y aluminium-alloy",
+        "p₀ [GPa]",
+        "v₀ [m/s]",
+        "0.01",
+        "0.1",
+    ] {
+        assert!(svg.contains(label), "{label}");
+    }
+}
+
+#[test]
+fn bad_files_and_sizes_are_user_errors() {
+    for args in [
+        vec![
+            "plot",
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--chart",
+            "fx",
+            "-o",
+            "f.pdf",
+        ],
+        vec![
+            "plot",
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--chart",
+            "fx",
+            "-o",
+            "f.svg",
+            "--size",
+            "10x10",
+        ],
+        vec![
+            "plot",
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--scene",
+            "fig4-steel-sphere-r10-plate",
+            "--chart",
+            "fx",
+            "-o",
+            "f.svg",
+        ],
+    ] {
+        let output = run(&args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(String::from_utf8_lossy(&output.stderr).starts_with("error: "));
+    }
+}
