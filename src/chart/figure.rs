@@ -94,13 +94,18 @@ fn font_ready() {
     });
 }
 
-/// Writes `charts` to `path` (side by side for two, stacked for more) at `size` pixels.
+/// Writes `charts` to `path` (side by side for two, stacked for more) at `size` pixels, making
+/// its folder if missing.
 pub fn write(charts: &[Chart], path: &Path, size: (u32, u32)) -> Result<(), FigureError> {
     let format = Format::of(path)?;
     let fail = |reason: String| FigureError::Draw {
         path: path.display().to_string(),
         reason,
     };
+    // A figure path names where the user wants it, as `-o docs/figures/fig5.png` in the README.
+    if let Some(folder) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+        std::fs::create_dir_all(folder).map_err(|e| fail(e.to_string()))?;
+    }
     font_ready();
     match format {
         Format::Svg => {
