@@ -8,6 +8,7 @@ use crate::model::calibrate::calibrate;
 use crate::model::force::{AnyLaw, Damping};
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
+use crate::model::recommend::recommend;
 use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 
 /// Everything `solve` computed; serialized as the JSON output.
@@ -15,7 +16,17 @@ use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 pub struct SolveReport {
     pub scene: Scene,
     pub quasistatic: Quasistatic,
+    /// The simplest law the scene needs, the others that fit, and why in one line.
+    pub recommendation: RecommendationRow,
     pub impacts: Vec<ImpactRow>,
+}
+
+/// The model layer's recommendation as JSON reports it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RecommendationRow {
+    pub model: ForceModel,
+    pub fits: Vec<ForceModel>,
+    pub why: String,
 }
 
 /// One force model's impact, or the reason it failed (`error`); numbers are SI.
@@ -208,7 +219,13 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
         .into_iter()
         .map(|model| ImpactRow::new(model, &params, &options, args.calibrate))
         .collect();
+    let advice = recommend(&scene, &quasistatic);
     Ok(SolveReport {
+        recommendation: RecommendationRow {
+            model: advice.model,
+            fits: advice.fits,
+            why: advice.why,
+        },
         scene,
         quasistatic,
         impacts,
