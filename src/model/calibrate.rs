@@ -54,6 +54,24 @@ pub struct Calibrated {
     pub e_out: f64,
 }
 
+/// The law to solve for `model`: the scene's (damping from e by the law's own rule), or with
+/// `calibrated` its damping calibrated to the scene's e. A law that cannot be calibrated falls back
+/// to the scene's, with the reason; a law without damping is the scene's, uncalibrated.
+pub fn scene_or_calibrated(
+    model: ForceModel,
+    params: &ImpactParams,
+    calibrated: bool,
+) -> Result<(AnyLaw, Result<bool, CalibrationError>), ImpactError> {
+    let scene_law = model.law(params)?;
+    if !calibrated || model.spec().damping.is_none() {
+        return Ok((scene_law, Ok(false)));
+    }
+    Ok(match calibrate(model, params) {
+        Ok(c) => (c.law, Ok(true)),
+        Err(e) => (scene_law, Err(e)),
+    })
+}
+
 /// The realised e of a Hunt–Crossley-family law with χ = α·v₀: e_out = s/χ with s the unloading
 /// root of G(−s) = G(χ), G(y) = y − ln(1 + y) (docs/physics.md §3, §6.4).
 pub fn hunt_crossley_restitution(chi: f64) -> f64 {

@@ -133,6 +133,8 @@ pub struct App {
     pub valid: Option<Valid>,
     pub solutions: Solutions,
     pub(super) checked: [bool; LAW_COUNT],
+    /// Each law's damping calibrated so that it realises the scene's e (docs/physics.md §6.4).
+    pub calibrate: bool,
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -187,6 +189,7 @@ impl App {
             valid: None,
             solutions: Solutions::default(),
             checked,
+            calibrate: false,
             focused: ForceModel::Proposed,
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
@@ -427,7 +430,10 @@ impl App {
         let params = valid.params;
         let mut queued = false;
         for model in self.checked_models() {
-            if let Some(job) = self.solutions.request(model, params, self.draft.options) {
+            let job = self
+                .solutions
+                .request(model, params, self.draft.options, self.calibrate);
+            if let Some(job) = job {
                 self.outbox.push(job);
                 queued = true;
             }
@@ -476,6 +482,19 @@ impl App {
             // A cached result needs no solve, and then there is no recompute time to report.
             self.request_solves(Instant::now());
         }
+    }
+
+    /// Calibration on or off: every checked law is solved again, and the status line says what the
+    /// switch means.
+    pub(super) fn toggle_calibration(&mut self) {
+        self.calibrate = !self.calibrate;
+        let text = if self.calibrate {
+            "calibrated: each law's damping realises the scene's e (C: the laws' own rules)"
+        } else {
+            "each law's damping from e by its own rule (C: calibrate to realise e)"
+        };
+        self.say(text, false);
+        self.request_solves(Instant::now());
     }
 
     pub(super) fn load_scene(&mut self, scene: Scene) {

@@ -27,7 +27,10 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ),
     ("Space", "check / uncheck the model (drawn and tabulated)"),
     ("[  ]", "focus the previous / next model"),
-    ("c", "next chart (when only one fits)"),
+    (
+        "c / C",
+        "next chart (when only one fits) / calibrate to realise e",
+    ),
     (
         "p",
         "presets: scenes; materials (1 / 2 apply one to body 1 / 2)",
@@ -110,6 +113,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('[') => Action::FocusModel(Nudge::Down),
         KeyCode::Char(']') => Action::FocusModel(Nudge::Up),
         KeyCode::Char('c') => Action::CycleChart,
+        KeyCode::Char('C') => Action::ToggleCalibration,
         KeyCode::Char('?') => Action::Help,
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,

@@ -62,7 +62,12 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .iter()
         .position(|r| matches!(r, Row::Model(m) if *m == anchor_model))
         .unwrap_or_default();
-    let block = pane("Models · ✓ fits the regime", theme, roomy);
+    let title = if app.calibrate {
+        "Models · ✓ fits · calibrated to e"
+    } else {
+        "Models · ✓ fits the regime"
+    };
+    let block = pane(title, theme, roomy);
     let inner = block.inner(area);
     let height = usize::from(inner.height);
     let offset = scroll_offset(anchor, rows.len(), height);
