@@ -135,6 +135,8 @@ pub struct App {
     pub(super) checked: [bool; LAW_COUNT],
     /// Each law's damping calibrated so that it realises the scene's e (docs/physics.md §6.4).
     pub calibrate: bool,
+    /// The restitution view shows its table instead of its charts.
+    pub restitution_table: bool,
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -190,6 +192,7 @@ impl App {
             solutions: Solutions::default(),
             checked,
             calibrate: false,
+            restitution_table: false,
             focused: ForceModel::Proposed,
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
@@ -259,6 +262,7 @@ impl App {
             Tab::WorkPrecision => &[StudyKind::WorkPrecision, StudyKind::Current],
             Tab::Stability => &[StudyKind::Runs, StudyKind::Bounds],
             Tab::Sweep => &[StudyKind::Sweep],
+            Tab::Restitution => &[StudyKind::Restitution],
         }
     }
 
@@ -333,6 +337,10 @@ impl App {
                 // The view says why; there is nothing to compute.
                 Err(_) => Vec::new(),
             },
+            Tab::Restitution => vec![StudySpec::Restitution {
+                models: self.checked_models(),
+                params,
+            }],
         };
         for spec in specs {
             if let Some(job) = self.studies.request(spec) {
