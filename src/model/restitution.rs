@@ -143,19 +143,12 @@ pub fn velocity_curve(
 mod tests {
     use super::*;
     use crate::model::calibrate::hunt_crossley_restitution;
-    use crate::model::power_law::PowerLaw;
+    use crate::model::scene::tests::fig5_scene;
 
+    /// The Fig. 5 scene's impact (v₀ = 0.3 m/s, e = 0.6).
     fn fig5() -> ImpactParams {
-        ImpactParams {
-            mass: 0.033,
-            law: PowerLaw {
-                k: 1.465e10,
-                n: 1.5,
-            },
-            v0: 0.3,
-            restitution: 0.6,
-            plastic_indentation: 2.3e-6,
-        }
+        let scene = fig5_scene();
+        scene.impact_params(&scene.quasistatic().unwrap())
     }
 
     #[test]

@@ -353,15 +353,24 @@ fn sweep_160x48() {
 fn restitution_160x48() {
     let mut app = app_on(Tab::Restitution);
     let screen = text(render(&app, 160, 48).backend().buffer());
-    assert!(screen.contains("realised e against requested e"), "{screen}");
+    assert!(
+        screen.contains("realised e against requested e"),
+        "{screen}"
+    );
     assert!(screen.contains("e_out against v₀"), "{screen}");
-    assert!(screen.contains("v_y") && screen.contains("v_p"), "onset rules");
+    assert!(
+        screen.contains("v_y") && screen.contains("v_p"),
+        "onset rules"
+    );
     assert!(!screen.contains("NaN") && !screen.contains("computing…"));
     insta::assert_snapshot!(render(&app, 160, 48).backend());
     // c: the table of realised e for requested 0.1…0.9, the checked models' rows.
     press(&mut app, KeyCode::Char('c'));
     let table = text(render(&app, 160, 48).backend().buffer());
-    assert!(table.contains("e = 0.1") && table.contains("e = 0.9"), "{table}");
+    assert!(
+        table.contains("e = 0.1") && table.contains("e = 0.9"),
+        "{table}"
+    );
     assert!(table.contains("0.6630"), "Hunt–Crossley at 0.5: {table}");
 }
 

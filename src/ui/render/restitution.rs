@@ -107,14 +107,7 @@ fn realised_chart(
         marks: Vec::new(),
         rules: Vec::new(),
     };
-    graph::render(
-        frame,
-        area,
-        pane(title, app.theme, roomy),
-        &g,
-        app.marker,
-        app.theme,
-    );
+    draw(frame, area, app, roomy, &title, &g);
 }
 
 fn velocity_chart(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionData, roomy: bool) {
@@ -156,14 +149,12 @@ fn velocity_chart(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionDa
         rules,
     };
     let title = "e_out against v₀, damping coefficient held (α for Hunt–Crossley)";
-    graph::render(
-        frame,
-        area,
-        pane(title, app.theme, roomy),
-        &g,
-        app.marker,
-        app.theme,
-    );
+    draw(frame, area, app, roomy, title, &g);
+}
+
+fn draw(frame: &mut Frame, area: Rect, app: &App, roomy: bool, title: &str, g: &Graph) {
+    let block = pane(title.to_string(), app.theme, roomy);
+    graph::render(frame, area, block, g, app.marker, app.theme);
 }
 
 fn table(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionData, roomy: bool) {
