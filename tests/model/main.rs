@@ -12,6 +12,7 @@ mod impact_props;
 mod impact_stability;
 mod impact_trajectory;
 mod laws_kuwabara_kono;
+mod laws_thornton;
 mod laws_viscous;
 mod ode_convergence;
 mod ode_crosscheck;

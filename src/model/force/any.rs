@@ -9,6 +9,7 @@ use super::kelvin_voigt::KelvinVoigt;
 use super::law::{ContactEnd, ForceLaw, Phase};
 use super::proposed::Proposed;
 use super::table::{ContactRule, DampingParam, Kind};
+use super::thornton::Thornton;
 use super::{ForceModel, ImpactParams};
 use crate::model::error::{ModelError, require};
 use crate::model::exact::ExactImpact;
@@ -98,6 +99,12 @@ macro_rules! any_law {
                     $(AnyLaw::$variant(l) => l.exact(rtol)),*
                 }
             }
+
+            fn stored_energy(&self, x: f64, phase: Phase) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.stored_energy(x, phase)),*
+                }
+            }
         }
     };
 }
@@ -109,6 +116,7 @@ any_law! {
     Hysteresis(Hysteresis),
     HertzViscous(HertzViscous),
     KelvinVoigt(KelvinVoigt),
+    Thornton(Thornton),
 }
 
 /// C₁ of the Kuwabara–Kono restitution series e = 1 − C₁·ε + C₂·ε² − …, ε = A·(k/m)^{2/5}·v₀^{1/5}:
@@ -135,7 +143,7 @@ impl AnyLaw {
     /// own rule, after validating them.
     pub fn new(model: ForceModel, params: &ImpactParams) -> Result<Self, ModelError> {
         params.validate()?;
-        Ok(Self::build(model, params, None))
+        Self::build(model, params, None)
     }
 
     /// The law `model` with its damping parameter set to `value` (χ, P, b, γ or c, SI) instead of
@@ -154,13 +162,17 @@ impl AnyLaw {
             });
         };
         require(param.symbol, value, "a finite number ≥ 0", |d| d >= 0.0)?;
-        Ok(Self::build(model, params, Some(value)))
+        Self::build(model, params, Some(value))
     }
 
-    fn build(model: ForceModel, params: &ImpactParams, damping: Option<f64>) -> Self {
+    fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        damping: Option<f64>,
+    ) -> Result<Self, ModelError> {
         let spec = model.spec();
         let tension_allowed = spec.contact == ContactRule::TensionAllowed;
-        match spec.kind {
+        Ok(match spec.kind {
             Kind::Elastic => AnyLaw::Elastic(Elastic::new(params)),
             Kind::DryFriction => AnyLaw::DryFriction(match damping {
                 Some(p) => DryFriction::with_p(params, p),
@@ -186,13 +198,18 @@ impl AnyLaw {
                 params,
                 damping.unwrap_or_else(|| kuwabara_kono_a(params)),
             )),
+            Kind::Thornton => AnyLaw::Thornton(Thornton::new(
+                model,
+                params,
+                damping.unwrap_or_else(|| Thornton::default_v_yield(params)),
+            )?),
             Kind::KelvinVoigt => AnyLaw::KelvinVoigt(KelvinVoigt::new(
                 model,
                 params,
                 damping.unwrap_or_else(|| KelvinVoigt::default_c(params)),
                 tension_allowed,
             )),
-        }
+        })
     }
 
     /// The damping parameter in use, `None` for a law without one.
@@ -209,6 +226,7 @@ impl AnyLaw {
             AnyLaw::Hysteresis(l) => l.chi(),
             AnyLaw::HertzViscous(l) => l.gamma(),
             AnyLaw::KelvinVoigt(l) => l.c(),
+            AnyLaw::Thornton(l) => l.v_yield(),
         };
         Some(Damping { param, value })
     }

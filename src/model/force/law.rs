@@ -80,6 +80,13 @@ pub trait ForceLaw {
     /// The exact impact (closed form or quadrature) where one exists; quadratures aim at `rtol`.
     fn exact(&self, rtol: f64) -> Option<ExactImpact>;
 
+    /// The energy the contact holds at approach x during `phase`, J: what the solver's energy
+    /// guard adds to ½mẋ². Hertz's k·x^{n+1}/(n+1) unless the law's conservative part differs.
+    fn stored_energy(&self, x: f64, _phase: Phase) -> f64 {
+        let law = self.params().law;
+        law.k * x * x * abs_pow_nm1(x, law.n) / (law.n + 1.0)
+    }
+
     /// F(x, ẋ), N: zero out of contact (x ≤ 0), else the law with sign(ẋ) deciding the phase.
     fn force(&self, x: f64, v: f64) -> f64 {
         if x > 0.0 {

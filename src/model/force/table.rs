@@ -13,6 +13,8 @@ pub enum Family {
     Friction,
     /// F = elastic part plus a damping coefficient times ẋ.
     Viscous,
+    /// Elastic–plastic: a permanent dent, no rate dependence.
+    Plastic,
     /// F = k·xⁿ·(1 + χ(e)·ẋ/v₀), the Hunt–Crossley family.
     HuntCrossley,
 }
@@ -24,6 +26,7 @@ impl Family {
             Family::Elastic => "elastic",
             Family::Friction => "friction",
             Family::Viscous => "viscous damping",
+            Family::Plastic => "elastic–plastic",
             Family::HuntCrossley => "Hunt–Crossley family",
         }
     }
@@ -74,6 +77,7 @@ pub enum Kind {
     KelvinVoigt,
     /// F = k·(xⁿ + A·xⁿ⁻¹·ẋ): the proposed model's equations with b = k·A.
     KuwabaraKono,
+    Thornton,
 }
 
 /// One law of the table.
@@ -205,6 +209,20 @@ pub const LAWS: &[LawSpec] = &[
         }),
         contact: ContactRule::ForceZero,
         kind: Kind::KuwabaraKono,
+    },
+    LawSpec {
+        id: "thornton",
+        label: "Thornton 1997",
+        short: "Thorn.",
+        source: "Thornton, J. Appl. Mech. 64 (1997), elastic–perfectly-plastic spheres; docs/physics.md §6.6",
+        family: Family::Plastic,
+        damping: Some(DampingParam {
+            symbol: "v_y",
+            key: "v_yield",
+            unit: "m/s",
+        }),
+        contact: ContactRule::ForceZero,
+        kind: Kind::Thornton,
     },
     LawSpec {
         id: "hunt-crossley",

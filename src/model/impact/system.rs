@@ -56,7 +56,9 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
     }
 
     fn check(&mut self, _t: f64, y: &State) -> Result<(), String> {
-        let energy = self.scales.energy(y[0], y[1]);
+        let sc = &self.scales;
+        let stored = self.law.stored_energy(y[0] * sc.x, self.phase);
+        let energy = y[1] * y[1] + stored / (0.5 * sc.mass * sc.v * sc.v);
         if energy > ENERGY_LIMIT {
             self.growth = Some(energy - 1.0);
             Err(format!(
