@@ -100,6 +100,12 @@ macro_rules! any_law {
                 }
             }
 
+            fn damping_value(&self) -> Option<f64> {
+                match self {
+                    $(AnyLaw::$variant(l) => l.damping_value()),*
+                }
+            }
+
             fn stored_energy(&self, x: f64, phase: Phase) -> f64 {
                 match self {
                     $(AnyLaw::$variant(l) => l.stored_energy(x, phase)),*
@@ -214,20 +220,9 @@ impl AnyLaw {
 
     /// The damping parameter in use, `None` for a law without one.
     pub fn damping(&self) -> Option<Damping> {
-        let spec = self.model().spec();
-        let param = spec.damping?;
-        let value = match self {
-            AnyLaw::Elastic(_) => return None,
-            AnyLaw::DryFriction(l) => l.p(),
-            AnyLaw::Proposed(l) if matches!(spec.kind, Kind::KuwabaraKono) => {
-                l.b() / l.params().law.k
-            }
-            AnyLaw::Proposed(l) => l.b(),
-            AnyLaw::Hysteresis(l) => l.chi(),
-            AnyLaw::HertzViscous(l) => l.gamma(),
-            AnyLaw::KelvinVoigt(l) => l.c(),
-            AnyLaw::Thornton(l) => l.v_yield(),
-        };
-        Some(Damping { param, value })
+        Some(Damping {
+            param: self.model().spec().damping?,
+            value: self.damping_value()?,
+        })
     }
 }

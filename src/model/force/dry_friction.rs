@@ -132,6 +132,10 @@ impl ForceLaw for DryFriction {
         self.params.law.k * abs_pow_nm1(x, self.params.law.n) - self.p
     }
 
+    fn damping_value(&self) -> Option<f64> {
+        Some(self.p)
+    }
+
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
         dry_friction(&self.params, self.p, self.x_cut, rtol)
     }

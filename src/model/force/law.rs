@@ -77,6 +77,12 @@ pub trait ForceLaw {
     /// x → 0 (F divided by a power of x). Contact ends where it falls through zero.
     fn tension(&self, x: f64, v: f64) -> f64;
 
+    /// The value of the law's damping parameter (the one its table row names), SI; `None` for a
+    /// law without one.
+    fn damping_value(&self) -> Option<f64> {
+        None
+    }
+
     /// The exact impact (closed form or quadrature) where one exists; quadratures aim at `rtol`.
     fn exact(&self, rtol: f64) -> Option<ExactImpact>;
 

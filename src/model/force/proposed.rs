@@ -2,6 +2,7 @@
 //! b = k·A is the Kuwabara–Kono / Brilliantov viscoelastic sphere (docs/physics.md §6.5).
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
+use super::table::Kind;
 use super::{ForceModel, ImpactParams};
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
@@ -94,6 +95,14 @@ impl ForceLaw for Proposed {
     /// F/xⁿ⁻¹ = k·x + b·ẋ.
     fn tension(&self, x: f64, v: f64) -> f64 {
         self.params.law.k * x + self.b * v
+    }
+
+    /// b, or A = b/k for the Kuwabara–Kono row.
+    fn damping_value(&self) -> Option<f64> {
+        Some(match self.model.spec().kind {
+            Kind::KuwabaraKono => self.b / self.params.law.k,
+            _ => self.b,
+        })
     }
 
     /// Only the elastic limit b = 0 has a closed form.

@@ -2,7 +2,8 @@
 //!
 //! Everything that lists laws — `--model`, scene files, sweeps, the explorer's panes and arrays —
 //! iterates [`LAWS`] through [`super::ForceModel`]. A Hunt–Crossley-type law is one row with its
-//! χ(e); a law with its own equations is one file, one [`Kind`] variant and one row.
+//! χ(e); a law with its own equations is one file implementing `ForceLaw`, one row, one [`Kind`]
+//! variant built in `AnyLaw::build` and one line of `any_law!` (both in `any.rs`).
 
 /// Which kind of dissipation a law models; the Models pane groups laws by it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -195,6 +195,10 @@ impl ForceLaw for Thornton {
         x - self.x_residual
     }
 
+    fn damping_value(&self) -> Option<f64> {
+        Some(self.v_yield)
+    }
+
     /// No closed form for the times: the solver integrates it; e(V) is the test oracle.
     fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
         None
