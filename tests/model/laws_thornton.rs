@@ -1,36 +1,16 @@
 //! Thornton's elastic–perfectly-plastic sphere (docs/physics.md §6.6) against his closed-form
 //! restitution e(V), integrated at tight tolerance; e = 1 below the yield velocity.
 
-use hertz_tui::model::PowerLaw;
 use hertz_tui::model::force::thornton::thornton_restitution;
 use hertz_tui::model::force::{ForceModel, ImpactParams};
-use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_law};
-use hertz_tui::model::ode::Method;
+use hertz_tui::model::impact::{SolveOptions, solve_law};
+
+use crate::laws_common::{e_out_with, sphere};
 
 const THORNTON: ForceModel = ForceModel::with_id("thornton");
 
-fn sphere(v0: f64, restitution: f64) -> ImpactParams {
-    ImpactParams {
-        mass: 0.033,
-        law: PowerLaw {
-            k: 1.465e10,
-            n: 1.5,
-        },
-        v0,
-        restitution,
-        plastic_indentation: 0.0,
-    }
-}
-
 fn e_out(p: &ImpactParams, v_yield: f64) -> f64 {
-    let law = THORNTON.law_with_damping(p, v_yield).unwrap();
-    let opts = SolveOptions {
-        method: MethodChoice::Integrator(Method::Dop853),
-        rtol: 1e-12,
-        atol: 1e-14,
-        ..SolveOptions::default()
-    };
-    solve_law(&law, &opts).unwrap().summary.e_out
+    e_out_with(THORNTON, p, v_yield, 1e-12)
 }
 
 #[test]

@@ -11,6 +11,7 @@ mod impact_paper;
 mod impact_props;
 mod impact_stability;
 mod impact_trajectory;
+mod laws_common;
 mod laws_kuwabara_kono;
 mod laws_thornton;
 mod laws_viscous;
