@@ -19,6 +19,10 @@ pub fn render(report: &SolveReport) -> String {
         &report.quasistatic,
         report.scene.impact.v0,
     ));
+    out.push_str(&format!(
+        "Recommended: {} — {}\n",
+        report.recommendation.model, report.recommendation.why
+    ));
     if !report.impacts.is_empty() {
         out.push('\n');
         out.push_str(&impact_section(&report.impacts));

@@ -4,10 +4,11 @@ use serde::Serialize;
 
 use super::args::{SceneSelection, SolveArgs};
 use super::error::CliError;
-use crate::model::calibrate::calibrate;
-use crate::model::force::{AnyLaw, Damping};
+use crate::model::calibrate::scene_or_calibrated;
+use crate::model::force::Damping;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
+use crate::model::recommend::recommend;
 use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 
 /// Everything `solve` computed; serialized as the JSON output.
@@ -15,7 +16,17 @@ use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 pub struct SolveReport {
     pub scene: Scene,
     pub quasistatic: Quasistatic,
+    /// The simplest law the scene needs, the others that fit, and why in one line.
+    pub recommendation: RecommendationRow,
     pub impacts: Vec<ImpactRow>,
+}
+
+/// The model layer's recommendation as JSON reports it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RecommendationRow {
+    pub model: ForceModel,
+    pub fits: Vec<ForceModel>,
+    pub why: String,
 }
 
 /// One force model's impact, or the reason it failed (`error`); numbers are SI.
@@ -74,23 +85,6 @@ impl From<Damping> for DampingUsed {
     }
 }
 
-/// The law a row solves: the scene's, or with `calibrate` its damping calibrated to the scene's e
-/// (with the reason when that fails, the scene's law then standing in).
-pub fn row_law(
-    model: ForceModel,
-    params: &ImpactParams,
-    calibrated: bool,
-) -> Result<(AnyLaw, Result<bool, String>), ImpactError> {
-    let scene_law = model.law(params)?;
-    if !calibrated || model.spec().damping.is_none() {
-        return Ok((scene_law, Ok(false)));
-    }
-    Ok(match calibrate(model, params) {
-        Ok(c) => (c.law, Ok(true)),
-        Err(e) => (scene_law, Err(e.to_string())),
-    })
-}
-
 impl ImpactRow {
     fn new(
         model: ForceModel,
@@ -98,7 +92,7 @@ impl ImpactRow {
         requested: &SolveOptions,
         calibrate: bool,
     ) -> Self {
-        let (law, calibration) = match row_law(model, params, calibrate) {
+        let (law, calibration) = match scene_or_calibrated(model, params, calibrate) {
             Ok(found) => found,
             Err(e) => return Self::from_result(model, params.restitution, requested, Err(&e)),
         };
@@ -107,7 +101,7 @@ impl ImpactRow {
         row.damping = law.damping().map(DampingUsed::from);
         match calibration {
             Ok(done) => row.calibrated = done,
-            Err(why) => row.calibration_error = Some(why),
+            Err(why) => row.calibration_error = Some(why.to_string()),
         }
         row
     }
@@ -208,7 +202,13 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
         .into_iter()
         .map(|model| ImpactRow::new(model, &params, &options, args.calibrate))
         .collect();
+    let advice = recommend(&scene, &quasistatic);
     Ok(SolveReport {
+        recommendation: RecommendationRow {
+            model: advice.model,
+            fits: advice.fits,
+            why: advice.why,
+        },
         scene,
         quasistatic,
         impacts,
@@ -229,7 +229,7 @@ pub fn trajectory(args: &SolveArgs, registry: &Registry) -> Result<ImpactSolutio
     let quasistatic = scene.quasistatic()?;
     let options = solve_options(args);
     let params = scene.impact_params(&quasistatic);
-    let (law, calibration) = row_law(model, &params, args.calibrate)
+    let (law, calibration) = scene_or_calibrated(model, &params, args.calibrate)
         .map_err(|source| CliError::Impact { model, source })?;
     if let Err(why) = calibration {
         return Err(CliError::Usage(format!("--calibrate: {why}")));

@@ -2,14 +2,16 @@
 //! requested e at the scene's v₀ (docs/physics.md §6.4).
 //!
 //! The Hunt–Crossley family in closed form: its e_out depends on χ = α·v₀ alone, through
-//! ln((1 + χ)/(1 − χ·e_out)) = χ·(1 + e_out), whatever n, k, m and v₀. Every other law with a
-//! damping parameter by a bracketed root of e_out(d) − e over solves at tight tolerance.
+//! ln((1 + χ)/(1 − χ·e_out)) = χ·(1 + e_out), whatever n, k, m and v₀. Thornton's law by inverting
+//! his closed-form e(V). Every other law with a damping parameter by a bracketed root of
+//! e_out(d) − e over solves at tight tolerance.
 
 use thiserror::Error;
 
 use super::exact::special::{unloading_root, y_minus_log1p};
 use super::force::table::Kind;
-use super::force::{AnyLaw, Damping, ForceModel, ImpactParams};
+use super::force::thornton::{Thornton, thornton_restitution};
+use super::force::{AnyLaw, Damping, DampingParam, ForceModel, ImpactParams};
 use super::impact::{ImpactError, MethodChoice, SolveOptions, solve_law};
 use super::numeric::roots::brent;
 
@@ -52,6 +54,24 @@ pub struct Calibrated {
     pub damping: Damping,
     /// The realised restitution of the calibrated law (at the calibration's tolerance).
     pub e_out: f64,
+}
+
+/// The law to solve for `model`: the scene's (damping from e by the law's own rule), or with
+/// `calibrated` its damping calibrated to the scene's e. A law that cannot be calibrated falls back
+/// to the scene's, with the reason; a law without damping is the scene's, uncalibrated.
+pub fn scene_or_calibrated(
+    model: ForceModel,
+    params: &ImpactParams,
+    calibrated: bool,
+) -> Result<(AnyLaw, Result<bool, CalibrationError>), ImpactError> {
+    let scene_law = model.law(params)?;
+    if !calibrated || model.spec().damping.is_none() {
+        return Ok((scene_law, Ok(false)));
+    }
+    Ok(match calibrate(model, params) {
+        Ok(c) => (c.law, Ok(true)),
+        Err(e) => (scene_law, Err(e)),
+    })
 }
 
 /// The realised e of a Hunt–Crossley-family law with χ = α·v₀: e_out = s/χ with s the unloading
@@ -112,6 +132,20 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
             e_out: hunt_crossley_restitution(chi),
         });
     }
+    if let Kind::Thornton = model.spec().kind {
+        // Thornton's e(V) is closed-form (spheres, the only contact the law is built for): the
+        // v_y it inverts to is the law's own default.
+        let v_yield = Thornton::default_v_yield(params);
+        let law = build(v_yield)?;
+        return Ok(Calibrated {
+            law,
+            damping: Damping {
+                param,
+                value: v_yield,
+            },
+            e_out: thornton_restitution(v_yield / params.v0),
+        });
+    }
     let opts = SolveOptions {
         method: MethodChoice::Auto,
         rtol: SOLVE_RTOL,
@@ -132,6 +166,18 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
             }),
         }
     };
+    if let Kind::Thornton = model.spec().kind {
+        // e_out rises with v_y, to 1 at v_y = v₀.
+        return bracketed(
+            model,
+            param,
+            target,
+            1e-9 * params.v0,
+            params.v0,
+            &e_out,
+            &build,
+        );
+    }
     if target == 1.0 {
         let law = build(0.0)?;
         return Ok(Calibrated {
@@ -171,6 +217,28 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
             damping: lo,
         });
     }
+    bracketed(model, param, target, lo, hi, &e_out, &build).map_err(|e| match e {
+        CalibrationError::Unreachable { damping, .. } => CalibrationError::Unreachable {
+            model,
+            target,
+            lowest,
+            symbol: param.symbol,
+            damping,
+        },
+        other => other,
+    })
+}
+
+/// The damping in [lo, hi] (e_out − target changing sign there) at which e_out = target.
+fn bracketed(
+    model: ForceModel,
+    param: DampingParam,
+    target: f64,
+    lo: f64,
+    hi: f64,
+    e_out: &dyn Fn(f64) -> Result<f64, CalibrationError>,
+    build: &dyn Fn(f64) -> Result<AnyLaw, CalibrationError>,
+) -> Result<Calibrated, CalibrationError> {
     let mut failure = None;
     let root = brent(
         |d| match e_out(d) {
@@ -189,7 +257,7 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
     let d = root.ok_or(CalibrationError::Unreachable {
         model,
         target,
-        lowest,
+        lowest: f64::NAN,
         symbol: param.symbol,
         damping: hi,
     })?;

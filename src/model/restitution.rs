@@ -3,8 +3,10 @@
 
 use serde::Serialize;
 
-use super::force::{ForceModel, ImpactParams};
-use super::impact::{ImpactError, SolveOptions, solve_impact};
+use super::error::ModelError;
+use super::force::table::Kind;
+use super::force::{AnyLaw, ForceModel, ImpactParams};
+use super::impact::{ImpactError, SolveOptions, solve_impact, solve_law};
 
 /// The requested values of the restitution table.
 pub const REQUESTED: [f64; 5] = [0.1, 0.3, 0.5, 0.7, 0.9];
@@ -67,4 +69,123 @@ pub fn table(
                 .collect(),
         })
         .collect()
+}
+
+/// Requested values of the realised-against-requested curve: 0.02 to 0.98.
+pub fn requested_grid(points: usize) -> Vec<f64> {
+    let n = points.max(2);
+    (0..n)
+        .map(|i| 0.02 + 0.96 * i as f64 / (n - 1) as f64)
+        .collect()
+}
+
+/// Impact velocities from v₀/100 to 100·v₀, evenly spaced in log v₀.
+pub fn velocity_grid(v0: f64, points: usize) -> Vec<f64> {
+    let n = points.max(2);
+    (0..n)
+        .map(|i| v0 * 10f64.powf(-2.0 + 4.0 * i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// `model` at impact velocity `v0` with the damping coefficient of the scene `params` held
+/// fixed, as a material constant would be: the same P, b, γ, c or A, and for the Hunt–Crossley
+/// family the same α = χ/v₀ (so χ grows with v₀). Stiffness rules (Kelvin–Voigt's K) follow v₀.
+pub fn fixed_coefficient_law(
+    model: ForceModel,
+    params: &ImpactParams,
+    v0: f64,
+) -> Result<AnyLaw, ModelError> {
+    let at_v0 = ImpactParams { v0, ..*params };
+    match model.law(params)?.damping() {
+        None => model.law(&at_v0),
+        Some(d) => {
+            let value = match model.spec().kind {
+                Kind::HuntCrossley(_) => d.value * v0 / params.v0,
+                _ => d.value,
+            };
+            model.law_with_damping(&at_v0, value)
+        }
+    }
+}
+
+/// (e requested, e realised) of `model` over `requested`; failed solves are left out.
+pub fn realised_curve(
+    model: ForceModel,
+    params: &ImpactParams,
+    requested: &[f64],
+    opts: &SolveOptions,
+) -> Vec<(f64, f64)> {
+    requested
+        .iter()
+        .filter_map(|&e| realised(model, params, e, opts).ok().map(|out| (e, out)))
+        .collect()
+}
+
+/// (v₀, e realised) of `model` with its scene coefficient fixed over `velocities`; failed
+/// solves are left out.
+pub fn velocity_curve(
+    model: ForceModel,
+    params: &ImpactParams,
+    velocities: &[f64],
+    opts: &SolveOptions,
+) -> Vec<(f64, f64)> {
+    velocities
+        .iter()
+        .filter_map(|&v0| {
+            let law = fixed_coefficient_law(model, params, v0).ok()?;
+            let e = solve_law(&law, opts).ok()?.summary.e_out;
+            Some((v0, e))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::calibrate::hunt_crossley_restitution;
+    use crate::model::scene::tests::fig5_scene;
+
+    /// The Fig. 5 scene's impact (v₀ = 0.3 m/s, e = 0.6).
+    fn fig5() -> ImpactParams {
+        let scene = fig5_scene();
+        scene.impact_params(&scene.quasistatic().unwrap())
+    }
+
+    #[test]
+    fn a_fixed_hunt_crossley_alpha_loses_more_at_higher_speed() {
+        // χ = α·v₀ with α fixed: e(v₀) = e_out(χ) by the exact relation, falling with v₀.
+        let p = fig5();
+        let alpha = 1.5 * 0.4 / 0.3;
+        let vs = velocity_grid(p.v0, 5);
+        let curve = velocity_curve(ForceModel::HuntCrossley, &p, &vs, &SolveOptions::default());
+        assert_eq!(curve.len(), 5);
+        for &(v0, e) in &curve {
+            assert!(
+                (e - hunt_crossley_restitution(alpha * v0)).abs() < 1e-12,
+                "{v0}"
+            );
+        }
+        assert!(curve.windows(2).all(|w| w[0].1 > w[1].1));
+        // At the scene's own v₀ the law is the scene's.
+        let at_scene = fixed_coefficient_law(ForceModel::DryFriction, &p, p.v0).unwrap();
+        assert_eq!(at_scene, ForceModel::DryFriction.law(&p).unwrap());
+    }
+
+    #[test]
+    fn grids_span_what_they_say() {
+        let e = requested_grid(25);
+        assert_eq!((e[0], e[24]), (0.02, 0.98));
+        let v = velocity_grid(0.3, 9);
+        assert!((v[0] / 0.003 - 1.0).abs() < 1e-12 && (v[8] / 30.0 - 1.0).abs() < 1e-12);
+        assert!((v[4] / 0.3 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_bilateral_kelvin_voigt_curve_is_the_identity() {
+        let kv = ForceModel::with_id("kelvin-voigt-tension");
+        let grid = requested_grid(7);
+        let curve = realised_curve(kv, &fig5(), &grid, &SolveOptions::default());
+        assert_eq!(curve.len(), 7);
+        assert!(curve.iter().all(|(e, out)| (e - out).abs() < 1e-12));
+    }
 }

@@ -49,6 +49,8 @@ pub enum Action {
     FocusModel(Nudge),
     /// Shows the next chart where only one fits.
     CycleChart,
+    /// Switches between each law's own damping rule and damping calibrated to realise e.
+    ToggleCalibration,
     /// Shows a view: the explorer or a study.
     Tab(Tab),
     Help,

@@ -161,6 +161,10 @@ pub struct App {
     pub valid: Option<Valid>,
     pub solutions: Solutions,
     pub(super) checked: [bool; LAW_COUNT],
+    /// Each law's damping calibrated so that it realises the scene's e (docs/physics.md §6.4).
+    pub calibrate: bool,
+    /// The restitution view shows its table instead of its charts.
+    pub restitution_table: bool,
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -233,6 +237,8 @@ impl App {
             valid: None,
             solutions: Solutions::default(),
             checked: [false; LAW_COUNT],
+            calibrate: false,
+            restitution_table: false,
             focused: view.focused(),
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
@@ -352,6 +358,7 @@ impl App {
             Tab::WorkPrecision => &[StudyKind::WorkPrecision, StudyKind::Current],
             Tab::Stability => &[StudyKind::Runs, StudyKind::Bounds],
             Tab::Sweep => &[StudyKind::Sweep],
+            Tab::Restitution => &[StudyKind::Restitution],
         }
     }
 
@@ -426,6 +433,10 @@ impl App {
                 // The view says why; there is nothing to compute.
                 Err(_) => Vec::new(),
             },
+            Tab::Restitution => vec![StudySpec::Restitution {
+                models: self.checked_models(),
+                params,
+            }],
         };
         for spec in specs {
             if let Some(job) = self.studies.request(spec) {
@@ -523,7 +534,10 @@ impl App {
         let params = valid.params;
         let mut queued = false;
         for model in self.checked_models() {
-            if let Some(job) = self.solutions.request(model, params, self.draft.options) {
+            let job = self
+                .solutions
+                .request(model, params, self.draft.options, self.calibrate);
+            if let Some(job) = job {
                 self.outbox.push(job);
                 queued = true;
             }
@@ -599,5 +613,18 @@ impl App {
             // A cached result needs no solve, and then there is no recompute time to report.
             self.request_solves(Instant::now());
         }
+    }
+
+    /// Calibration on or off: every checked law is solved again, and the status line says what the
+    /// switch means.
+    pub(super) fn toggle_calibration(&mut self) {
+        self.calibrate = !self.calibrate;
+        let text = if self.calibrate {
+            "calibrated: each law's damping realises the scene's e (C: the laws' own rules)"
+        } else {
+            "each law's damping from e by its own rule (C: calibrate to realise e)"
+        };
+        self.say(text, false);
+        self.request_solves(Instant::now());
     }
 }

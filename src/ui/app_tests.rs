@@ -651,3 +651,39 @@ fn a_bad_dt_is_refused_in_the_field_with_the_reason_and_the_results_stay() {
         key(&mut a, KeyCode::Esc);
     }
 }
+
+#[test]
+fn shift_c_calibrates_every_checked_law_and_says_so() {
+    let mut a = app();
+    let before = a.take_jobs();
+    assert!(before.iter().all(|j| !j.calibrate));
+    key(&mut a, KeyCode::Char('C'));
+    assert!(a.calibrate);
+    let jobs = a.take_jobs();
+    assert_eq!(
+        jobs.len(),
+        a.checked_models().len(),
+        "every checked law again"
+    );
+    assert!(jobs.iter().all(|j| j.calibrate));
+    let message = a
+        .message
+        .as_ref()
+        .map(|m| m.text.clone())
+        .unwrap_or_default();
+    assert!(message.contains("calibrated"), "{message}");
+    // The worker hits the scene's e with the calibrated law.
+    let proposed = jobs
+        .iter()
+        .find(|j| j.model == ForceModel::Proposed)
+        .unwrap();
+    let outcome = crate::ui::worker::solve(proposed);
+    let e_out = outcome.result.unwrap().summary.e_out;
+    assert!(
+        (e_out / proposed.params.restitution - 1.0).abs() < 1e-6,
+        "{e_out}"
+    );
+    key(&mut a, KeyCode::Char('C'));
+    assert!(!a.calibrate);
+    assert!(a.take_jobs().iter().all(|j| !j.calibrate));
+}

@@ -16,8 +16,8 @@ use super::tab::Tab;
 /// columns, and all of them with the input hints within 24 rows.
 pub const BINDINGS: &[(&str, &str)] = &[
     (
-        "1 2 3 4",
-        "views: explorer · work–precision · stability · sweep",
+        "1 2 3 4 5",
+        "views: explorer · work–precision · stability · sweep · e",
     ),
     ("↑ ↓ k j Tab S-Tab", "move between fields and models"),
     ("Home End g G", "first / last row"),
@@ -38,7 +38,10 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "u r",
         "undo (100 levels) · reset the field to the loaded scene",
     ),
-    ("c", "next chart (when only one fits)"),
+    (
+        "c / C",
+        "next chart (when only one fits) / calibrate to realise e",
+    ),
     (
         "p",
         "presets: type to filter; Enter loads (1 2: to body 1 2)",
@@ -151,6 +154,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('[') => Action::FocusModel(Nudge::Down),
         KeyCode::Char(']') => Action::FocusModel(Nudge::Up),
         KeyCode::Char('c') => Action::CycleChart,
+        KeyCode::Char('C') => Action::ToggleCalibration,
         KeyCode::Char('?') => Action::Help,
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,

@@ -23,6 +23,7 @@ mod mouse;
 pub mod picker;
 pub mod plot;
 pub mod render;
+pub mod restitution_plot;
 mod runtime;
 pub mod solutions;
 pub mod stability_plot;

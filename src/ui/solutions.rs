@@ -17,6 +17,8 @@ pub struct Job {
     pub model: ForceModel,
     pub params: ImpactParams,
     pub options: SolveOptions,
+    /// Calibrate the law's damping so that it realises the scene's e (docs/physics.md §6.4).
+    pub calibrate: bool,
 }
 
 /// What a solve produced; errors are kept as the solver's message.
@@ -34,7 +36,7 @@ pub struct Outcome {
 #[derive(Debug, Clone, Default)]
 struct Slot {
     /// Inputs of the latest request.
-    inputs: Option<(ImpactParams, SolveOptions)>,
+    inputs: Option<(ImpactParams, SolveOptions, bool)>,
     /// Generation of the latest request.
     generation: u64,
     /// Whether the latest request is still running.
@@ -64,19 +66,20 @@ fn index(model: ForceModel) -> usize {
 }
 
 impl Solutions {
-    /// A job for `model` if its inputs differ from those of its last request, else `None`.
+    /// A job for `model` (calibrated or not) if its inputs differ from those of its last request, else `None`.
     pub fn request(
         &mut self,
         model: ForceModel,
         params: ImpactParams,
         options: SolveOptions,
+        calibrate: bool,
     ) -> Option<Job> {
         let slot = &mut self.slots[index(model)];
-        if slot.inputs == Some((params, options)) {
+        if slot.inputs == Some((params, options, calibrate)) {
             return None;
         }
         self.last_generation += 1;
-        slot.inputs = Some((params, options));
+        slot.inputs = Some((params, options, calibrate));
         slot.generation = self.last_generation;
         slot.pending = true;
         Some(Job {
@@ -84,6 +87,7 @@ impl Solutions {
             model,
             params,
             options,
+            calibrate,
         })
     }
 
@@ -146,21 +150,21 @@ mod tests {
         let mut s = Solutions::default();
         let opts = SolveOptions::default();
         let job = s
-            .request(ForceModel::Proposed, fig5_params(0.3), opts)
+            .request(ForceModel::Proposed, fig5_params(0.3), opts, false)
             .unwrap();
         assert!(s.is_pending(ForceModel::Proposed));
         assert_eq!(
-            s.request(ForceModel::Proposed, fig5_params(0.3), opts),
+            s.request(ForceModel::Proposed, fig5_params(0.3), opts, false),
             None
         );
         assert!(s.accept(failed(&job, "x")));
         assert!(!s.any_pending());
         assert_eq!(
-            s.request(ForceModel::Proposed, fig5_params(0.3), opts),
+            s.request(ForceModel::Proposed, fig5_params(0.3), opts, false),
             None
         );
         assert!(
-            s.request(ForceModel::HuntCrossley, fig5_params(0.3), opts)
+            s.request(ForceModel::HuntCrossley, fig5_params(0.3), opts, false)
                 .is_some()
         );
     }
@@ -170,14 +174,14 @@ mod tests {
         let mut s = Solutions::default();
         let opts = SolveOptions::default();
         let first = s
-            .request(ForceModel::Proposed, fig5_params(0.3), opts)
+            .request(ForceModel::Proposed, fig5_params(0.3), opts, false)
             .unwrap();
         assert!(s.accept(failed(&first, "first")));
         let second = s
-            .request(ForceModel::Proposed, fig5_params(0.4), opts)
+            .request(ForceModel::Proposed, fig5_params(0.4), opts, false)
             .unwrap();
         let third = s
-            .request(ForceModel::Proposed, fig5_params(0.5), opts)
+            .request(ForceModel::Proposed, fig5_params(0.5), opts, false)
             .unwrap();
         assert!(second.generation < third.generation);
         // While the new request runs, the previous result is what is shown.

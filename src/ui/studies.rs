@@ -11,6 +11,9 @@ use std::sync::Arc;
 use crate::model::impact::{
     ImpactError, ImpactSolution, ImpactSummary, MethodUsed, SolveOptions, solve_impact,
 };
+use crate::model::restitution::{
+    REQUESTED, RestitutionRow, realised_curve, requested_grid, table, velocity_curve, velocity_grid,
+};
 use crate::model::scene::Scene;
 use crate::model::study::reference::{SummaryErrors, reference, reference_solution};
 use crate::model::study::stability::{
@@ -52,6 +55,11 @@ pub enum StudySpec {
         scene: Box<Scene>,
         spec: Box<SweepSpec>,
     },
+    /// Realised against requested e, and e against v₀, for the checked models.
+    Restitution {
+        models: Vec<ForceModel>,
+        params: ImpactParams,
+    },
 }
 
 /// The kinds of study, one slot each.
@@ -62,15 +70,17 @@ pub enum StudyKind {
     Runs,
     Bounds,
     Sweep,
+    Restitution,
 }
 
 impl StudyKind {
-    pub const ALL: [StudyKind; 5] = [
+    pub const ALL: [StudyKind; 6] = [
         StudyKind::WorkPrecision,
         StudyKind::Current,
         StudyKind::Runs,
         StudyKind::Bounds,
         StudyKind::Sweep,
+        StudyKind::Restitution,
     ];
 
     pub fn index(self) -> usize {
@@ -84,7 +94,7 @@ impl StudyKind {
     pub fn priority(self) -> u8 {
         match self {
             StudyKind::Current | StudyKind::Runs => 0,
-            StudyKind::Sweep => 1,
+            StudyKind::Sweep | StudyKind::Restitution => 1,
             StudyKind::Bounds => 2,
             StudyKind::WorkPrecision => 3,
         }
@@ -99,6 +109,7 @@ impl StudySpec {
             StudySpec::Runs { .. } => StudyKind::Runs,
             StudySpec::Bounds { .. } => StudyKind::Bounds,
             StudySpec::Sweep { .. } => StudyKind::Sweep,
+            StudySpec::Restitution { .. } => StudyKind::Restitution,
         }
     }
 }
@@ -165,6 +176,22 @@ pub struct SweepData {
     pub rows: Vec<SweepRow>,
 }
 
+/// The restitution view's curves and table, per model in the order asked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RestitutionData {
+    /// The scene's v₀, m/s, the middle of the velocity curves.
+    pub v0: f64,
+    /// (model, [(e requested, e realised)]).
+    pub realised: Vec<(ForceModel, Vec<(f64, f64)>)>,
+    /// (model, [(v₀, e realised)]) with the scene's damping coefficient held.
+    pub velocity: Vec<(ForceModel, Vec<(f64, f64)>)>,
+    /// The realised e for requested 0.1, 0.3, 0.5, 0.7, 0.9.
+    pub table: Vec<RestitutionRow>,
+}
+
+/// Points of each restitution curve.
+const RESTITUTION_POINTS: usize = 25;
+
 /// What a study produced; errors are kept as messages.
 #[derive(Debug, Clone)]
 pub enum StudyResult {
@@ -173,6 +200,7 @@ pub enum StudyResult {
     Runs(Result<Arc<StabilityData>, String>),
     Bounds(Result<Arc<Vec<MeasuredBound>>, String>),
     Sweep(Result<Arc<SweepData>, String>),
+    Restitution(Result<Arc<RestitutionData>, String>),
 }
 
 impl StudyResult {
@@ -183,6 +211,7 @@ impl StudyResult {
             StudyResult::Runs(_) => StudyKind::Runs,
             StudyResult::Bounds(_) => StudyKind::Bounds,
             StudyResult::Sweep(_) => StudyKind::Sweep,
+            StudyResult::Restitution(_) => StudyKind::Restitution,
         }
     }
 }
@@ -250,12 +279,44 @@ pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutc
             Ok(None) => return None,
             Err(e) => StudyResult::Sweep(Err(e.to_string())),
         },
+        StudySpec::Restitution { models, params } => match restitution_data(models, params, stop) {
+            Some(data) => StudyResult::Restitution(Ok(Arc::new(data))),
+            None => return None,
+        },
     };
     // A study cut short is incomplete: nobody wants it.
     (!stop()).then_some(StudyOutcome {
         generation: job.generation,
         result,
     })
+}
+
+/// The restitution curves and table of `models`, `None` once `stop` says so.
+fn restitution_data(
+    models: &[ForceModel],
+    params: &ImpactParams,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Option<RestitutionData> {
+    let opts = SolveOptions::default();
+    let requested = requested_grid(RESTITUTION_POINTS);
+    let velocities = velocity_grid(params.v0, RESTITUTION_POINTS);
+    let mut data = RestitutionData {
+        v0: params.v0,
+        realised: Vec::new(),
+        velocity: Vec::new(),
+        table: Vec::new(),
+    };
+    for &model in models {
+        if stop() {
+            return None;
+        }
+        data.realised
+            .push((model, realised_curve(model, params, &requested, &opts)));
+        data.velocity
+            .push((model, velocity_curve(model, params, &velocities, &opts)));
+    }
+    data.table = table(models, params, &REQUESTED, &opts);
+    Some(data)
 }
 
 fn current_point(
@@ -312,7 +373,7 @@ struct Slot {
 /// The latest result of every study, with the requests in flight.
 #[derive(Debug, Clone, Default)]
 pub struct Studies {
-    slots: [Slot; 5],
+    slots: [Slot; StudyKind::ALL.len()],
     last_generation: u64,
 }
 
@@ -384,6 +445,13 @@ impl Studies {
     pub fn sweep(&self) -> Option<&Result<Arc<SweepData>, String>> {
         match self.result(StudyKind::Sweep) {
             Some(StudyResult::Sweep(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    pub fn restitution(&self) -> Option<&Result<Arc<RestitutionData>, String>> {
+        match self.result(StudyKind::Restitution) {
+            Some(StudyResult::Restitution(r)) => Some(r),
             _ => None,
         }
     }

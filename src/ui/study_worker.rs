@@ -125,6 +125,10 @@ mod tests {
                 params,
                 options: Default::default(),
             },
+            StudyKind::Restitution => StudySpec::Restitution {
+                models: vec![model],
+                params,
+            },
         };
         StudyJob { generation, spec }
     }

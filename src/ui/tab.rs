@@ -11,14 +11,17 @@ pub enum Tab {
     Stability,
     /// One output against one scene parameter for the checked models.
     Sweep,
+    /// Realised against requested restitution, and e against v₀, for the checked models.
+    Restitution,
 }
 
 impl Tab {
-    pub const ALL: [Tab; 4] = [
+    pub const ALL: [Tab; 5] = [
         Tab::Explorer,
         Tab::WorkPrecision,
         Tab::Stability,
         Tab::Sweep,
+        Tab::Restitution,
     ];
 
     /// The key that opens the tab.
@@ -28,6 +31,7 @@ impl Tab {
             Tab::WorkPrecision => '2',
             Tab::Stability => '3',
             Tab::Sweep => '4',
+            Tab::Restitution => '5',
         }
     }
 
@@ -43,6 +47,7 @@ impl Tab {
             Tab::WorkPrecision => "work–precision",
             Tab::Stability => "stability",
             Tab::Sweep => "sweep",
+            Tab::Restitution => "restitution",
         }
     }
 }
@@ -52,13 +57,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn digits_one_to_four_open_the_tabs_in_order() {
+    fn digits_one_to_five_open_the_tabs_in_order() {
         let keys: String = Tab::ALL.iter().map(|t| t.key()).collect();
-        assert_eq!(keys, "1234");
+        assert_eq!(keys, "12345");
         for tab in Tab::ALL {
             assert_eq!(Tab::of_key(tab.key()), Some(tab));
         }
-        assert_eq!(Tab::of_key('5'), None);
+        assert_eq!(Tab::of_key('6'), None);
         assert_eq!(Tab::of_key('0'), None);
     }
 }

@@ -166,6 +166,7 @@ fn normal(app: &mut App, action: Action) {
         },
         Action::FocusModel(direction) => app.focused = step_model(app.focused, direction),
         Action::CycleChart => app.chart = app.chart.next(),
+        Action::ToggleCalibration => app.toggle_calibration(),
         Action::Help => app.mode = Mode::Help,
         Action::Presets => {
             let mut picker = Picker::new(&app.registry);

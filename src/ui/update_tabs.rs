@@ -66,10 +66,14 @@ pub fn study_tab(app: &mut App, action: Action) -> Option<Action> {
             app.cost = app.cost.other();
             None
         }
+        (Tab::Restitution, Action::CycleChart) => {
+            app.restitution_table = !app.restitution_table;
+            None
+        }
         // Nothing to move, nudge or edit in these tabs: the keys do nothing rather than reach
         // the explorer's hidden form.
         (
-            Tab::WorkPrecision | Tab::Stability,
+            Tab::WorkPrecision | Tab::Stability | Tab::Restitution,
             Action::Up | Action::Down | Action::Nudge(_) | Action::Enter,
         )
         | (_, Action::CycleChart) => None,

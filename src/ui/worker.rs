@@ -8,22 +8,33 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
 use std::time::Instant;
 
-use crate::model::impact::solve_impact;
+use crate::model::calibrate::scene_or_calibrated;
+use crate::model::impact::{ImpactError, ImpactSolution, solve_law};
 
 use super::solutions::{Job, Outcome};
 
 /// Solves one job on the calling thread.
 pub fn solve(job: &Job) -> Outcome {
     let start = Instant::now();
-    let result = solve_impact(job.model, &job.params, &job.options)
-        .map(Arc::new)
-        .map_err(|e| e.to_string());
+    let result = solve_job(job);
     Outcome {
         generation: job.generation,
         model: job.model,
         result,
         elapsed: start.elapsed(),
     }
+}
+
+/// The job's law (calibrated when asked; a law that cannot be, says why) solved.
+fn solve_job(job: &Job) -> Result<Arc<ImpactSolution>, String> {
+    let (law, calibration) =
+        scene_or_calibrated(job.model, &job.params, job.calibrate).map_err(|e| e.to_string())?;
+    if let Err(why) = calibration {
+        return Err(format!("not calibrated: {why}"));
+    }
+    solve_law(&law, &job.options)
+        .map(Arc::new)
+        .map_err(|e: ImpactError| e.to_string())
 }
 
 /// A report of the worker: an outcome, or the message of a solver panic (a bug; the worker stops).
@@ -106,6 +117,7 @@ mod tests {
             model,
             params: fig5_params(0.3),
             options: SolveOptions::default(),
+            calibrate: false,
         }
     }
 

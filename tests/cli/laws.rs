@@ -24,6 +24,14 @@ fn solve_reports_the_requested_and_realised_e_and_the_damping_used() {
             }
         }
     }
+    // Fig. 5 keeps a dent: the proposed model, with its reason.
+    assert_eq!(v["recommendation"]["model"], "proposed");
+    assert!(
+        v["recommendation"]["why"]
+            .as_str()
+            .unwrap()
+            .contains("dent")
+    );
     // Hunt–Crossley's χ = 3(1 − e)/2 (eq 19) and its realised e of the issue: 0.712, not 0.6.
     let hc = &rows[ForceModel::HuntCrossley.index()];
     assert!((hc["damping"]["value"].as_f64().unwrap() - 0.6).abs() < 1e-15);
@@ -55,6 +63,22 @@ fn calibrate_makes_every_law_with_damping_rebound_with_the_requested_e() {
         assert!((e / 0.3 - 1.0).abs() < 1e-9, "{row}");
         assert!(row["calibration_error"].is_null());
     }
+    // Without a dent and at e = 0.3, the law whose own rule realises e, said in one line.
+    let table = ok(&[
+        "solve",
+        "--scene",
+        FIG5,
+        "--set",
+        "impact.restitution=0.3",
+        "--set",
+        "impact.plastic_indentation=0",
+        "--model",
+        "gonthier",
+    ]);
+    assert!(
+        table.contains("Recommended: gonthier — ") && table.contains("realises e = 0.304"),
+        "{table}"
+    );
     // The table marks calibrated values with *.
     let table = ok(&[
         "solve",

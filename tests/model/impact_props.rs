@@ -194,6 +194,8 @@ proptest! {
 
     #[test]
     fn auto_always_succeeds_on_valid_scenes(p in scene(), model in any_model()) {
+        // Thornton's law is for spheres only and refuses other contacts by design.
+        prop_assume!(model.name() != "thornton" || p.law.n == 1.5);
         let opts = SolveOptions::default();
         let result = solve_impact(model, &p, &opts);
         prop_assert!(result.is_ok(), "{model}: {:?}", result.as_ref().err());

@@ -1,37 +1,20 @@
 //! Kuwabara–Kono (docs/physics.md §6.5): the small-A restitution series of Schwager & Pöschel
 //! (C₁ = 1.15344, C₂ = 0.79826) against the solver at tight tolerance, and e falling with v₀.
 
-use hertz_tui::model::PowerLaw;
 use hertz_tui::model::force::any::KUWABARA_KONO_C1;
 use hertz_tui::model::force::{ForceModel, ImpactParams};
-use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_law};
-use hertz_tui::model::ode::Method;
+
+use crate::laws_common::{self, e_out_with};
 
 const KK: ForceModel = ForceModel::with_id("kuwabara-kono");
 const C2: f64 = 0.79826;
 
 fn sphere(v0: f64) -> ImpactParams {
-    ImpactParams {
-        mass: 0.033,
-        law: PowerLaw {
-            k: 1.465e10,
-            n: 1.5,
-        },
-        v0,
-        restitution: 0.6,
-        plastic_indentation: 0.0,
-    }
+    laws_common::sphere(v0, 0.6)
 }
 
 fn e_out(p: &ImpactParams, a: f64) -> f64 {
-    let law = KK.law_with_damping(p, a).unwrap();
-    let opts = SolveOptions {
-        method: MethodChoice::Integrator(Method::Dop853),
-        rtol: 1e-13,
-        atol: Some(1e-15),
-        ..SolveOptions::default()
-    };
-    solve_law(&law, &opts).unwrap().summary.e_out
+    e_out_with(KK, p, a, 1e-13)
 }
 
 /// ε = A·(k/m)^{2/5}·v₀^{1/5}.

@@ -5,28 +5,14 @@
 use hertz_tui::model::PowerLaw;
 use hertz_tui::model::force::kelvin_voigt::damping_ratio;
 use hertz_tui::model::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams};
-use hertz_tui::model::impact::{
-    ImpactSummary, MethodChoice, MethodUsed, SolveOptions, solve_impact, solve_law,
-};
-use hertz_tui::model::ode::Method;
+use hertz_tui::model::impact::{ImpactSummary, MethodUsed, SolveOptions, solve_impact, solve_law};
+
+use crate::laws_common::{dop853, sphere};
 
 const KV: ForceModel = ForceModel::with_id("kelvin-voigt");
 const KV_TENSION: ForceModel = ForceModel::with_id("kelvin-voigt-tension");
 const HV: ForceModel = ForceModel::with_id("hertz-viscous");
 const HV_TENSION: ForceModel = ForceModel::with_id("hertz-viscous-tension");
-
-fn sphere(v0: f64, restitution: f64) -> ImpactParams {
-    ImpactParams {
-        mass: 0.033,
-        law: PowerLaw {
-            k: 1.465e10,
-            n: 1.5,
-        },
-        v0,
-        restitution,
-        plastic_indentation: 2.3e-6,
-    }
-}
 
 fn cylinder(restitution: f64) -> ImpactParams {
     ImpactParams {
@@ -46,13 +32,7 @@ fn rel(a: f64, b: f64) -> f64 {
 }
 
 fn integrated(model: ForceModel, p: &ImpactParams) -> ImpactSummary {
-    let opts = SolveOptions {
-        method: MethodChoice::Integrator(Method::Dop853),
-        rtol: 1e-12,
-        atol: Some(1e-14),
-        ..SolveOptions::default()
-    };
-    solve_impact(model, p, &opts)
+    solve_impact(model, p, &dop853(1e-12))
         .unwrap_or_else(|e| panic!("{model}: {e}"))
         .summary
 }

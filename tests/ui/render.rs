@@ -350,8 +350,38 @@ fn sweep_160x48() {
 }
 
 #[test]
+fn restitution_160x48() {
+    let mut app = app_on(Tab::Restitution);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(
+        screen.contains("realised e against requested e"),
+        "{screen}"
+    );
+    assert!(screen.contains("e_out against v₀"), "{screen}");
+    assert!(
+        screen.contains("v_y") && screen.contains("v_p"),
+        "onset rules"
+    );
+    assert!(!screen.contains("NaN") && !screen.contains("computing…"));
+    insta::assert_snapshot!(render(&app, 160, 48).backend());
+    // c: the table of realised e for requested 0.1…0.9, the checked models' rows.
+    press(&mut app, KeyCode::Char('c'));
+    let table = text(render(&app, 160, 48).backend().buffer());
+    assert!(
+        table.contains("e = 0.1") && table.contains("e = 0.9"),
+        "{table}"
+    );
+    assert!(table.contains("0.6630"), "Hunt–Crossley at 0.5: {table}");
+}
+
+#[test]
 fn every_tab_draws_at_every_size_without_nan() {
-    for tab in [Tab::WorkPrecision, Tab::Stability, Tab::Sweep] {
+    for tab in [
+        Tab::WorkPrecision,
+        Tab::Stability,
+        Tab::Sweep,
+        Tab::Restitution,
+    ] {
         let app = app_on(tab);
         for (w, h) in [(80, 24), (100, 30), (120, 40), (200, 60), (30, 5)] {
             let screen = text(render(&app, w, h).backend().buffer());

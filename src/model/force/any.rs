@@ -9,6 +9,7 @@ use super::kelvin_voigt::KelvinVoigt;
 use super::law::{ContactEnd, ForceLaw, Phase};
 use super::proposed::Proposed;
 use super::table::{ContactRule, DampingParam, Kind};
+use super::thornton::Thornton;
 use super::{ForceModel, ImpactParams};
 use crate::model::error::{ModelError, require};
 use crate::model::exact::ExactImpact;
@@ -104,6 +105,18 @@ macro_rules! any_law {
                     $(AnyLaw::$variant(l) => l.impulse_coefficient()),*
                 }
             }
+
+            fn damping_value(&self) -> Option<f64> {
+                match self {
+                    $(AnyLaw::$variant(l) => l.damping_value()),*
+                }
+            }
+
+            fn stored_energy(&self, x: f64, phase: Phase) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.stored_energy(x, phase)),*
+                }
+            }
         }
     };
 }
@@ -115,6 +128,7 @@ any_law! {
     Hysteresis(Hysteresis),
     HertzViscous(HertzViscous),
     KelvinVoigt(KelvinVoigt),
+    Thornton(Thornton),
 }
 
 /// C₁ of the Kuwabara–Kono restitution series e = 1 − C₁·ε + C₂·ε² − …, ε = A·(k/m)^{2/5}·v₀^{1/5}:
@@ -141,7 +155,7 @@ impl AnyLaw {
     /// own rule, after validating them.
     pub fn new(model: ForceModel, params: &ImpactParams) -> Result<Self, ModelError> {
         params.validate()?;
-        Ok(Self::build(model, params, None))
+        Self::build(model, params, None)
     }
 
     /// The law `model` with its damping parameter set to `value` (χ, P, b, γ or c, SI) instead of
@@ -160,13 +174,17 @@ impl AnyLaw {
             });
         };
         require(param.symbol, value, "a finite number ≥ 0", |d| d >= 0.0)?;
-        Ok(Self::build(model, params, Some(value)))
+        Self::build(model, params, Some(value))
     }
 
-    fn build(model: ForceModel, params: &ImpactParams, damping: Option<f64>) -> Self {
+    fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        damping: Option<f64>,
+    ) -> Result<Self, ModelError> {
         let spec = model.spec();
         let tension_allowed = spec.contact == ContactRule::TensionAllowed;
-        match spec.kind {
+        Ok(match spec.kind {
             Kind::Elastic => AnyLaw::Elastic(Elastic::new(params)),
             Kind::DryFriction => AnyLaw::DryFriction(match damping {
                 Some(p) => DryFriction::with_p(params, p),
@@ -192,30 +210,25 @@ impl AnyLaw {
                 params,
                 damping.unwrap_or_else(|| kuwabara_kono_a(params)),
             )),
+            Kind::Thornton => AnyLaw::Thornton(Thornton::new(
+                model,
+                params,
+                damping.unwrap_or_else(|| Thornton::default_v_yield(params)),
+            )?),
             Kind::KelvinVoigt => AnyLaw::KelvinVoigt(KelvinVoigt::new(
                 model,
                 params,
                 damping.unwrap_or_else(|| KelvinVoigt::default_c(params)),
                 tension_allowed,
             )),
-        }
+        })
     }
 
     /// The damping parameter in use, `None` for a law without one.
     pub fn damping(&self) -> Option<Damping> {
-        let spec = self.model().spec();
-        let param = spec.damping?;
-        let value = match self {
-            AnyLaw::Elastic(_) => return None,
-            AnyLaw::DryFriction(l) => l.p(),
-            AnyLaw::Proposed(l) if matches!(spec.kind, Kind::KuwabaraKono) => {
-                l.b() / l.params().law.k
-            }
-            AnyLaw::Proposed(l) => l.b(),
-            AnyLaw::Hysteresis(l) => l.chi(),
-            AnyLaw::HertzViscous(l) => l.gamma(),
-            AnyLaw::KelvinVoigt(l) => l.c(),
-        };
-        Some(Damping { param, value })
+        Some(Damping {
+            param: self.model().spec().damping?,
+            value: self.damping_value()?,
+        })
     }
 }

@@ -135,6 +135,10 @@ impl ForceLaw for DryFriction {
         (x - self.x_cut) / self.x_cut
     }
 
+    fn damping_value(&self) -> Option<f64> {
+        Some(self.p)
+    }
+
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
         dry_friction(&self.params, self.p, self.x_cut, rtol)
     }

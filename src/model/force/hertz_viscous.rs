@@ -100,6 +100,10 @@ impl ForceLaw for HertzViscous {
         self.params.law.k * x * self.damping_power(x) + self.gamma * v
     }
 
+    fn damping_value(&self) -> Option<f64> {
+        Some(self.gamma)
+    }
+
     /// No closed form: the adaptive solver integrates it.
     fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
         None

@@ -112,6 +112,10 @@ impl ForceLaw for Hysteresis {
         1.0 + self.alpha * v
     }
 
+    fn damping_value(&self) -> Option<f64> {
+        Some(self.chi())
+    }
+
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
         hysteresis(&self.params, self.alpha, rtol)
     }

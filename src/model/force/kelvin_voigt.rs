@@ -104,6 +104,10 @@ impl ForceLaw for KelvinVoigt {
         self.stiffness * x + self.c * v
     }
 
+    fn damping_value(&self) -> Option<f64> {
+        Some(self.c)
+    }
+
     /// The damped oscillator x = (v₀/ω_d)·e^{−ζω₀t}·sin(ω_d·t) (docs/physics.md §6.3), for ζ < 1.
     fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
         let zeta = self.zeta();

@@ -77,6 +77,12 @@ pub trait ForceLaw {
     /// x → 0 (F divided by a power of x). Contact ends where it falls through zero.
     fn tension(&self, x: f64, v: f64) -> f64;
 
+    /// The value of the law's damping parameter (the one its table row names), SI; `None` for a
+    /// law without one.
+    fn damping_value(&self) -> Option<f64> {
+        None
+    }
+
     /// The exact impact (closed form or quadrature) where one exists; quadratures aim at `rtol`.
     fn exact(&self, rtol: f64) -> Option<ExactImpact>;
 
@@ -86,6 +92,13 @@ pub trait ForceLaw {
     /// instead of ẋ, whose √x damping at first contact costs adaptive methods their order.
     fn impulse_coefficient(&self) -> f64 {
         0.0
+    }
+
+    /// The energy the contact holds at approach x during `phase`, J: what the solver's energy
+    /// guard adds to ½mẋ². Hertz's k·x^{n+1}/(n+1) unless the law's conservative part differs.
+    fn stored_energy(&self, x: f64, _phase: Phase) -> f64 {
+        let law = self.params().law;
+        law.k * x * x * abs_pow_nm1(x, law.n) / (law.n + 1.0)
     }
 
     /// F(x, ẋ), N: zero out of contact (x ≤ 0), else the law with sign(ẋ) deciding the phase.

@@ -18,6 +18,7 @@ pub mod kelvin_voigt;
 pub mod law;
 pub mod proposed;
 pub mod table;
+pub mod thornton;
 
 pub use any::{AnyLaw, Damping, LawVisitor};
 pub use law::{ContactEnd, ForceLaw, Phase};

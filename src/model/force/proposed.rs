@@ -2,6 +2,7 @@
 //! b = k·A is the Kuwabara–Kono / Brilliantov viscoelastic sphere (docs/physics.md §6.5).
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
+use super::table::Kind;
 use super::{ForceModel, ImpactParams};
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
@@ -99,6 +100,14 @@ impl ForceLaw for Proposed {
     /// b·xⁿ⁻¹·ẋ = d(b·xⁿ/n)/dt.
     fn impulse_coefficient(&self) -> f64 {
         self.b / self.params.law.n
+    }
+
+    /// b, or A = b/k for the Kuwabara–Kono row.
+    fn damping_value(&self) -> Option<f64> {
+        Some(match self.model.spec().kind {
+            Kind::KuwabaraKono => self.b / self.params.law.k,
+            _ => self.b,
+        })
     }
 
     /// Only the elastic limit b = 0 has a closed form.

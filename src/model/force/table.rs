@@ -2,7 +2,8 @@
 //!
 //! Everything that lists laws — `--model`, scene files, sweeps, the explorer's panes and arrays —
 //! iterates [`LAWS`] through [`super::ForceModel`]. A Hunt–Crossley-type law is one row with its
-//! χ(e); a law with its own equations is one file, one [`Kind`] variant and one row.
+//! χ(e); a law with its own equations is one file implementing `ForceLaw`, one row, one [`Kind`]
+//! variant built in `AnyLaw::build` and one line of `any_law!` (both in `any.rs`).
 
 /// Which kind of dissipation a law models; the Models pane groups laws by it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -13,6 +14,8 @@ pub enum Family {
     Friction,
     /// F = elastic part plus a damping coefficient times ẋ.
     Viscous,
+    /// Elastic–plastic: a permanent dent, no rate dependence.
+    Plastic,
     /// F = k·xⁿ·(1 + χ(e)·ẋ/v₀), the Hunt–Crossley family.
     HuntCrossley,
 }
@@ -24,6 +27,7 @@ impl Family {
             Family::Elastic => "elastic",
             Family::Friction => "friction",
             Family::Viscous => "viscous damping",
+            Family::Plastic => "elastic–plastic",
             Family::HuntCrossley => "Hunt–Crossley family",
         }
     }
@@ -74,6 +78,7 @@ pub enum Kind {
     KelvinVoigt,
     /// F = k·(xⁿ + A·xⁿ⁻¹·ẋ): the proposed model's equations with b = k·A.
     KuwabaraKono,
+    Thornton,
 }
 
 /// One law of the table.
@@ -205,6 +210,20 @@ pub const LAWS: &[LawSpec] = &[
         }),
         contact: ContactRule::ForceZero,
         kind: Kind::KuwabaraKono,
+    },
+    LawSpec {
+        id: "thornton",
+        label: "Thornton 1997",
+        short: "Thorn.",
+        source: "Thornton, J. Appl. Mech. 64 (1997), elastic–perfectly-plastic spheres; docs/physics.md §6.6",
+        family: Family::Plastic,
+        damping: Some(DampingParam {
+            symbol: "v_y",
+            key: "v_yield",
+            unit: "m/s",
+        }),
+        contact: ContactRule::ForceZero,
+        kind: Kind::Thornton,
     },
     LawSpec {
         id: "hunt-crossley",

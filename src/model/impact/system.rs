@@ -72,7 +72,11 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
     }
 
     fn check(&mut self, _t: f64, y: &State) -> Result<(), String> {
-        let energy = self.scales.energy(y[0], self.scales.velocity(y));
+        // ½mẋ² plus what the law stores, over ½mv₀²: Hertz's k·x^{n+1}/(n+1) for most laws.
+        let sc = &self.scales;
+        let v = sc.velocity(y);
+        let stored = self.law.stored_energy(y[0] * sc.x, self.phase);
+        let energy = v * v + stored / (0.5 * sc.mass * sc.v * sc.v);
         if energy > ENERGY_LIMIT {
             self.growth = Some(energy - 1.0);
             Err(format!(

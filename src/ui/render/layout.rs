@@ -41,7 +41,7 @@ pub fn screen(area: Rect) -> Option<Screen> {
 }
 
 /// Width of the left column (forms and models) of the explorer and the sweep view.
-fn left_width(area: Rect) -> u16 {
+pub(super) fn left_width(area: Rect) -> u16 {
     if area.width >= 120 { 44 } else { 33 }
 }
 

@@ -11,6 +11,7 @@ pub(crate) mod models;
 mod picker;
 mod prompt;
 mod regime;
+mod restitution;
 mod results;
 mod stability;
 mod status;
@@ -37,6 +38,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         Tab::WorkPrecision => work_precision::render(frame, screen.body, app, screen.roomy),
         Tab::Stability => stability::render(frame, screen.body, app, screen.roomy),
         Tab::Sweep => sweep::render(frame, &screen, app),
+        Tab::Restitution => restitution::render(frame, &screen, app),
     }
     status::render(frame, screen.status, app);
     match &app.mode {

@@ -90,7 +90,12 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .map(|v| recommend(&v.scene, &v.quasistatic).fits)
         .unwrap_or_default();
     let rows = rows();
-    let block = pane("Models · ✓ fits the regime", theme, roomy);
+    let title = if app.calibrate {
+        "Models · ✓ fits · calibrated to e"
+    } else {
+        "Models · ✓ fits the regime"
+    };
+    let block = pane(title, theme, roomy);
     let inner = block.inner(area);
     let height = usize::from(inner.height);
     let offset = offset_for(app, &rows, height);

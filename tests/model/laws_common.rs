@@ -1,0 +1,36 @@
+//! Fixtures of the contact-law tests: the Fig. 5 sphere at any v₀ and e, and a tight DOP853 solve.
+
+use hertz_tui::model::PowerLaw;
+use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_law};
+use hertz_tui::model::ode::Method;
+
+/// Fig. 5's steel sphere on a plate (m = 0.033 kg, k = 1.465e10 N/m^1.5) at `v0` and `restitution`.
+pub fn sphere(v0: f64, restitution: f64) -> ImpactParams {
+    ImpactParams {
+        mass: 0.033,
+        law: PowerLaw {
+            k: 1.465e10,
+            n: 1.5,
+        },
+        v0,
+        restitution,
+        plastic_indentation: 0.0,
+    }
+}
+
+/// DOP853 at `rtol` (atol a hundredth of it): the independent integration of these tests.
+pub fn dop853(rtol: f64) -> SolveOptions {
+    SolveOptions {
+        method: MethodChoice::Integrator(Method::Dop853),
+        rtol,
+        atol: Some(rtol * 1e-2),
+        ..SolveOptions::default()
+    }
+}
+
+/// The realised e of `model` with its damping parameter set to `damping`, by DOP853 at `rtol`.
+pub fn e_out_with(model: ForceModel, p: &ImpactParams, damping: f64, rtol: f64) -> f64 {
+    let law = model.law_with_damping(p, damping).unwrap();
+    solve_law(&law, &dop853(rtol)).unwrap().summary.e_out
+}
