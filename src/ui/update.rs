@@ -330,6 +330,11 @@ fn picking(app: &mut App, mut picker: Picker, action: Action) {
             app.mode = Mode::Picker(picker);
             return;
         }
+        Action::Wheel(_, _, direction) => {
+            picker.step(direction == Nudge::Down);
+            app.mode = Mode::Picker(picker);
+            return;
+        }
         Action::Jump(jump) => {
             picker.jump(matches!(jump, Jump::Last | Jump::NextSection));
             app.mode = Mode::Picker(picker);
