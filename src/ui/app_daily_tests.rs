@@ -238,8 +238,11 @@ fn saving_never_hides_a_built_in_without_asking_and_keeps_the_description() {
     assert!(text.contains("[solver]\nmethod = \"auto\""), "{text}");
     assert_eq!(
         message,
-        format!("saved {}", file.display()),
-        "the absolute path"
+        format!(
+            "saved {} (it hides the built-in; delete the file to get it back)",
+            file.display()
+        ),
+        "the absolute path, and how to undo it"
     );
     assert!(file.is_absolute());
 }
