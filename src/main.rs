@@ -25,7 +25,7 @@ fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
     });
     match scene {
         Ok((scene, view)) => {
-            hertz_tui::ui::run(scene, view, args.marker)?;
+            hertz_tui::ui::run(scene, view, &args.scene, args.marker)?;
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => Ok(exit(Err(e))),

@@ -238,8 +238,11 @@ fn saving_never_hides_a_built_in_without_asking_and_keeps_the_description() {
     assert!(text.contains("[solver]\nmethod = \"auto\""), "{text}");
     assert_eq!(
         message,
-        format!("saved {}", file.display()),
-        "the absolute path"
+        format!(
+            "saved {} (it hides the built-in; delete the file to get it back)",
+            file.display()
+        ),
+        "the absolute path, and how to undo it"
     );
     assert!(file.is_absolute());
 }
@@ -417,7 +420,21 @@ fn the_picker_filters_as_you_type_and_presets_open_as_their_figure() {
         .iter()
         .filter(|l| l.contains("scene    fig5"))
         .collect();
-    assert!(rows.iter().all(|l| l.contains('…')), "{lines:#?}");
+    assert_eq!(rows.len(), 1, "{lines:#?}");
+    assert!(
+        rows[0].trim_end_matches([' ', '│']).ends_with('…'),
+        "{lines:#?}"
+    );
+    // The wheel moves the selection (it opened on the loaded preset).
+    let selected = |a: &App| match &a.mode {
+        Mode::Picker(picker) => picker.selected,
+        other => panic!("{other:?}"),
+    };
+    let before = selected(&a);
+    mouse(&mut a, MouseEventKind::ScrollDown, 40, 12);
+    assert_eq!(selected(&a), before + 1);
+    mouse(&mut a, MouseEventKind::ScrollUp, 40, 12);
+    assert_eq!(selected(&a), before);
 }
 
 /// Every key the explorer's keymap acts on is in the help, under its own name.

@@ -53,14 +53,20 @@ use crate::model::scene_file::View;
 use app::App;
 use theme::Theme;
 
-/// Opens the explorer on `scene`, as `view` asks (checked models, solver settings), and runs it until the user quits; the terminal is restored on
+/// Opens the explorer on `scene` read from `source` (a preset name or a path), as `view` asks
+/// (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
-pub fn run(scene: Scene, view: View, marker: MarkerStyle) -> color_eyre::Result<()> {
+pub fn run(scene: Scene, view: View, source: &str, marker: MarkerStyle) -> color_eyre::Result<()> {
     let registry = Registry::load()
         .or_else(|_| Registry::builtin())
         .wrap_err("cannot load the presets")?;
-    let app = App::open(scene, view, registry, marker, Theme::from_env());
+    // A scene file's description is kept on save, as a preset's is.
+    let description = registry.scene_description(source).ok().flatten();
+    let mut app = App::open(scene, view, registry, marker, Theme::from_env());
+    if app.description.is_none() {
+        app.description = description;
+    }
     let mut terminal = match ratatui::try_init() {
         Ok(terminal) => terminal,
         Err(e) => {

@@ -86,7 +86,10 @@ fn confirming(app: &mut App, confirm: Confirm, action: Action) {
         (Confirm::Quit, Action::Yes) => app.quit = true,
         (Confirm::Quit, Action::Save) => normal(app, Action::Save),
         (Confirm::ShadowBuiltin(name), Action::Yes) => match save_preset(app, &name) {
-            Ok(news) => app.say(news, false),
+            Ok(news) => app.say(
+                format!("{news} (it hides the built-in; delete the file to get it back)"),
+                false,
+            ),
             Err(reason) => app.say(reason, true),
         },
         (Confirm::Overwrite { path, model }, Action::Yes) => {
@@ -328,6 +331,11 @@ fn picking(app: &mut App, mut picker: Picker, action: Action) {
     let target = match action {
         Action::Up | Action::Down => {
             picker.step(matches!(action, Action::Down));
+            app.mode = Mode::Picker(picker);
+            return;
+        }
+        Action::Wheel(_, _, direction) => {
+            picker.step(direction == Nudge::Down);
             app.mode = Mode::Picker(picker);
             return;
         }
