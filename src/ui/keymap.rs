@@ -83,6 +83,14 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
             }
             _ => return None,
         }),
+        Mode::Engine(_) => Some(match key.code {
+            KeyCode::Left | KeyCode::Char('h') => Action::Nudge(Nudge::Down),
+            KeyCode::Right | KeyCode::Char('l') => Action::Nudge(Nudge::Up),
+            KeyCode::Up | KeyCode::Char('k') => Action::Up,
+            KeyCode::Down | KeyCode::Char('j') => Action::Down,
+            KeyCode::Esc | KeyCode::Char('q') | KeyCode::Char('t') => Action::Cancel,
+            _ => return None,
+        }),
         Mode::Picker(_) => Some(match key.code {
             KeyCode::Up | KeyCode::Char('k') | KeyCode::BackTab => Action::Up,
             KeyCode::Down | KeyCode::Char('j') | KeyCode::Tab => Action::Down,
@@ -114,6 +122,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,
+        KeyCode::Char('t') => Action::Engines,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

@@ -12,6 +12,7 @@ pub mod app;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+pub mod engine_panel;
 pub mod export;
 pub mod field;
 pub mod keymap;

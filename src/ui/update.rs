@@ -10,6 +10,7 @@ use crate::model::scene_key::BodyIndex;
 
 use super::action::Action;
 use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
+use super::engine_panel::EnginePanel;
 use super::export;
 use super::field::{Field, Nudge};
 use super::picker::{EntryKind, Picker};
@@ -41,11 +42,25 @@ fn transition(app: &mut App, action: Action) {
                         app.mode = Mode::Help;
                     }
                 }
+                Mode::Engine(panel) => engine_panel(app, panel, action),
                 Mode::Picker(picker) => picking(app, picker, action),
                 Mode::Prompt(prompt) => prompting(app, prompt, action),
             }
         }
     }
+}
+
+/// The engine panel: ← → another engine, ↑ ↓ scroll, Esc closes.
+fn engine_panel(app: &mut App, mut panel: EnginePanel, action: Action) {
+    let scene = app.valid.as_ref().map(|v| &v.scene);
+    match action {
+        Action::Cancel => return,
+        Action::Nudge(direction) => panel = panel.step(direction, scene),
+        Action::Up => panel.scroll_by(false),
+        Action::Down => panel.scroll_by(true),
+        _ => {}
+    }
+    app.mode = Mode::Engine(panel);
 }
 
 fn solved(app: &mut App, report: Report) {
@@ -113,6 +128,10 @@ fn normal(app: &mut App, action: Action) {
         Action::FocusModel(direction) => app.focused = step_model(app.focused, direction),
         Action::CycleChart => app.chart = app.chart.next(),
         Action::Help => app.mode = Mode::Help,
+        Action::Engines => {
+            let scene = app.valid.as_ref().map(|v| &v.scene);
+            app.mode = Mode::Engine(EnginePanel::new(0, scene));
+        }
         Action::Presets => {
             let mut picker = Picker::new(&app.registry);
             if let Some(preset) = &app.preset {

@@ -3,6 +3,7 @@
 mod chart;
 mod common;
 mod editable;
+mod engine;
 mod form;
 mod graph;
 mod help;
@@ -41,6 +42,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
     status::render(frame, screen.status, app);
     match &app.mode {
         Mode::Help => help::render(frame, area, app),
+        Mode::Engine(panel) => engine::render(frame, area, app, panel),
         Mode::Picker(picker) => picker::render(frame, area, app, picker),
         Mode::Prompt(prompt) => prompt::render(frame, screen.status, app, prompt),
         Mode::Normal | Mode::Editing(_) => {}
