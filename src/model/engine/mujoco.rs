@@ -142,7 +142,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             timeconst.text(),
             dampratio.text()
         ),
-        hertz_tui_law: "linear spring–dashpot (Kelvin–Voigt) with the F ≥ 0 clamp".into(),
+        hertz_tui_law: "linear spring–dashpot (kelvin-voigt) with the F ≥ 0 clamp".into(),
         end_rule: law.end,
         approximation: Some(
             "MuJoCo's soft constraint read as a continuous-time linear spring–dashpot (constant impedance, no other forces)".into(),

@@ -64,6 +64,14 @@ pub fn other_rule_e(scene: &EngineScene, e_in: f64, end: EndRule) -> Result<f64,
     contact::solve(&law(scene, e_in, other), scene.mass, scene.v0).map(|r| r.e_out)
 }
 
+/// The id of this law in hertz-tui's law table (`--model`) under `end`.
+pub fn family_id(end: EndRule) -> &'static str {
+    match end {
+        EndRule::Clamp => "hertz-viscous",
+        EndRule::Tension => "hertz-viscous-tension",
+    }
+}
+
 /// How one engine of this family takes the law.
 pub struct Family {
     pub engine: &'static Engine,
@@ -125,7 +133,8 @@ pub fn translate(
             shown(gamma(scene, stored))
         ),
         hertz_tui_law: format!(
-            "Hertz with Tsuji's viscous damping (hertz-viscous), β = {}, {}",
+            "Hertz with Tsuji's viscous damping ({}), β = {}, {}",
+            family_id(family.end),
             shown(beta(stored)),
             family.end.describe()
         ),
