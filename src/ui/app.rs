@@ -11,7 +11,6 @@ use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::study::stability::critical_step;
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 
-use super::engine_panel::EnginePanel;
 use super::field::{self, Draft, Field, Section};
 use super::marker::MarkerStyle;
 use super::picker::Picker;
@@ -71,7 +70,8 @@ pub enum Mode {
     Normal,
     Editing(Editor),
     Help,
-    Engine(EnginePanel),
+    /// The engine panel (`t`).
+    Engine(super::engine_panel::EnginePanel),
     Picker(Picker),
     Prompt(Prompt),
 }

@@ -5,6 +5,7 @@ use crate::format::translation::render;
 use crate::model::Scene;
 use crate::model::engine::{self, ENGINES};
 
+use super::action::Action;
 use super::field::Nudge;
 
 /// The open panel: which engine, how far scrolled, and its text (or why there is none).
@@ -42,6 +43,18 @@ impl EnginePanel {
             Nudge::Down => (self.index + n - 1) % n,
         };
         EnginePanel::new(index, scene)
+    }
+
+    /// The panel after `action`: ← → another engine, ↑ ↓ scroll; `None` closes it (Esc, q, t).
+    pub fn update(mut self, action: Action, scene: Option<&Scene>) -> Option<Self> {
+        match action {
+            Action::Cancel => return None,
+            Action::Nudge(direction) => self = self.step(direction, scene),
+            Action::Up => self.scroll_by(false),
+            Action::Down => self.scroll_by(true),
+            _ => {}
+        }
+        Some(self)
     }
 
     /// Scrolls by one line, within the text.

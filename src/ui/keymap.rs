@@ -77,18 +77,18 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
             KeyCode::Esc => Some(Action::Cancel),
             _ => to_input_request(event).map(Action::Input),
         },
-        Mode::Help => Some(match key.code {
-            KeyCode::Char('q') | KeyCode::Char('?') | KeyCode::Esc | KeyCode::Enter => {
-                Action::Cancel
-            }
-            _ => return None,
-        }),
         Mode::Engine(_) => Some(match key.code {
             KeyCode::Left | KeyCode::Char('h') => Action::Nudge(Nudge::Down),
             KeyCode::Right | KeyCode::Char('l') => Action::Nudge(Nudge::Up),
             KeyCode::Up | KeyCode::Char('k') => Action::Up,
             KeyCode::Down | KeyCode::Char('j') => Action::Down,
             KeyCode::Esc | KeyCode::Char('q') | KeyCode::Char('t') => Action::Cancel,
+            _ => return None,
+        }),
+        Mode::Help => Some(match key.code {
+            KeyCode::Char('q') | KeyCode::Char('?') | KeyCode::Esc | KeyCode::Enter => {
+                Action::Cancel
+            }
             _ => return None,
         }),
         Mode::Picker(_) => Some(match key.code {
@@ -119,10 +119,10 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char(']') => Action::FocusModel(Nudge::Up),
         KeyCode::Char('c') => Action::CycleChart,
         KeyCode::Char('?') => Action::Help,
+        KeyCode::Char('t') => Action::Engines,
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,
-        KeyCode::Char('t') => Action::Engines,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

@@ -12,7 +12,6 @@ pub mod app;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
-pub mod engine_panel;
 pub mod export;
 pub mod field;
 pub mod keymap;
@@ -36,6 +35,9 @@ pub mod update;
 mod update_tabs;
 pub mod worker;
 pub mod wp_plot;
+
+/// The engine panel's state (`t`: a simulation engine's parameters for the scene).
+pub mod engine_panel;
 
 pub use marker::MarkerStyle;
 

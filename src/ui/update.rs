@@ -10,7 +10,6 @@ use crate::model::scene_key::BodyIndex;
 
 use super::action::Action;
 use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
-use super::engine_panel::EnginePanel;
 use super::export;
 use super::field::{Field, Nudge};
 use super::picker::{EntryKind, Picker};
@@ -42,25 +41,17 @@ fn transition(app: &mut App, action: Action) {
                         app.mode = Mode::Help;
                     }
                 }
-                Mode::Engine(panel) => engine_panel(app, panel, action),
+                Mode::Engine(panel) => {
+                    let scene = app.valid.as_ref().map(|v| &v.scene);
+                    if let Some(panel) = panel.update(action, scene) {
+                        app.mode = Mode::Engine(panel);
+                    }
+                }
                 Mode::Picker(picker) => picking(app, picker, action),
                 Mode::Prompt(prompt) => prompting(app, prompt, action),
             }
         }
     }
-}
-
-/// The engine panel: ← → another engine, ↑ ↓ scroll, Esc closes.
-fn engine_panel(app: &mut App, mut panel: EnginePanel, action: Action) {
-    let scene = app.valid.as_ref().map(|v| &v.scene);
-    match action {
-        Action::Cancel => return,
-        Action::Nudge(direction) => panel = panel.step(direction, scene),
-        Action::Up => panel.scroll_by(false),
-        Action::Down => panel.scroll_by(true),
-        _ => {}
-    }
-    app.mode = Mode::Engine(panel);
 }
 
 fn solved(app: &mut App, report: Report) {
@@ -130,7 +121,7 @@ fn normal(app: &mut App, action: Action) {
         Action::Help => app.mode = Mode::Help,
         Action::Engines => {
             let scene = app.valid.as_ref().map(|v| &v.scene);
-            app.mode = Mode::Engine(EnginePanel::new(0, scene));
+            app.mode = Mode::Engine(super::engine_panel::EnginePanel::new(0, scene));
         }
         Action::Presets => {
             let mut picker = Picker::new(&app.registry);

@@ -3,7 +3,6 @@
 mod chart;
 mod common;
 mod editable;
-mod engine;
 mod form;
 mod graph;
 mod help;
@@ -19,6 +18,9 @@ mod sweep;
 mod tabs;
 mod too_small;
 mod work_precision;
+
+/// The engine panel overlay.
+mod engine;
 
 use ratatui::Frame;
 
