@@ -1,9 +1,10 @@
 //! Text shared by the command line and the explorer: numbers in engineering notation
-//! ([`engineering`], [`significant`], [`scientific`], [`round_trip`]) and the trajectory CSV
-//! ([`csv`]). Neither `cli` nor `ui` keeps its own copy.
+//! ([`engineering`], [`significant`], [`scientific`], [`round_trip`]), the trajectory CSV
+//! ([`csv`]) and an engine translation ([`translation`]). Neither `cli` nor `ui` keeps its own copy.
 
 pub mod csv;
 mod number;
+pub mod translation;
 
 pub use number::{
     ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, NOT_A_NUMBER, PICO, Prefix,

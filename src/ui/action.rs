@@ -54,6 +54,8 @@ pub enum Action {
     /// Shows a view: the explorer or a study.
     Tab(Tab),
     Help,
+    /// Opens the engine panel: the scene's contact parameters for a simulation engine.
+    Engines,
     Presets,
     Save,
     Export,

@@ -85,6 +85,8 @@ pub enum Mode {
     Normal,
     Editing(Editor),
     Help,
+    /// The engine panel (`t`).
+    Engine(super::engine_panel::EnginePanel),
     Picker(Picker),
     Prompt(Prompt),
     Confirm(Confirm),

@@ -102,6 +102,14 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
             KeyCode::Esc => Some(Action::Cancel),
             _ => to_input_request(event).map(Action::Input),
         },
+        Mode::Engine(_) => Some(match key.code {
+            KeyCode::Left | KeyCode::Char('h') => Action::Nudge(Nudge::Down),
+            KeyCode::Right | KeyCode::Char('l') => Action::Nudge(Nudge::Up),
+            KeyCode::Up | KeyCode::Char('k') => Action::Up,
+            KeyCode::Down | KeyCode::Char('j') => Action::Down,
+            KeyCode::Esc | KeyCode::Char('q') | KeyCode::Char('t') => Action::Cancel,
+            _ => return None,
+        }),
         Mode::Help => Some(match key.code {
             KeyCode::Char('q') | KeyCode::Char('?') | KeyCode::Esc | KeyCode::Enter => {
                 Action::Cancel
@@ -156,6 +164,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('c') => Action::CycleChart,
         KeyCode::Char('C') => Action::ToggleCalibration,
         KeyCode::Char('?') => Action::Help,
+        KeyCode::Char('t') => Action::Engines,
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,

@@ -42,6 +42,9 @@ mod update_tabs;
 pub mod worker;
 pub mod wp_plot;
 
+/// The engine panel's state (`t`: a simulation engine's parameters for the scene).
+pub mod engine_panel;
+
 pub use marker::MarkerStyle;
 
 use color_eyre::eyre::WrapErr;

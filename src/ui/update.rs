@@ -64,6 +64,12 @@ fn transition(app: &mut App, action: Action) {
                         app.mode = Mode::Help;
                     }
                 }
+                Mode::Engine(panel) => {
+                    let scene = app.valid.as_ref().map(|v| &v.scene);
+                    if let Some(panel) = panel.update(action, scene) {
+                        app.mode = Mode::Engine(panel);
+                    }
+                }
                 Mode::Picker(picker) => picking(app, picker, action),
                 Mode::Prompt(prompt) => prompting(app, prompt, action),
                 Mode::Confirm(confirm) => confirming(app, confirm, action),
@@ -171,6 +177,10 @@ fn normal(app: &mut App, action: Action) {
         Action::CycleChart => app.chart = app.chart.next(),
         Action::ToggleCalibration => app.toggle_calibration(),
         Action::Help => app.mode = Mode::Help,
+        Action::Engines => {
+            let scene = app.valid.as_ref().map(|v| &v.scene);
+            app.mode = Mode::Engine(super::engine_panel::EnginePanel::new(0, scene));
+        }
         Action::Presets => {
             let mut picker = Picker::new(&app.registry);
             if let Some(preset) = &app.preset {

@@ -469,3 +469,45 @@ fn every_engine_reaches_the_request_on_every_scene() {
         }
     }
 }
+
+#[test]
+fn the_ends_of_the_restitution_range() {
+    // e = 1: no damping where the engine can express it; MuJoCo's solref form always damps and
+    // LAMMPS's Tsuji polynomial never reaches α = 0.
+    let elastic = with(fig5(), 0.3, 1.0);
+    for id in [
+        "drake", "simbody", "chrono", "liggghts", "lammps", "yade", "adams",
+    ] {
+        let t = translate(id, &elastic);
+        assert!(
+            (t.realised.e_out - 1.0).abs() < 1e-8,
+            "{id}: {}",
+            t.realised.e_out
+        );
+    }
+    for id in ["mujoco", "lammps-tsuji"] {
+        let err = engine::translate(id, &elastic).unwrap_err();
+        assert!(
+            matches!(err, EngineError::Unreachable { .. }),
+            "{id}: {err}"
+        );
+    }
+    // e = 0.02: the Hunt–Crossley root sits closer to its pole than double precision resolves
+    // and still realises e; the clamped Tsuji law cannot go below ≈ 0.136 at any input.
+    let plastic = with(fig5(), 0.3, 0.02);
+    for id in ["drake", "simbody", "lammps", "adams", "mujoco"] {
+        let t = translate(id, &plastic);
+        assert!(
+            (t.realised.e_out - 0.02).abs() < 1e-8,
+            "{id}: {}",
+            t.realised.e_out
+        );
+    }
+    for id in ["chrono", "liggghts", "yade"] {
+        let err = engine::translate(id, &plastic).unwrap_err().to_string();
+        assert!(
+            err.contains("cannot be reached") && err.contains("[0.136"),
+            "{id}: {err}"
+        );
+    }
+}

@@ -566,3 +566,29 @@ fn extreme_values_give_short_tick_labels() {
         }
     }
 }
+
+#[test]
+fn engine_panel_shows_the_translation_and_cycles_engines() {
+    let mut app = app();
+    press(&mut app, KeyCode::Char('t'));
+    let screen = text(render(&app, 120, 40).backend().buffer());
+    for expected in [
+        "Engine 1/9 · drake",
+        "point_contact_stiffness = 8.063860624e7 N/m",
+        "e_out                 0.6 (requested 0.6)",
+    ] {
+        assert!(screen.contains(expected), "{expected}:\n{screen}");
+    }
+    press(&mut app, KeyCode::Right);
+    let screen = text(render(&app, 120, 40).backend().buffer());
+    assert!(screen.contains("Engine 2/9 · simbody"), "{screen}");
+    press(&mut app, KeyCode::Down);
+    let scrolled = text(render(&app, 120, 40).backend().buffer());
+    assert!(
+        !scrolled.contains("Simbody / OpenSim (HuntCrossleyForce) —"),
+        "{scrolled}"
+    );
+    press(&mut app, KeyCode::Esc);
+    let screen = text(render(&app, 120, 40).backend().buffer());
+    assert!(!screen.contains("Engine 2/9"), "closed:\n{screen}");
+}

@@ -78,7 +78,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         "With a fixed c_max and d, e depends on v₀ (see e(v₀)).".into(),
     ];
     let fragments = vec![Fragment {
-        title: "Adams/Solver SFORCE (translational, along the contact normal)",
+        title: "Adams/Solver SFORCE function (translational, along the contact normal; I, J your markers, x1 the marker distance at first touch)",
         language: "text",
         text: format!(
             "FUNCTION = IMPACT(DZ(I,J,J), VZ(I,J,J,J), x1, {}, {}, {}, {})",

@@ -19,6 +19,11 @@ pub fn hunt_crossley_chi(e: f64) -> f64 {
     // root 3(1 − e²)/(2(1 + e³)) lies where g < 0 for every e in (0, 1).
     let lo = 0.375 * (1.0 - e * e) / (1.0 + e * e * e);
     let hi = (1.0 - f64::EPSILON) / e;
+    // Below e ≈ 0.03 the root lies within (1 + χ)·e^{−χ(1+e)} < ε of the pole 1/e: g(hi) < 0 and
+    // the largest representable χ below the pole is the root to double precision.
+    if g(hi) <= 0.0 {
+        return hi;
+    }
     brent(g, lo, hi).unwrap_or(f64::NAN)
 }
 
@@ -29,6 +34,9 @@ pub fn beta(e: f64) -> f64 {
     l / (l * l + PI * PI).sqrt()
 }
 
+/// How close an end of the damping range must come to the target to be taken as is.
+const END_TOLERANCE: f64 = 1e-10;
+
 /// The parameter θ in [lo, hi] at which `e_of(θ)` equals `target`, by Brent's method on the
 /// realised restitution (monotone in θ). Unreachable targets name the range the engine spans.
 pub fn solve_for_restitution(
@@ -38,7 +46,16 @@ pub fn solve_for_restitution(
     hi: f64,
     e_of: impl Fn(f64) -> Result<f64, EngineError>,
 ) -> Result<f64, EngineError> {
-    let (e_lo, e_hi) = (e_of(lo)?, e_of(hi)?);
+    // An end that realises the target to the solver's accuracy is the answer (e = 1 with no
+    // damping comes out 1 − 1e-12 from the integrator); `hi` first, the cheap end.
+    let e_hi = e_of(hi)?;
+    if (e_hi - target).abs() <= END_TOLERANCE {
+        return Ok(hi);
+    }
+    let e_lo = e_of(lo)?;
+    if (e_lo - target).abs() <= END_TOLERANCE {
+        return Ok(lo);
+    }
     let (e_min, e_max) = (e_lo.min(e_hi), e_lo.max(e_hi));
     if !(e_min..=e_max).contains(&target) {
         return Err(EngineError::Unreachable {

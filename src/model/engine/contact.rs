@@ -115,9 +115,18 @@ pub struct EngineImpact {
 const RTOL: f64 = 1e-12;
 
 /// Solves the impact of `law` on reduced mass `mass` hitting at `v0`: the exact solution for the
-/// Hunt–Crossley form (which never turns tensile, so either end rule gives it), else DOP853 at
-/// rtol 1e-12 in two phases joined at maximum compression.
+/// Hunt–Crossley form (which never turns tensile, so either end rule gives it) where it comes out
+/// finite, else DOP853 at rtol 1e-12 in two phases joined at maximum compression.
 pub fn solve(law: &ContactLaw, mass: f64, v0: f64) -> Result<EngineImpact, EngineError> {
+    match exact(law, mass, v0)? {
+        Some(impact) => Ok(impact),
+        None => integrate(law, mass, v0),
+    }
+}
+
+/// The exact impact of the Hunt–Crossley form; `None` for other laws or where the closed form
+/// loses finiteness (χ near 1/e for e → 0).
+fn exact(law: &ContactLaw, mass: f64, v0: f64) -> Result<Option<EngineImpact>, EngineError> {
     if let Damping::HuntCrossley { alpha } = law.damping {
         let params = ImpactParams {
             mass,
@@ -127,19 +136,18 @@ pub fn solve(law: &ContactLaw, mass: f64, v0: f64) -> Result<EngineImpact, Engin
             plastic_indentation: 0.0,
         };
         params.validate()?;
-        let exact = hysteresis(&params, alpha, RTOL)
-            .filter(|x| x.is_valid())
-            .ok_or(EngineError::NonFinite)?;
-        return Ok(EngineImpact {
-            e_out: exact.v_out / v0,
-            f_max: exact.f_max,
-            t_contact: exact.t_contact,
-            x_max: exact.x_max,
-            x_residual: exact.x_residual,
-            dt_stable: stable_step(law, mass, exact.x_max),
-        });
+        return Ok(hysteresis(&params, alpha, RTOL)
+            .filter(|x| x.is_valid() && x.t_contact > 0.0 && x.v_out > 0.0)
+            .map(|exact| EngineImpact {
+                e_out: exact.v_out / v0,
+                f_max: exact.f_max,
+                t_contact: exact.t_contact,
+                x_max: exact.x_max,
+                x_residual: exact.x_residual,
+                dt_stable: stable_step(law, mass, exact.x_max),
+            }));
     }
-    integrate(law, mass, v0)
+    Ok(None)
 }
 
 /// 2/ω_max, ω_max² = ∂F/∂x(x_max)/m.
@@ -179,6 +187,9 @@ fn integrate(law: &ContactLaw, mass: f64, v0: f64) -> Result<EngineImpact, Engin
         rtol: RTOL,
         atol: 1e-14,
         t_max: 1e3,
+        // Well inside the elastic contact (≈ 3 in these units): Hairer's starting-step guess sees
+        // F(0, v₀) = 0 and overshoots into stiff damping.
+        h_initial: Some(1e-4),
         max_steps: 1_000_000,
         ..ode::Options::default()
     };

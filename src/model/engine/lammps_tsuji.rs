@@ -87,7 +87,8 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(alpha(parameter.value) * scale(scene))
         ),
         hertz_tui_law: format!(
-            "Hertz with Tsuji's viscous damping (hertz-viscous), α = {}, {}",
+            "Hertz with Tsuji's viscous damping ({}), α = {}, {}",
+            tsuji::family_id(end),
             shown(alpha(parameter.value)),
             end.describe()
         ),

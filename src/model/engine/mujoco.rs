@@ -57,6 +57,13 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         contact::solve(&law(scene.mass, omega, zeta), scene.mass, scene.v0).map(|r| r.e_out)
     };
     let zeta = solve_for_restitution(ENGINE.id, scene.restitution, 0.0, 50.0, e_of)?;
+    if zeta <= 0.0 {
+        return Err(EngineError::Unreachable {
+            engine: ENGINE.id,
+            requested: scene.restitution,
+            reason: "solref (timeconst, dampratio) always damps (b = 2/timeconst); give solref = (−stiffness, 0) for an elastic contact".into(),
+        });
+    }
     let dampratio = Parameter::new(
         "dampratio",
         zeta,
@@ -135,7 +142,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             timeconst.text(),
             dampratio.text()
         ),
-        hertz_tui_law: "linear spring–dashpot (Kelvin–Voigt) with the F ≥ 0 clamp".into(),
+        hertz_tui_law: "linear spring–dashpot (kelvin-voigt) with the F ≥ 0 clamp".into(),
         end_rule: law.end,
         approximation: Some(
             "MuJoCo's soft constraint read as a continuous-time linear spring–dashpot (constant impedance, no other forces)".into(),

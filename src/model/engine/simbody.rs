@@ -88,7 +88,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             ),
         },
         Fragment {
-            title: "OpenSim model XML (in <ForceSet><objects>)",
+            title: "OpenSim model XML (in <ForceSet><objects>; name your two ContactGeometry objects in <geometry>)",
             language: "xml",
             text: format!(
                 "<HuntCrossleyForce name=\"impact\">\n  <HuntCrossleyForce::ContactParametersSet name=\"contact_parameters\">\n    <objects>\n      <HuntCrossleyForce::ContactParameters>\n        <geometry>body1_contact body2_contact</geometry>\n        <stiffness>{s}</stiffness>\n        <dissipation>{c}</dissipation>\n        <static_friction>0</static_friction>\n        <dynamic_friction>0</dynamic_friction>\n        <viscous_friction>0</viscous_friction>\n      </HuntCrossleyForce::ContactParameters>\n    </objects>\n  </HuntCrossleyForce::ContactParametersSet>\n</HuntCrossleyForce>",

@@ -30,6 +30,14 @@ pub fn law(scene: &EngineScene, e_in: f64, end: EndRule) -> ContactLaw {
     law_with(scene, gamma(scene, e_in), end)
 }
 
+/// The smallest input restitution tried under the clamp, which always ends contact early:
+/// Chrono floors its input at machine ε (ln ε).
+const SMALLEST_CLAMPED_INPUT: f64 = 1e-15;
+
+/// The smallest input tried with tension allowed: there the realised e is the input, and the
+/// return to x = 0 slows without bound as e → 0 (the damper dominates k·x^{3/2} near x = 0).
+const SMALLEST_TENSILE_INPUT: f64 = 1e-6;
+
 /// The input restitution whose realised e at v₀ is the scene's, under `end`.
 pub fn input_restitution(
     engine: &'static str,
@@ -37,7 +45,11 @@ pub fn input_restitution(
     end: EndRule,
 ) -> Result<f64, EngineError> {
     scene.require_point_contact(engine)?;
-    solve_for_restitution(engine, scene.restitution, 1e-6, 1.0, |e_in| {
+    let lo = match end {
+        EndRule::Clamp => SMALLEST_CLAMPED_INPUT,
+        EndRule::Tension => SMALLEST_TENSILE_INPUT,
+    };
+    solve_for_restitution(engine, scene.restitution, lo, 1.0, |e_in| {
         contact::solve(&law(scene, e_in, end), scene.mass, scene.v0).map(|r| r.e_out)
     })
 }
@@ -50,6 +62,14 @@ pub fn other_rule_e(scene: &EngineScene, e_in: f64, end: EndRule) -> Result<f64,
         EndRule::Tension => EndRule::Clamp,
     };
     contact::solve(&law(scene, e_in, other), scene.mass, scene.v0).map(|r| r.e_out)
+}
+
+/// The id of this law in hertz-tui's law table (`--model`) under `end`.
+pub fn family_id(end: EndRule) -> &'static str {
+    match end {
+        EndRule::Clamp => "hertz-viscous",
+        EndRule::Tension => "hertz-viscous-tension",
+    }
 }
 
 /// How one engine of this family takes the law.
@@ -113,7 +133,8 @@ pub fn translate(
             shown(gamma(scene, stored))
         ),
         hertz_tui_law: format!(
-            "Hertz with Tsuji's viscous damping (hertz-viscous), β = {}, {}",
+            "Hertz with Tsuji's viscous damping ({}), β = {}, {}",
+            family_id(family.end),
             shown(beta(stored)),
             family.end.describe()
         ),

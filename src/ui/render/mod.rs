@@ -20,6 +20,9 @@ pub(crate) mod tabs;
 mod too_small;
 mod work_precision;
 
+/// The engine panel overlay.
+mod engine;
+
 use ratatui::Frame;
 
 use super::app::{App, Mode};
@@ -43,6 +46,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
     status::render(frame, screen.status, app);
     match &app.mode {
         Mode::Help => help::render(frame, area, app),
+        Mode::Engine(panel) => engine::render(frame, area, app, panel),
         Mode::Picker(picker) => picker::render(frame, area, app, picker),
         Mode::Prompt(prompt) => prompt::render(frame, screen.status, app, prompt),
         Mode::Confirm(confirm) => prompt::render_question(frame, screen.status, app, confirm),

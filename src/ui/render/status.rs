@@ -61,6 +61,7 @@ fn hints(mode: &Mode, tab: Tab) -> &'static [(&'static str, &'static str)] {
         ],
         (Mode::Editing(_), _) => &[("Enter", "commit"), ("Esc", "cancel")],
         (Mode::Help, _) => &[("Esc", "close")],
+        (Mode::Engine(_), _) => &[("←→", "engine"), ("↑↓", "scroll"), ("Esc", "close")],
         (Mode::Picker(_), _) => &[
             ("Enter", "load / apply"),
             ("1 2", "material to body"),
