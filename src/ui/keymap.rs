@@ -48,6 +48,7 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ),
     ("s e", "save the scene (name or path.toml) · export as CSV"),
     ("m", "mouse on / off (off: the terminal selects text)"),
+    ("t", "engine parameters (translate): ← → engine, Esc closes"),
     ("paste", "opens the field under the cursor with the text"),
     (
         "in 3",
