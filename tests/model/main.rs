@@ -6,6 +6,7 @@ mod ode_common;
 
 mod calibration;
 mod engines;
+mod engines_vs_laws;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
