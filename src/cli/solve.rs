@@ -6,6 +6,7 @@ use super::args::{SceneSelection, SolveArgs};
 use super::error::CliError;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
+use crate::model::warnings::{ModelWarning, impact_warnings, scene_warnings};
 use crate::model::{ForceModel, Quasistatic, Scene};
 
 /// Everything `solve` computed; serialized as the JSON output.
@@ -14,6 +15,25 @@ pub struct SolveReport {
     pub scene: Scene,
     pub quasistatic: Quasistatic,
     pub impacts: Vec<ImpactRow>,
+    /// Results to read with care: the scene outside Hertz's hypotheses, an ill-conditioned number.
+    pub warnings: Vec<WarningRow>,
+}
+
+/// One [`ModelWarning`], with its text.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WarningRow {
+    pub message: String,
+    #[serde(flatten)]
+    pub warning: ModelWarning,
+}
+
+impl From<ModelWarning> for WarningRow {
+    fn from(warning: ModelWarning) -> Self {
+        WarningRow {
+            message: warning.to_string(),
+            warning,
+        }
+    }
 }
 
 /// One force model's impact, or the reason it failed (`error`); numbers are SI.
@@ -125,10 +145,21 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
     let quasistatic = scene.quasistatic()?;
     let params = scene.impact_params(&quasistatic);
     let options = solve_options(args);
+    let mut warnings: Vec<WarningRow> = scene_warnings(&scene.pair()?, &quasistatic)
+        .into_iter()
+        .map(WarningRow::from)
+        .collect();
     let impacts = models_or_all(&args.models)
         .into_iter()
         .map(|model| {
             let result = impact::solve_impact(model, &params, &options);
+            if let Ok(solution) = &result {
+                warnings.extend(
+                    impact_warnings(&params, &solution.summary)
+                        .into_iter()
+                        .map(WarningRow::from),
+                );
+            }
             ImpactRow::new(model, &options, result.as_ref())
         })
         .collect();
@@ -136,6 +167,7 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
         scene,
         quasistatic,
         impacts,
+        warnings,
     })
 }
 

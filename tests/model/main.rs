@@ -4,6 +4,7 @@
 #[allow(dead_code)]
 mod ode_common;
 
+mod dry_friction_cutoff;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
@@ -17,3 +18,4 @@ mod ode_stability;
 mod presets;
 mod quasistatic_props;
 mod tables;
+mod tolerance_promise;
