@@ -48,6 +48,10 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             }
         },
         Command::Bench(args) => bench::run(args, &registry)?,
+        Command::Sweep(args) if args.format == Format::Csv => {
+            sweep::stream_csv(args, &registry, out)?;
+            return Ok(out.flush()?);
+        }
         Command::Sweep(args) => sweep::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
