@@ -55,8 +55,10 @@ pub(super) fn solve<L: ForceLaw>(
     sc: &Scales,
     opts: &SolveOptions,
 ) -> Result<ImpactSolution, ImpactError> {
-    // Quadratures of the exact solutions aim two digits below the requested tolerance.
-    let quad_rtol = (opts.rtol * 1e-2).max(1e-15);
+    // Quadratures of the exact solutions aim at the requested tolerance: their node counts keep
+    // the times within it (exact::hysteresis and exact::dry_friction test that), far inside the
+    // 100·rtol promise.
+    let quad_rtol = opts.rtol.max(1e-15);
     if let Some(exact) = law.exact(quad_rtol).filter(ExactImpact::is_valid) {
         let rtol = opts.rtol.clamp(1e-14, CURVE_RTOL);
         let curve = RunOptions {
