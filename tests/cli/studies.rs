@@ -14,13 +14,18 @@ fn run(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
-fn stdout_json(output: &Output) -> Value {
+/// The stdout of a successful run (else the test fails with its stderr).
+fn stdout_text(output: &Output) -> String {
     assert!(
         output.status.success(),
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
-    serde_json::from_slice(&output.stdout).expect("stdout is JSON")
+    String::from_utf8(output.stdout.clone()).expect("stdout is UTF-8")
+}
+
+fn stdout_json(output: &Output) -> Value {
+    serde_json::from_str(&stdout_text(output)).expect("stdout is JSON")
 }
 
 const FIG5: &str = "fig5-steel-sphere-r10-plate";
@@ -157,12 +162,7 @@ fn sweep_csv_rows_follow_the_hertz_scaling_in_order() {
         "--model",
         "hunt-crossley",
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    let text = String::from_utf8(output.stdout).unwrap();
+    let text = stdout_text(&output);
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     assert_eq!(header[0], "impact.v0");
@@ -291,12 +291,7 @@ fn a_streamed_sweep_keeps_every_row_in_order_across_chunks() {
         "--model",
         "quasistatic",
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    let text = String::from_utf8(output.stdout).unwrap();
+    let text = stdout_text(&output);
     let values: Vec<f64> = text
         .lines()
         .skip(1)

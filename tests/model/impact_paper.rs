@@ -17,7 +17,7 @@ use hertz_tui::model::ode::Method;
 
 /// The caption of Fig. 5: n = 1.5, m = 0.033 kg, k = 1.465e10 N/m^1.5, v₀ = 0.3 m/s,
 /// x_pl = 2.3e-6 m, e = 0.6.
-fn fig5(mass: f64) -> ImpactParams {
+pub(crate) fn fig5(mass: f64) -> ImpactParams {
     ImpactParams {
         mass,
         law: PowerLaw {

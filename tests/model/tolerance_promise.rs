@@ -13,6 +13,8 @@ use hertz_tui::model::ode::Method;
 use hertz_tui::model::warnings::{ModelWarning, impact_warnings};
 use hertz_tui::model::{ForceModel, ImpactParams, PowerLaw};
 
+use crate::impact_paper::fig5;
+
 const MODELS: [ForceModel; 4] = [
     ForceModel::DryFriction,
     ForceModel::Proposed,
@@ -146,16 +148,7 @@ fn every_reported_number_is_within_100_rtol_on_random_scenes() {
 
 #[test]
 fn radau5_does_not_lose_accuracy_as_rtol_tightens() {
-    let p = ImpactParams {
-        mass: 0.033,
-        law: PowerLaw {
-            k: 1.465e10,
-            n: 1.5,
-        },
-        v0: 0.3,
-        restitution: 0.6,
-        plastic_indentation: 2.3e-6,
-    };
+    let p = fig5(0.033);
     let t = truth(ForceModel::Proposed, &p);
     let mut last = f64::INFINITY;
     for k in [8, 10, 12] {
@@ -176,18 +169,12 @@ fn radau5_does_not_lose_accuracy_as_rtol_tightens() {
 #[test]
 fn a_grazing_end_of_the_proposed_model_is_flagged() {
     // e = 0.05 with x_pl = x_e/2: the bodies creep apart along F ≈ 0 (e_out ≈ 0.01).
-    let law = PowerLaw {
-        k: 1.465e10,
-        n: 1.5,
-    };
-    let (mass, v0) = (0.033, 0.3);
-    let x_e = law.max_approach(mass, v0);
+    let fig5 = fig5(0.033);
+    let x_e = fig5.law.max_approach(fig5.mass, fig5.v0);
     let p = ImpactParams {
-        mass,
-        law,
-        v0,
         restitution: 0.05,
         plastic_indentation: 0.5 * x_e,
+        ..fig5
     };
     let s = truth(ForceModel::Proposed, &p);
     let warnings = impact_warnings(&p, &s);
@@ -197,10 +184,5 @@ fn a_grazing_end_of_the_proposed_model_is_flagged() {
         s.e_out
     );
     // The Fig. 5 scene is well-conditioned.
-    let fig5 = ImpactParams {
-        restitution: 0.6,
-        plastic_indentation: 2.3e-6,
-        ..p
-    };
     assert!(impact_warnings(&fig5, &truth(ForceModel::Proposed, &fig5)).is_empty());
 }

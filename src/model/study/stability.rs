@@ -179,28 +179,7 @@ pub fn largest_bounded_step(
     let omega = peak_angular_frequency(params);
     let bounded =
         |dt: f64| Verdict::judge(&solve_fixed(model, params, method, dt), reference).is_bounded();
-    let mut lo = 1.0 / (32.0 * omega);
-    if !bounded(lo) {
-        return None;
-    }
-    let growth = 2f64.powf(0.125);
-    let mut hi = lo * growth;
-    while bounded(hi) {
-        lo = hi;
-        hi *= growth;
-        if hi >= reference.t_contact {
-            return Some(lo);
-        }
-    }
-    for _ in 0..20 {
-        let mid = (lo * hi).sqrt();
-        if bounded(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(lo)
+    scan_up(1.0 / (32.0 * omega), reference.t_contact, 20, bounded)
 }
 
 /// The accuracy the measured step of [`StepBound`] keeps: the worst relative error of x_max, F_max,
@@ -246,20 +225,29 @@ pub fn largest_accurate_step(
 ) -> Option<f64> {
     let omega = peak_angular_frequency(params);
     let accurate = |dt: f64| step_error(model, params, reference, method, dt) <= tolerance;
-    let mut lo = 1.0 / (1024.0 * omega);
-    if !accurate(lo) {
+    // Within one scan factor: bisection to 0.1 % of the step.
+    scan_up(1.0 / (1024.0 * omega), reference.t_contact, 7, accurate)
+}
+
+/// The largest step passing `ok`, scanning up from `start` by 2^{1/8} until the first step that
+/// fails (the last passing one if the scan reaches `limit`), then bisecting `bisections` times
+/// between the last pass and that failure; `None` if `start` fails.
+fn scan_up(start: f64, limit: f64, bisections: usize, ok: impl Fn(f64) -> bool) -> Option<f64> {
+    if !ok(start) {
         return None;
     }
     let growth = 2f64.powf(0.125);
-    let mut hi = lo * growth;
-    while accurate(hi) {
+    let (mut lo, mut hi) = (start, start * growth);
+    while ok(hi) {
         lo = hi;
         hi *= growth;
+        if hi >= limit {
+            return Some(lo);
+        }
     }
-    // Within one scan factor: bisection to 0.1 % of the step.
-    for _ in 0..7 {
+    for _ in 0..bisections {
         let mid = (lo * hi).sqrt();
-        if accurate(mid) {
+        if ok(mid) {
             lo = mid;
         } else {
             hi = mid;
