@@ -14,7 +14,7 @@ use crate::model::ode::Method;
 use crate::model::presets::Registry;
 use crate::model::study::reference::reference;
 use crate::model::study::stability::{
-    StepBound, peak_angular_frequency, stability_bound, step_bounds,
+    STEP_TOLERANCE, StepBound, peak_angular_frequency, stability_bound, step_bounds,
 };
 use crate::model::study::work_precision::{Setting, Timing, WorkPrecisionRow, work_precision};
 
@@ -65,10 +65,15 @@ pub struct StabilityRow {
     pub bound_h_omega: Option<f64>,
     /// bound/ω_max, s.
     pub theoretical_dt: Option<f64>,
-    /// Largest step at which the impact stays bounded, measured, s.
+    /// Worst relative error of x_max, F_max, t_c and v_out at theoretical_dt (null: infinite,
+    /// the solve failed there).
+    pub error_at_theoretical_dt: Option<f64>,
+    /// Largest step keeping those four errors within `tolerance`, measured, s.
     pub measured_dt: Option<f64>,
     /// measured_dt·ω_max.
     pub measured_h_omega: Option<f64>,
+    /// The tolerance of measured_dt.
+    pub tolerance: f64,
     /// ω_max = √(n·k·x_maxⁿ⁻¹/m), rad/s.
     pub omega_max: f64,
 }
@@ -79,8 +84,10 @@ impl From<&StepBound> for StabilityRow {
             method: b.method,
             bound_h_omega: stability_bound(b.method),
             theoretical_dt: b.theoretical_dt,
+            error_at_theoretical_dt: b.error_at_theoretical.filter(|e| e.is_finite()),
             measured_dt: b.measured_dt,
             measured_h_omega: b.measured_dt.map(|dt| dt * b.omega_max),
+            tolerance: b.tolerance,
             omega_max: b.omega_max,
         }
     }
@@ -208,6 +215,7 @@ fn stability_table(rows: &[StabilityRow], reference: &ImpactSummary, omega: f64)
             "method",
             "bound h·ω",
             "theoretical dt",
+            "error there",
             "measured dt",
             "measured h·ω",
         ]
@@ -220,29 +228,37 @@ fn stability_table(rows: &[StabilityRow], reference: &ImpactSummary, omega: f64)
             r.bound_h_omega
                 .map_or_else(|| "none (gains energy)".into(), |b| format!("{b:.3}")),
             cell(r.theoretical_dt, |dt| engineering(dt, "s")),
+            match (r.theoretical_dt, r.error_at_theoretical_dt) {
+                (None, _) => "—".into(),
+                (Some(_), None) => "fails".into(),
+                (Some(_), Some(e)) => format!("{:.2} %", 100.0 * e),
+            },
             cell(r.measured_dt, |dt| engineering(dt, "s")),
             cell(r.measured_h_omega, |h| format!("{h:.3}")),
         ]);
     }
     let header = format!(
-        "{}ω_max = √(n·k·x_maxⁿ⁻¹/m) = {} at the elastic x_max; \"measured\" is the largest step at which the\nimpact stays bounded (energy error < 50 % of ½mv₀²). One impact lasts only a few steps near the bound.\n\n",
+        "{}ω_max = √(n·k·x_maxⁿ⁻¹/m) = {} at the elastic x_max; \"error there\" is the worst relative error of\nx_max, F_max, t_c and v_out at the theoretical step; \"measured\" is the largest step keeping all four within\n{} % (every scanned step below it does too).\n\n",
         reference_line(reference),
         scientific(omega, "rad/s"),
+        100.0 * rows.first().map_or(STEP_TOLERANCE, |r| r.tolerance),
     );
     header + &columns(&table, "")
 }
 
 fn stability_csv(rows: &[StabilityRow]) -> String {
     let mut out = String::from(
-        "method,bound_h_omega,theoretical_dt,measured_dt,measured_h_omega,omega_max\n",
+        "method,bound_h_omega,theoretical_dt,error_at_theoretical_dt,measured_dt,measured_h_omega,tolerance,omega_max\n",
     );
     for r in rows {
         let fields = [
             r.method.to_string(),
             csv_cell(r.bound_h_omega),
             csv_cell(r.theoretical_dt),
+            csv_cell(r.error_at_theoretical_dt),
             csv_cell(r.measured_dt),
             csv_cell(r.measured_h_omega),
+            r.tolerance.to_string(),
             r.omega_max.to_string(),
         ];
         out.push_str(&fields.join(","));

@@ -54,6 +54,10 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             }
         },
         Command::Bench(args) => bench::run(args, &registry)?,
+        Command::Sweep(args) if args.format == Format::Csv => {
+            sweep::stream_csv(args, &registry, out)?;
+            return Ok(out.flush()?);
+        }
         Command::Sweep(args) => sweep::run(args, &registry)?,
         Command::Restitution(args) => restitution::run(args, &registry)?,
         Command::Translate(args) => translate::run(args, &registry)?,

@@ -27,6 +27,12 @@ pub fn render(report: &SolveReport) -> String {
         out.push('\n');
         out.push_str(&impact_section(&report.impacts));
     }
+    if !report.warnings.is_empty() {
+        out.push('\n');
+        for w in &report.warnings {
+            out.push_str(&format!("warning: {}\n", w.message));
+        }
+    }
     out
 }
 

@@ -9,6 +9,7 @@ use crate::model::force::Damping;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
 use crate::model::recommend::recommend;
+use crate::model::warnings::{ModelWarning, impact_warnings, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 
 /// Everything `solve` computed; serialized as the JSON output.
@@ -19,6 +20,25 @@ pub struct SolveReport {
     /// The simplest law the scene needs, the others that fit, and why in one line.
     pub recommendation: RecommendationRow,
     pub impacts: Vec<ImpactRow>,
+    /// Results to read with care: the scene outside Hertz's hypotheses, an ill-conditioned number.
+    pub warnings: Vec<WarningRow>,
+}
+
+/// One [`ModelWarning`], with its text.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WarningRow {
+    pub message: String,
+    #[serde(flatten)]
+    pub warning: ModelWarning,
+}
+
+impl From<ModelWarning> for WarningRow {
+    fn from(warning: ModelWarning) -> Self {
+        WarningRow {
+            message: warning.to_string(),
+            warning,
+        }
+    }
 }
 
 /// The model layer's recommendation as JSON reports it.
@@ -91,12 +111,20 @@ impl ImpactRow {
         params: &ImpactParams,
         requested: &SolveOptions,
         calibrate: bool,
+        warnings: &mut Vec<WarningRow>,
     ) -> Self {
         let (law, calibration) = match scene_or_calibrated(model, params, calibrate) {
             Ok(found) => found,
             Err(e) => return Self::from_result(model, params.restitution, requested, Err(&e)),
         };
         let result = impact::solve_law(&law, requested);
+        if let Ok(solution) = &result {
+            warnings.extend(
+                impact_warnings(params, &solution.summary)
+                    .into_iter()
+                    .map(WarningRow::from),
+            );
+        }
         let mut row = Self::from_result(model, params.restitution, requested, result.as_ref());
         row.damping = law.damping().map(DampingUsed::from);
         match calibration {
@@ -198,9 +226,13 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
     let quasistatic = scene.quasistatic()?;
     let params = scene.impact_params(&quasistatic);
     let options = solve_options(args);
+    let mut warnings: Vec<WarningRow> = scene_warnings(&scene.pair()?, &quasistatic)
+        .into_iter()
+        .map(WarningRow::from)
+        .collect();
     let impacts = models_or_all(&args.models)
         .into_iter()
-        .map(|model| ImpactRow::new(model, &params, &options, args.calibrate))
+        .map(|model| ImpactRow::new(model, &params, &options, args.calibrate, &mut warnings))
         .collect();
     let advice = recommend(&scene, &quasistatic);
     Ok(SolveReport {
@@ -212,6 +244,7 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
         scene,
         quasistatic,
         impacts,
+        warnings,
     })
 }
 

@@ -10,9 +10,13 @@ use super::solve::{load_scene, models_or_all};
 use super::units::engineering;
 use crate::format::csv;
 use crate::model::ForceModel;
+use crate::model::Scene;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
-use crate::model::study::sweep::{SweepRow, SweepSpec, sweep};
+use crate::model::study::sweep::{SweepRow, SweepSpec, check, sweep, sweep_point};
+use rayon::prelude::*;
+use std::fmt::Write as _;
+use std::io::Write;
 
 /// The JSON document of a sweep.
 #[derive(Debug, Serialize)]
@@ -24,8 +28,11 @@ pub struct SweepReport<'a> {
     pub rows: &'a [SweepRow],
 }
 
-/// Runs the sweep the arguments ask for and renders it.
-pub fn run(args: &SweepArgs, registry: &Registry) -> Result<String, CliError> {
+/// The scene, the sweep and its models the arguments ask for.
+fn prepare(
+    args: &SweepArgs,
+    registry: &Registry,
+) -> Result<(Scene, SweepSpec, Vec<ForceModel>), CliError> {
     let scene = load_scene(&args.source, registry)?;
     let defaults = SolveOptions::default();
     let models = models_or_all(&args.models);
@@ -42,21 +49,36 @@ pub fn run(args: &SweepArgs, registry: &Registry) -> Result<String, CliError> {
             ..defaults
         },
     };
-    let rows = sweep(&scene, &spec).map_err(|e| CliError::Usage(e.to_string()))?;
-    let param = args.param.path();
-    match args.format {
-        Format::Csv => Ok(csv(&param, &models, &rows)),
-        Format::Json => json(&SweepReport {
-            param,
-            unit: args.param.unit(),
-            rows: &rows,
-        }),
-        Format::Table => Ok(table(&param, args.param.unit(), &models, &rows)),
-    }
+    Ok((scene, spec, models))
 }
 
-fn number(value: Option<f64>) -> String {
-    value.map_or_else(String::new, |v| format!("{v:e}"))
+/// Runs the sweep the arguments ask for and renders it (CSV is streamed by [`stream_csv`]).
+pub fn run(args: &SweepArgs, registry: &Registry) -> Result<String, CliError> {
+    let table_or_json = |args: &SweepArgs| {
+        let (scene, spec, models) = prepare(args, registry)?;
+        let rows = sweep(&scene, &spec).map_err(|e| CliError::Usage(e.to_string()))?;
+        Ok::<_, CliError>((rows, models))
+    };
+    let param = args.param.path();
+    match args.format {
+        Format::Csv => {
+            let mut out = Vec::new();
+            stream_csv(args, registry, &mut out)?;
+            String::from_utf8(out).map_err(|e| CliError::Usage(e.to_string()))
+        }
+        Format::Json => {
+            let (rows, _) = table_or_json(args)?;
+            json(&SweepReport {
+                param,
+                unit: args.param.unit(),
+                rows: &rows,
+            })
+        }
+        Format::Table => {
+            let (rows, models) = table_or_json(args)?;
+            Ok(table(&param, args.param.unit(), &models, &rows))
+        }
+    }
 }
 
 /// The messages of a row's failures, `model: message` joined by `; `.
@@ -70,7 +92,45 @@ fn failures(row: &SweepRow) -> String {
     messages.join("; ")
 }
 
-fn csv(param: &str, models: &[ForceModel], rows: &[SweepRow]) -> String {
+/// Sweep points solved and formatted per chunk: the rows in flight are bounded by it, not by
+/// `--points` (a million-point sweep holds 16 Ki rows, a few MB, at a time).
+const CHUNK: usize = 16_384;
+
+/// Formatting buffers per worker thread: enough pieces per chunk for rayon to balance the load.
+const BUFFERS_PER_THREAD: usize = 4;
+
+/// `--format csv`, streamed: each chunk of points is solved and formatted in parallel, each worker
+/// into its own reused buffer, and the buffers are written in order.
+pub fn stream_csv(
+    args: &SweepArgs,
+    registry: &Registry,
+    out: &mut dyn Write,
+) -> Result<(), CliError> {
+    let (scene, spec, models) = prepare(args, registry)?;
+    let values = check(&scene, &spec).map_err(|e| CliError::Usage(e.to_string()))?;
+    out.write_all(csv_header(&args.param.path(), &models).as_bytes())?;
+    let pieces = BUFFERS_PER_THREAD * rayon::current_num_threads();
+    let mut buffers = vec![String::new(); pieces];
+    let piece = CHUNK.div_ceil(pieces);
+    for chunk in values.chunks(CHUNK) {
+        let used = chunk.len().div_ceil(piece);
+        chunk
+            .par_chunks(piece)
+            .zip(buffers.par_iter_mut())
+            .for_each(|(points, buffer)| {
+                buffer.clear();
+                for &value in points {
+                    csv_row(buffer, &sweep_point(&scene, &spec, value), &models);
+                }
+            });
+        for buffer in &buffers[..used] {
+            out.write_all(buffer.as_bytes())?;
+        }
+    }
+    Ok(())
+}
+
+fn csv_header(param: &str, models: &[ForceModel]) -> String {
     let mut header = vec![
         param.to_string(),
         "p_max".into(),
@@ -85,30 +145,40 @@ fn csv(param: &str, models: &[ForceModel], rows: &[SweepRow]) -> String {
         }
     }
     header.push("error".into());
-    let mut out = header.join(",") + "\n";
-    for row in rows {
-        let q = row.quasistatic;
-        let mut fields = vec![
-            format!("{:e}", row.value),
-            number(q.map(|q| q.p_max)),
-            number(q.and_then(|q| q.contact_radius)),
-            number(q.and_then(|q| q.half_width)),
-            number(q.map(|q| q.v_yield)),
-            number(q.map(|q| q.v_plastic)),
-        ];
-        for model in models {
-            let point = row.impacts.iter().find(|i| i.model == *model);
-            fields.push(number(point.and_then(|p| p.x_max)));
-            fields.push(number(point.and_then(|p| p.f_max)));
-            fields.push(number(point.and_then(|p| p.t_contact)));
-            fields.push(number(point.and_then(|p| p.v_out)));
-            fields.push(number(point.and_then(|p| p.e_out)));
-        }
-        fields.push(csv::field(&failures(row)));
-        out.push_str(&fields.join(","));
-        out.push('\n');
+    header.join(",") + "\n"
+}
+
+/// `value,` in Rust's `{:e}` (shortest round-trip), or just `,` for a missing number.
+fn push_number(out: &mut String, value: Option<f64>) {
+    if let Some(v) = value {
+        // Writing into a String cannot fail.
+        let _ = write!(out, "{v:e}");
     }
-    out
+    out.push(',');
+}
+
+/// One CSV row of `row` appended to `out`.
+fn csv_row(out: &mut String, row: &SweepRow, models: &[ForceModel]) {
+    let q = row.quasistatic;
+    push_number(out, Some(row.value));
+    push_number(out, q.map(|q| q.p_max));
+    push_number(out, q.and_then(|q| q.contact_radius));
+    push_number(out, q.and_then(|q| q.half_width));
+    push_number(out, q.map(|q| q.v_yield));
+    push_number(out, q.map(|q| q.v_plastic));
+    for model in models {
+        let point = row.impacts.iter().find(|i| i.model == *model);
+        push_number(out, point.and_then(|p| p.x_max));
+        push_number(out, point.and_then(|p| p.f_max));
+        push_number(out, point.and_then(|p| p.t_contact));
+        push_number(out, point.and_then(|p| p.v_out));
+        push_number(out, point.and_then(|p| p.e_out));
+    }
+    let failed = row.error.is_some() || row.impacts.iter().any(|i| i.error.is_some());
+    if failed {
+        out.push_str(&csv::field(&failures(row)));
+    }
+    out.push('\n');
 }
 
 fn table(param: &str, unit: &str, models: &[ForceModel], rows: &[SweepRow]) -> String {

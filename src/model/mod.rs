@@ -24,6 +24,7 @@ pub mod scene_file;
 pub mod scene_key;
 pub mod sphere;
 pub mod study;
+pub mod warnings;
 
 pub use body::{Body, Shape};
 pub use error::ModelError;

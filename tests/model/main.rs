@@ -5,6 +5,7 @@
 mod ode_common;
 
 mod calibration;
+mod dry_friction_cutoff;
 mod engines;
 mod engines_vs_laws;
 mod impact_crosscheck;
@@ -25,3 +26,4 @@ mod presets;
 mod quasistatic_props;
 mod scene_view;
 mod tables;
+mod tolerance_promise;

@@ -6,6 +6,7 @@
 
 pub mod dry_friction;
 pub mod elastic;
+pub mod gauss_jacobi;
 pub mod hysteresis;
 pub mod quadrature;
 pub mod special;

@@ -202,7 +202,8 @@ pub struct ImpactSolution {
 /// Integrates m·ẍ = −F(x, ẋ) from x = 0, ẋ = v₀ in two phases joined at maximum compression
 /// (ẋ = 0), until x = 0, or F = 0 for the proposed model and wherever a law would turn tensile
 /// (the compressive-only rule, see [`crate::model::force::law`]). `MethodChoice::Auto` reports the
-/// exact solution where one exists (curves by DOP853 at tight tolerance), else DOPRI5, or Radau5
+/// exact solution where one exists (curves by DOP853 at tight tolerance), else DOPRI5 (DOP853
+/// below rtol 1e-7), or Radau5
 /// when the scene is stiff. Failures are typed: invalid input, an integrator error (in seconds),
 /// energy growth beyond [`ENERGY_LIMIT`], or no separation within [`TIME_LIMIT_CONTACTS`] elastic
 /// contact times.

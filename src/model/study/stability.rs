@@ -7,6 +7,7 @@ use crate::model::impact::{
     ImpactError, ImpactSolution, ImpactSummary, MethodChoice, SolveOptions, solve_impact,
 };
 use crate::model::ode::{Method, OdeError};
+use crate::model::study::reference::SummaryErrors;
 
 /// The fixed-step methods, in order of increasing order.
 pub const FIXED_STEP_METHODS: [Method; 4] = [
@@ -159,7 +160,9 @@ pub fn runs_at_step(
         .collect()
 }
 
-/// Measured largest step at which `method` stays bounded on this impact, s.
+/// Measured largest step at which `method` stays bounded on this impact, s: where the
+/// work-precision ladder of fixed-step methods starts (see [`largest_accurate_step`] for the
+/// figure a user can act on).
 ///
 /// Scans dt upward geometrically (2^{1/8} per point) from 1/32 of ω_max⁻¹ until the first unbounded
 /// verdict, then bisects between the last bounded and the first unbounded step. A single impact lasts
@@ -176,22 +179,75 @@ pub fn largest_bounded_step(
     let omega = peak_angular_frequency(params);
     let bounded =
         |dt: f64| Verdict::judge(&solve_fixed(model, params, method, dt), reference).is_bounded();
-    let mut lo = 1.0 / (32.0 * omega);
-    if !bounded(lo) {
+    scan_up(1.0 / (32.0 * omega), reference.t_contact, 20, bounded)
+}
+
+/// The accuracy the measured step of [`StepBound`] keeps: the worst relative error of x_max, F_max,
+/// t_c and v_out against the reference.
+pub const STEP_TOLERANCE: f64 = 0.01;
+
+/// The worst relative error of x_max, F_max, t_c and v_out of `method` at step `dt` against
+/// `reference`; infinite where the solve fails.
+pub fn step_error(
+    model: ForceModel,
+    params: &ImpactParams,
+    reference: &ImpactSummary,
+    method: Method,
+    dt: f64,
+) -> f64 {
+    if dt >= reference.t_contact {
+        return f64::INFINITY;
+    }
+    match solve_fixed(model, params, method, dt) {
+        Ok(solution) => {
+            let worst = SummaryErrors::between(&solution.summary, reference).worst();
+            if worst.is_nan() { f64::INFINITY } else { worst }
+        }
+        Err(_) => f64::INFINITY,
+    }
+}
+
+/// Measured largest step at which `method` keeps every headline number of this impact within
+/// `tolerance` of the reference, s; `None` if even ω_max⁻¹/1024 does not.
+///
+/// Scans dt upward geometrically (2^{1/8} per point) from ω_max⁻¹/1024 (where explicit Euler's
+/// O(h·ω) error is still a fraction of a percent) and stops at the first step
+/// that misses the tolerance (or reaches the contact time), then bisects between it and the last
+/// step that met it. Every scanned step below the answer meets the tolerance, so errors that dip
+/// back under it at larger steps (a lucky cancellation, a step that skips the impact) cannot
+/// raise the figure.
+pub fn largest_accurate_step(
+    model: ForceModel,
+    params: &ImpactParams,
+    reference: &ImpactSummary,
+    method: Method,
+    tolerance: f64,
+) -> Option<f64> {
+    let omega = peak_angular_frequency(params);
+    let accurate = |dt: f64| step_error(model, params, reference, method, dt) <= tolerance;
+    // Within one scan factor: bisection to 0.1 % of the step.
+    scan_up(1.0 / (1024.0 * omega), reference.t_contact, 7, accurate)
+}
+
+/// The largest step passing `ok`, scanning up from `start` by 2^{1/8} until the first step that
+/// fails (the last passing one if the scan reaches `limit`), then bisecting `bisections` times
+/// between the last pass and that failure; `None` if `start` fails.
+fn scan_up(start: f64, limit: f64, bisections: usize, ok: impl Fn(f64) -> bool) -> Option<f64> {
+    if !ok(start) {
         return None;
     }
     let growth = 2f64.powf(0.125);
-    let mut hi = lo * growth;
-    while bounded(hi) {
+    let (mut lo, mut hi) = (start, start * growth);
+    while ok(hi) {
         lo = hi;
         hi *= growth;
-        if hi >= reference.t_contact {
+        if hi >= limit {
             return Some(lo);
         }
     }
-    for _ in 0..20 {
+    for _ in 0..bisections {
         let mid = (lo * hi).sqrt();
-        if bounded(mid) {
+        if ok(mid) {
             lo = mid;
         } else {
             hi = mid;
@@ -206,8 +262,14 @@ pub struct StepBound {
     pub method: Method,
     /// Theoretical critical step bound/ω_max, s (`None`: no stable step in theory).
     pub theoretical_dt: Option<f64>,
-    /// Measured largest bounded step on this impact, s.
+    /// The worst relative error of x_max, F_max, t_c and v_out at `theoretical_dt` (infinite
+    /// where the solve fails there).
+    pub error_at_theoretical: Option<f64>,
+    /// Measured largest step keeping those four errors within `tolerance`
+    /// ([`largest_accurate_step`]), s.
     pub measured_dt: Option<f64>,
+    /// The tolerance of `measured_dt`: [`STEP_TOLERANCE`].
+    pub tolerance: f64,
     /// ω_max, rad/s.
     pub omega_max: f64,
 }
@@ -233,11 +295,23 @@ pub fn step_bounds_until(
     FIXED_STEP_METHODS
         .iter()
         .take_while(|_| !stop())
-        .map(|&method| StepBound {
-            method,
-            theoretical_dt: critical_step(method, params),
-            measured_dt: largest_bounded_step(model, params, reference, method),
-            omega_max,
+        .map(|&method| {
+            let theoretical_dt = critical_step(method, params);
+            StepBound {
+                method,
+                theoretical_dt,
+                error_at_theoretical: theoretical_dt
+                    .map(|dt| step_error(model, params, reference, method, dt)),
+                measured_dt: largest_accurate_step(
+                    model,
+                    params,
+                    reference,
+                    method,
+                    STEP_TOLERANCE,
+                ),
+                tolerance: STEP_TOLERANCE,
+                omega_max,
+            }
         })
         .collect()
 }
@@ -262,7 +336,7 @@ mod tests {
         for bound in step_bounds(model, &params, &reference) {
             let measured = bound
                 .measured_dt
-                .expect("every method is bounded at small steps");
+                .expect("every method is accurate at small steps");
             assert!(
                 measured < reference.t_contact,
                 "{}: {measured} s vs t_c {} s",
@@ -277,6 +351,37 @@ mod tests {
                 run.verdict
             );
             assert!(run.solution.is_none());
+        }
+    }
+
+    #[test]
+    fn the_measured_step_keeps_every_number_within_the_tolerance_at_and_below_it() {
+        let scene = crate::model::scene::tests::fig5_scene();
+        let params = scene.impact_params(&scene.quasistatic().unwrap());
+        for model in [ForceModel::HuntCrossley, ForceModel::Proposed] {
+            let reference = super::super::reference::reference(model, &params).unwrap();
+            for bound in step_bounds(model, &params, &reference) {
+                let dt = bound.measured_dt.expect("accurate at ω_max⁻¹/1024");
+                for fraction in [1.0, 0.8, 0.5, 0.25] {
+                    let e = step_error(model, &params, &reference, bound.method, fraction * dt);
+                    assert!(
+                        e <= STEP_TOLERANCE,
+                        "{model} {} at {fraction}·dt: {e}",
+                        bound.method
+                    );
+                }
+                // Just above it the tolerance is missed: the figure is the edge, not a cap.
+                let e = step_error(model, &params, &reference, bound.method, 1.01 * dt);
+                assert!(e > STEP_TOLERANCE, "{model} {} above dt: {e}", bound.method);
+                if let (Some(theory), Some(error)) =
+                    (bound.theoretical_dt, bound.error_at_theoretical)
+                {
+                    assert_eq!(
+                        error,
+                        step_error(model, &params, &reference, bound.method, theory)
+                    );
+                }
+            }
         }
     }
 

@@ -108,16 +108,24 @@ pub fn sweep_until(
     spec: &SweepSpec,
     stop: &(dyn Fn() -> bool + Sync),
 ) -> Result<Option<Vec<SweepRow>>, SweepError> {
-    let values = sweep_values(spec)?;
     // Fail early on a key that does not apply to this scene's shapes.
-    spec.key.set(&mut base.clone(), values[0])?;
+    let values = check(base, spec)?;
     Ok(values
         .into_par_iter()
         .map(|value| (!stop()).then(|| sweep_point(base, spec, value)))
         .collect())
 }
 
-fn sweep_point(base: &Scene, spec: &SweepSpec, value: f64) -> SweepRow {
+/// Checks that the sweep can start: its values are valid and its key applies to `base`'s shapes.
+pub fn check(base: &Scene, spec: &SweepSpec) -> Result<Vec<f64>, SweepError> {
+    let values = sweep_values(spec)?;
+    spec.key.set(&mut base.clone(), values[0])?;
+    Ok(values)
+}
+
+/// One point of the sweep: the scene with the key set to `value`, its quasistatic numbers and
+/// every model's impact (or the error that stopped them).
+pub fn sweep_point(base: &Scene, spec: &SweepSpec, value: f64) -> SweepRow {
     let mut scene = base.clone();
     let invalid = |error: String| SweepRow {
         value,

@@ -1,6 +1,6 @@
 //! Tab 3, where fixed-step methods fail: the focused model integrated at the chosen step by every
 //! fixed-step method, drawn over the reference F(x) and v(x), with each method's verdict, its
-//! theoretical critical step (bound/ω_max) and its measured largest bounded step.
+//! theoretical critical step (bound/ω_max) and its measured largest step within 1 % error.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -242,7 +242,7 @@ fn table(frame: &mut Frame, area: Rect, app: &App, data: &StabilityData) {
             if narrow {
                 "largest h"
             } else {
-                "largest bounded h"
+                "largest h (1 % err)"
             },
             "verdict at this h",
         ]

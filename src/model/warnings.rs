@@ -1,0 +1,94 @@
+//! Results that are computed correctly but should not be trusted as physics or as numbers: the
+//! scene has left a hypothesis of the theory, or a reported quantity is ill-conditioned. The
+//! numbers stay; the warning says why they mean less than they seem to.
+
+use serde::Serialize;
+use thiserror::Error;
+
+use super::force::{ForceModel, ImpactParams};
+use super::impact::ImpactSummary;
+use super::pair::ContactPair;
+use super::quasistatic::{ContactGeometry, Quasistatic};
+
+/// Hertz's first hypothesis, a ≪ R, is taken as broken beyond a/R = 0.1 (then x/R = a²/R² > 1 %),
+/// the usual limit of the small-strain theory (docs/physics.md §1).
+pub const MAX_CONTACT_RATIO: f64 = 0.1;
+
+/// The proposed model's end time and exit speed are flagged beyond this condition number (their
+/// relative error over the integrator's relative error).
+pub const MAX_END_CONDITION: f64 = 10.0;
+
+/// Why a result should be read with care.
+#[derive(Debug, Clone, PartialEq, Serialize, Error)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum ModelWarning {
+    /// The contact is not small against the sphere (Hertz's first hypothesis).
+    #[error(
+        "contact radius a = {contact_radius:.3e} m is {ratio:.2} of the sphere radius {radius:.3e} m \
+         (x_max = {x_max:.3e} m): Hertz's theory assumes a ≪ R (a/R ≤ 0.1), so these numbers are \
+         outside its range"
+    )]
+    LargeContact {
+        contact_radius: f64,
+        radius: f64,
+        x_max: f64,
+        ratio: f64,
+    },
+    /// The proposed model's contact ends where F = k·xⁿ + b·xⁿ⁻¹·ẋ grazes zero: the bodies creep
+    /// apart along F ≈ 0 and the end time depends on digits the integration does not have.
+    #[error(
+        "{model}: the end of contact is ill-conditioned (condition number {condition:.0}: e_out = \
+         {e_out:.3}, x_pl/x_e = {x_pl_ratio:.2}); t_contact and v_out may be off by that multiple \
+         of the tolerance"
+    )]
+    IllConditionedEnd {
+        model: ForceModel,
+        condition: f64,
+        e_out: f64,
+        x_pl_ratio: f64,
+    },
+}
+
+/// Warnings about the scene itself: a sphere whose contact radius at the elastic F_max (eq 8) is
+/// not small against the smallest sphere radius of the pair.
+pub fn scene_warnings(pair: &ContactPair, q: &Quasistatic) -> Vec<ModelWarning> {
+    let ContactGeometry::Point { contact_radius } = q.geometry else {
+        return Vec::new();
+    };
+    let radius = pair.body1().shape.radius().min(pair.body2().shape.radius());
+    let ratio = contact_radius / radius;
+    if ratio.is_finite() && ratio > MAX_CONTACT_RATIO {
+        vec![ModelWarning::LargeContact {
+            contact_radius,
+            radius,
+            x_max: q.x_max,
+            ratio,
+        }]
+    } else {
+        Vec::new()
+    }
+}
+
+/// Warnings about one solved impact.
+///
+/// The proposed model ends at g = k·x + b·ẋ = 0 (F/xⁿ⁻¹), which g crosses at the rate
+/// k·ẋ (F = 0 there, so ẍ = 0). An error δg ≈ rtol·(k·x_e + b·v₀) in g moves the end by
+/// δg/(k·v_out); relative to t_c that is rtol·(x_e + x_pl/e)/(v_out·t_c), whose factor is the
+/// condition number reported.
+pub fn impact_warnings(params: &ImpactParams, summary: &ImpactSummary) -> Vec<ModelWarning> {
+    let mut out = Vec::new();
+    if summary.model == ForceModel::Proposed && params.plastic_indentation > 0.0 {
+        let x_e = params.law.max_approach(params.mass, params.v0);
+        let reach = x_e + params.plastic_indentation / params.restitution;
+        let condition = reach / (summary.v_out * summary.t_contact);
+        if condition.is_nan() || condition > MAX_END_CONDITION {
+            out.push(ModelWarning::IllConditionedEnd {
+                model: summary.model,
+                condition,
+                e_out: summary.e_out,
+                x_pl_ratio: params.plastic_indentation / x_e,
+            });
+        }
+    }
+    out
+}
