@@ -37,6 +37,10 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "save the scene (preset name, or a path ending in .toml)",
     ),
     ("e", "export the focused model's trajectory as CSV"),
+    (
+        "f",
+        "write the charts of this view to an SVG figure (<scene>-<view>.svg)",
+    ),
     ("in 2", "work–precision of every method, focused model"),
     (
         "in 3",
@@ -114,6 +118,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('p') => Action::Presets,
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,
+        KeyCode::Char('f') => Action::Figure,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

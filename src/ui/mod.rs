@@ -14,6 +14,7 @@ mod app_tab_tests;
 mod app_tests;
 pub mod export;
 pub mod field;
+pub mod figure_export;
 pub mod keymap;
 mod marker;
 pub mod picker;

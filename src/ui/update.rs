@@ -12,6 +12,7 @@ use super::action::Action;
 use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
 use super::export;
 use super::field::{Field, Nudge};
+use super::figure_export;
 use super::picker::{EntryKind, Picker};
 use super::study_worker::StudyReport;
 use super::tab::Tab;
@@ -133,6 +134,10 @@ fn normal(app: &mut App, action: Action) {
                 error: None,
             });
         }
+        Action::Figure => match figure_export::write_view(app) {
+            Ok(news) => app.say(news, false),
+            Err(reason) => app.say(reason, true),
+        },
         Action::Export => {
             let model = app.focused;
             if app.solutions.is_pending(model) {
