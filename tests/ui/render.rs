@@ -536,3 +536,37 @@ fn extreme_values_give_short_tick_labels() {
         }
     }
 }
+
+/// The app with every model solved by explicit Euler at 50 µs, a step at which it blows up.
+fn unstable_app() -> App {
+    let mut app = app();
+    for (field, value) in [(Field::Method, "euler"), (Field::Dt, "50 µs")] {
+        app.cursor = Cursor::Field(field);
+        press(&mut app, KeyCode::Enter);
+        update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
+        for c in value.chars() {
+            press(&mut app, KeyCode::Char(c));
+        }
+        press(&mut app, KeyCode::Enter);
+        settle(&mut app);
+    }
+    app
+}
+
+#[test]
+fn a_failed_solve_says_why_in_the_results_and_on_the_chart() {
+    let app = unstable_app();
+    for (w, h) in [(80, 24), (120, 40), (160, 48)] {
+        let screen = text(render(&app, w, h).backend().buffer());
+        let rows: Vec<&str> = screen
+            .lines()
+            .filter(|l| l.contains("✗ euler: the method is unstable"))
+            .collect();
+        // Every checked model's row, and the chart, say it; no row is a bare ✗.
+        assert!(rows.len() >= 4, "{w}×{h}:\n{screen}");
+        if std::env::var_os("SHOW_SCREENS").is_some() {
+            println!("{screen}");
+        }
+        assert!(!screen.contains("✗ euler:  ") && !screen.contains("✗ euler:\n"));
+    }
+}

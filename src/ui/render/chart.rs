@@ -15,6 +15,7 @@ use crate::ui::theme::Role;
 
 use super::common::{model_name, pane, span};
 use super::graph;
+use super::results::reason_first;
 
 /// The models drawn.
 fn drawn_models(app: &App) -> Vec<ForceModel> {
@@ -29,7 +30,7 @@ fn failures(app: &App) -> Vec<String> {
     app.checked_models()
         .into_iter()
         .filter_map(|m| match app.solutions.result(m) {
-            Some(Err(message)) => Some(format!("✗ {}: {message}", m.name())),
+            Some(Err(message)) => Some(format!("✗ {}: {}", m.name(), reason_first(message))),
             _ => None,
         })
         .collect()
@@ -87,23 +88,23 @@ pub fn render(
     let inner = block.inner(area);
     if drawn_models(app).is_empty() {
         let failed = failures(app);
-        let text = if app.is_computing() {
-            "computing…".to_string()
+        let (texts, role) = if app.is_computing() {
+            (vec!["computing…".to_string()], Role::Muted)
         } else if app.checked_models().is_empty() {
-            "no model checked: Space on a model draws it".to_string()
+            (
+                vec!["no model checked: Space on a model draws it".to_string()],
+                Role::Muted,
+            )
         } else if !failed.is_empty() {
-            failed.join(" · ")
+            (failed, Role::Error)
         } else {
-            "no solution to draw".to_string()
+            (vec!["no solution to draw".to_string()], Role::Muted)
         };
-        let role = if failed.is_empty() {
-            Role::Muted
-        } else {
-            Role::Error
-        };
-        let note = Paragraph::new(Line::from(span(text, theme.style(role))))
-            .wrap(Wrap { trim: true })
-            .block(block);
+        let lines: Vec<Line> = texts
+            .into_iter()
+            .map(|t| Line::from(span(t, theme.style(role))))
+            .collect();
+        let note = Paragraph::new(lines).wrap(Wrap { trim: true }).block(block);
         frame.render_widget(note, area);
         return;
     }

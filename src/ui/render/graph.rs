@@ -16,6 +16,8 @@ use crate::chart::{Chart, Ink, place_ticks};
 use crate::ui::marker::MarkerStyle;
 use crate::ui::theme::{Role, Theme, sample};
 
+use super::common::wrap;
+
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ChartFrame {
@@ -387,10 +389,13 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
         };
         put(buf, x, row, label, theme.ink(mark.ink), plot);
     }
-    for (i, note) in chart.notes.iter().enumerate() {
-        let y = plot.y + 1 + i as u16;
-        let text: String = note.chars().take(usize::from(plot.width)).collect();
-        put(buf, plot.x + 1, y, &text, theme.style(Role::Error), plot);
+    // Notes wrapped to the plot's width, from its second row, as many rows as the plot has.
+    let lines = chart
+        .notes
+        .iter()
+        .flat_map(|note| wrap(note, usize::from(plot.width.saturating_sub(2))));
+    for (y, line) in (plot.y + 1..plot.bottom()).zip(lines) {
+        put(buf, plot.x + 1, y, &line, theme.style(Role::Error), plot);
     }
 }
 
