@@ -9,6 +9,8 @@ use std::time::Duration;
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
 
+use super::plot::{SAMPLES_PER_SOLVE, Series};
+
 /// One impact to solve off the UI thread.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Job {
@@ -40,6 +42,8 @@ struct Slot {
     pending: bool,
     /// The latest finished result (of the latest request once it is no longer pending).
     shown: Option<SolveResult>,
+    /// Its curves sampled once, for every chart and frame until the next solve.
+    sampled: Option<Arc<Series>>,
 }
 
 /// Results per model, with the bookkeeping of requests in flight.
@@ -87,6 +91,14 @@ impl Solutions {
             return false;
         }
         slot.pending = false;
+        slot.sampled = match &outcome.result {
+            Ok(solution) => Some(Arc::new(Series::sample(
+                outcome.model,
+                solution,
+                SAMPLES_PER_SOLVE,
+            ))),
+            Err(_) => None,
+        };
         slot.shown = Some(outcome.result);
         true
     }
@@ -102,6 +114,11 @@ impl Solutions {
             Some(Ok(solution)) => Some(solution),
             _ => None,
         }
+    }
+
+    /// The curves of `model`'s solution, sampled when it arrived.
+    pub fn samples(&self, model: ForceModel) -> Option<&Series> {
+        self.slots[index(model)].sampled.as_deref()
     }
 
     pub fn is_pending(&self, model: ForceModel) -> bool {

@@ -47,11 +47,9 @@ pub fn budget(columns: u16, rows: u16) -> (usize, usize) {
 
 /// The chart of `kind` for the models of `app` drawn in `columns` × `rows` cells.
 pub fn describe(app: &App, kind: ChartKind, columns: u16, rows: u16) -> Chart {
-    let models = drawn_models(app);
-    let n = 2 * usize::from(columns) * usize::from(app.marker.dots_per_cell());
-    let series: Vec<Series> = models
+    let series: Vec<&Series> = drawn_models(app)
         .iter()
-        .filter_map(|&m| app.solutions.solution(m).map(|s| Series::sample(m, s, n)))
+        .filter_map(|&m| app.solutions.samples(m))
         .collect();
     let (max_x, max_y) = budget(columns, rows);
     let mut chart =
