@@ -380,6 +380,7 @@ mod tests {
                 label: "v_y".into(),
             }],
             notes: Vec::new(),
+            readout: None,
         }
     }
 

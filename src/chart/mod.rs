@@ -166,6 +166,8 @@ pub struct Chart {
     pub rules: Vec<Rule>,
     /// Why something is missing ("proposed: step budget exhausted at t = …"), shown with the chart.
     pub notes: Vec<String>,
+    /// The data cursor's reading (each curve's value where it stands), shown above the plot.
+    pub readout: Option<String>,
 }
 
 /// The glyph of a force model, each its own: ASCII, so every font and every figure has them.

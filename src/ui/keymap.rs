@@ -41,6 +41,10 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "f",
         "write the charts of this view to an SVG figure (<scene>-<view>.svg)",
     ),
+    (
+        "<  >",
+        "data cursor along the charts' x axis: each curve's value there (Esc hides)",
+    ),
     ("in 2", "work–precision of every method, focused model"),
     (
         "in 3",
@@ -119,6 +123,8 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('s') => Action::Save,
         KeyCode::Char('e') => Action::Export,
         KeyCode::Char('f') => Action::Figure,
+        KeyCode::Char('<') | KeyCode::Char(',') => Action::MoveCursor(false),
+        KeyCode::Char('>') | KeyCode::Char('.') => Action::MoveCursor(true),
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

@@ -200,6 +200,7 @@ impl<K: Copy> Plot<K> {
             marks: Vec::new(),
             rules: Vec::new(),
             notes: Vec::new(),
+            readout: None,
         }
     }
 }

@@ -10,6 +10,7 @@ use crate::model::scene_key::BodyIndex;
 
 use super::action::Action;
 use super::app::{App, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
+use super::data_cursor;
 use super::export;
 use super::field::{Field, Nudge};
 use super::figure_export;
@@ -134,6 +135,9 @@ fn normal(app: &mut App, action: Action) {
                 error: None,
             });
         }
+        Action::MoveCursor(forward) => {
+            app.data_cursor = Some(data_cursor::moved(app.data_cursor, forward));
+        }
         Action::Figure => match figure_export::write_view(app) {
             Ok(news) => app.say(news, false),
             Err(reason) => app.say(reason, true),
@@ -163,8 +167,8 @@ fn normal(app: &mut App, action: Action) {
                 );
             }
         }
-        Action::Cancel
-        | Action::Input(_)
+        Action::Cancel => app.data_cursor = None,
+        Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit
         | Action::Resize(..)

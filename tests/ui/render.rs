@@ -570,3 +570,35 @@ fn a_failed_solve_says_why_in_the_results_and_on_the_chart() {
         assert!(!screen.contains("✗ euler:  ") && !screen.contains("✗ euler:\n"));
     }
 }
+
+/// The data cursor's readout on F(t) is each model's force at that time on its dense output, in
+/// the chart's units; `<` moves it back, Esc hides it.
+#[test]
+fn the_data_cursor_reads_each_curve_at_its_place() {
+    let mut app = app();
+    press(&mut app, KeyCode::Char('>'));
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    let line = screen
+        .lines()
+        .find(|l| l.contains("t = "))
+        .unwrap_or_else(|| panic!("no readout:\n{screen}"));
+    let after = &line[line.find("t = ").unwrap() + 4..];
+    let (number, rest) = after.split_once(' ').unwrap();
+    assert!(rest.starts_with("µs"), "{line}");
+    let t = number.parse::<f64>().unwrap() * 1e-6;
+    for model in [ForceModel::Proposed, ForceModel::HuntCrossley] {
+        let solution = app.solutions.solution(model).unwrap();
+        let f = solution.trajectory.at(t).f;
+        let expected = hertz_tui::ui::units::engineering(f, hertz_tui::ui::units::NEWTON, 4);
+        assert!(
+            line.contains(&expected),
+            "{model:?} F({t}) = {expected} in {line}"
+        );
+    }
+    press(&mut app, KeyCode::Char('<'));
+    assert_eq!(app.data_cursor, Some(490));
+    press(&mut app, KeyCode::Esc);
+    assert_eq!(app.data_cursor, None);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(!screen.contains("t = "));
+}

@@ -343,6 +343,16 @@ fn axes(
     let title = theme.style(Role::Label).add_modifier(Modifier::BOLD);
     put(buf, inner.x, inner.y, &chart.y.title, title, inner);
     let x_title = width(&chart.x.title);
+    if let Some(readout) = &chart.readout {
+        // The cursor's reading takes the row above the plot after the y title.
+        let x = inner.x + width(&chart.y.title) + 2;
+        put(buf, x, inner.y, readout, theme.style(Role::Normal), inner);
+        if f.x_title_below {
+            let x = inner.right().saturating_sub(x_title);
+            put(buf, x, axis_y + 2, &chart.x.title, title, inner);
+        }
+        return;
+    }
     if f.x_title_below {
         let x = inner.right().saturating_sub(x_title);
         put(buf, x, axis_y + 2, &chart.x.title, title, inner);
@@ -587,6 +597,7 @@ mod tests {
                 label: "v_p".into(),
             }],
             notes: Vec::new(),
+            readout: None,
         }
     }
 
