@@ -602,3 +602,22 @@ fn the_data_cursor_reads_each_curve_at_its_place() {
     let screen = text(render(&app, 160, 48).backend().buffer());
     assert!(!screen.contains("t = "));
 }
+
+/// At 80×24 the scrolled form keeps the header of its top section in view, wherever the cursor.
+#[test]
+fn the_compact_form_keeps_its_section_header_in_view() {
+    let mut app = app();
+    for _ in 0..20 {
+        let screen = text(render(&app, 80, 24).backend().buffer());
+        let lines: Vec<&str> = screen.lines().collect();
+        let pane = lines.iter().position(|l| l.starts_with("Scene")).unwrap();
+        let first = lines[pane + 1];
+        assert!(
+            ["Body 1", "Body 2", "Impact"]
+                .iter()
+                .any(|h| first.starts_with(h)),
+            "{screen}"
+        );
+        press(&mut app, KeyCode::Down);
+    }
+}

@@ -112,7 +112,22 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let height = inner.height as usize;
     let max_offset = list.len().saturating_sub(height);
     let offset = cursor_row.saturating_sub(height / 2).min(max_offset);
-    draw_rows(frame, inner, app, &list, offset);
+    // The header of the section at the top stays in view: pinned on the first row when the list
+    // is scrolled past it, the rows continuing below it.
+    let header = headers.iter().rev().find(|&&h| h <= offset).copied();
+    match header {
+        Some(h) if h < offset && inner.height > 2 => {
+            draw_rows(frame, inner, app, &list[h..=h], 0);
+            let below = Rect::new(inner.x, inner.y + 1, inner.width, inner.height - 1);
+            let next = if cursor_row > offset {
+                offset + 1
+            } else {
+                offset
+            };
+            draw_rows(frame, below, app, &list, next);
+        }
+        _ => draw_rows(frame, inner, app, &list, offset),
+    }
 }
 
 fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usize) {
