@@ -112,6 +112,16 @@ fn text(buffer: &Buffer) -> String {
         .join("\n")
 }
 
+/// Types `value` into the field under the cursor by keystrokes: Enter, clear, the text, Enter.
+fn type_in(app: &mut App, value: &str) {
+    press(app, KeyCode::Enter);
+    update(app, Action::Input(tui_input::InputRequest::DeleteLine));
+    for c in value.chars() {
+        press(app, KeyCode::Char(c));
+    }
+    press(app, KeyCode::Enter);
+}
+
 /// The app with body 1's ν set to 0.6 by keystrokes: invalid, and the last results stay.
 fn invalid_app() -> App {
     let mut app = app();
@@ -119,12 +129,7 @@ fn invalid_app() -> App {
         BodyIndex::One,
         BodyField::PoissonRatio,
     )));
-    press(&mut app, KeyCode::Enter);
-    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
-    for c in "0.6".chars() {
-        press(&mut app, KeyCode::Char(c));
-    }
-    press(&mut app, KeyCode::Enter);
+    type_in(&mut app, "0.6");
     app
 }
 
@@ -392,12 +397,7 @@ fn no_color_holds_in_every_tab() {
 /// The app with v₀ typed in by keystrokes, every solve done.
 fn app_with_speed(v0: &str) -> App {
     let mut app = app();
-    press(&mut app, KeyCode::Enter);
-    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
-    for c in v0.chars() {
-        press(&mut app, KeyCode::Char(c));
-    }
-    press(&mut app, KeyCode::Enter);
+    type_in(&mut app, v0);
     settle(&mut app);
     app
 }
@@ -542,12 +542,7 @@ fn unstable_app() -> App {
     let mut app = app();
     for (field, value) in [(Field::Method, "euler"), (Field::Dt, "50 µs")] {
         app.cursor = Cursor::Field(field);
-        press(&mut app, KeyCode::Enter);
-        update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
-        for c in value.chars() {
-            press(&mut app, KeyCode::Char(c));
-        }
-        press(&mut app, KeyCode::Enter);
+        type_in(&mut app, value);
         settle(&mut app);
     }
     app
