@@ -356,8 +356,9 @@ fn axes(
     if f.x_title_below {
         let x = inner.right().saturating_sub(x_title);
         put(buf, x, axis_y + 2, &chart.x.title, title, inner);
-    } else if width(&chart.y.title) + 2 + x_title <= inner.width {
-        let x = inner.right().saturating_sub(x_title);
+    } else if width(&chart.y.title) + 3 + x_title <= inner.width {
+        // A blank column after it, so it never runs into a neighbouring chart's title.
+        let x = inner.right().saturating_sub(x_title + 1);
         put(buf, x, inner.y, &chart.x.title, title, inner);
     }
 }
@@ -399,11 +400,26 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
         };
         put(buf, x, row, label, theme.ink(mark.ink), plot);
     }
-    // Notes wrapped to the plot's width, from its second row, as many rows as the plot has.
-    let lines = chart
+    // Notes wrapped to the plot's width from its second row, where they leave two thirds of the
+    // plot to the curves; else one line naming what has no curve.
+    let lines: Vec<String> = chart
         .notes
         .iter()
-        .flat_map(|note| wrap(note, usize::from(plot.width.saturating_sub(2))));
+        .flat_map(|note| wrap(note, usize::from(plot.width.saturating_sub(2))))
+        .collect();
+    let lines = if lines.len() <= usize::from(plot.height / 3) {
+        lines
+    } else {
+        let names: Vec<&str> = chart
+            .notes
+            .iter()
+            .map(|n| n.trim_start_matches("✗ ").split(':').next().unwrap_or(n))
+            .collect();
+        wrap(
+            &format!("✗ no curve: {}", names.join(", ")),
+            usize::from(plot.width.saturating_sub(2)),
+        )
+    };
     for (y, line) in (plot.y + 1..plot.bottom()).zip(lines) {
         put(buf, plot.x + 1, y, &line, theme.style(Role::Error), plot);
     }
