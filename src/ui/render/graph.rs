@@ -145,14 +145,19 @@ impl Canvas {
         self.cells.get_mut(row * usize::from(self.width) + col)
     }
 
-    fn set(&mut self, x: f64, y: f64, ink: Ink, bold: bool) {
-        if x < -0.5 || y < -0.5 {
+    /// The dot nearest a fractional dot position (`None` left of or below the canvas).
+    fn nearest(x: f64, y: f64) -> Option<(i64, i64)> {
+        (x >= -0.5 && y >= -0.5 && x.is_finite() && y.is_finite())
+            .then(|| (x.round() as i64, y.round() as i64))
+    }
+
+    fn set_dot(&mut self, (x, y): (i64, i64), ink: Ink, bold: bool) {
+        let (Ok(x), Ok(y)) = (u32::try_from(x), u32::try_from(y)) else {
             return;
-        }
-        let (x, y) = (x.round() as u32, y.round() as u32);
-        let (dx, dy) = (self.dx, self.dy);
+        };
+        let braille = self.dx == 2 && self.dy == 4;
         if let Some(cell) = self.cell_mut(x, y) {
-            cell.dots |= if dx == 2 && dy == 4 {
+            cell.dots |= if braille {
                 BRAILLE[3 - (y % 4) as usize][(x % 2) as usize]
             } else {
                 1
@@ -161,16 +166,39 @@ impl Canvas {
         }
     }
 
-    /// A straight line between two dots, one dot at a time (clipped to the canvas).
+    fn set(&mut self, x: f64, y: f64, ink: Ink, bold: bool) {
+        if let Some(dot) = Canvas::nearest(x, y) {
+            self.set_dot(dot, ink, bold);
+        }
+    }
+
+    /// A straight line between two dots, one dot at a time (clipped to the canvas): from the dot
+    /// after `a`'s to `b`'s, so that a polyline sets each dot once; a segment within one dot sets
+    /// nothing new.
     fn line(&mut self, a: (f64, f64), b: (f64, f64), ink: Ink, bold: bool) {
-        let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
-        if !steps.is_finite() || steps > 1e5 {
+        let (Some(a), Some(b)) = (Canvas::nearest(a.0, a.1), Canvas::nearest(b.0, b.1)) else {
+            // An end off the canvas: fall back to stepping the fractional line, clipped.
+            let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
+            if steps.is_finite() && steps <= 1e5 {
+                let steps = steps.max(1.0) as u32;
+                for k in 0..=steps {
+                    let s = f64::from(k) / f64::from(steps);
+                    self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
+                }
+            }
+            return;
+        };
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let steps = dx.abs().max(dy.abs());
+        if steps == 0 || steps > 100_000 {
+            self.set_dot(b, ink, bold);
             return;
         }
-        let steps = steps.max(1.0) as u32;
-        for k in 0..=steps {
-            let s = f64::from(k) / f64::from(steps);
-            self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
+        for k in 1..=steps {
+            // Integer DDA, rounded to the nearest dot.
+            let x = a.0 + (2 * dx * k + steps).div_euclid(2 * steps);
+            let y = a.1 + (2 * dy * k + steps).div_euclid(2 * steps);
+            self.set_dot((x, y), ink, bold);
         }
     }
 
@@ -220,8 +248,8 @@ fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) 
                 .iter()
                 .filter_map(|&p| canvas.to_dots(chart, p))
                 .collect();
-            if let [only] = pts.as_slice() {
-                canvas.set(only.0, only.1, series.ink, bold);
+            if let Some(first) = pts.first() {
+                canvas.set(first.0, first.1, series.ink, bold);
             }
             let mut travelled = spacing / 2.0;
             for w in pts.windows(2) {
@@ -256,16 +284,14 @@ fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) 
     }
 }
 
-fn cell_symbol(cell: &Cell, marker: MarkerStyle) -> Option<String> {
+fn cell_symbol(cell: &Cell, marker: MarkerStyle) -> Option<char> {
     if cell.dots == 0 {
         return None;
     }
     Some(match marker {
-        MarkerStyle::Braille => char::from_u32(0x2800 + u32::from(cell.dots))
-            .unwrap_or('•')
-            .to_string(),
-        MarkerStyle::Dot => "•".to_string(),
-        MarkerStyle::Block => "█".to_string(),
+        MarkerStyle::Braille => char::from_u32(0x2800 + u32::from(cell.dots)).unwrap_or('•'),
+        MarkerStyle::Dot => '•',
+        MarkerStyle::Block => '█',
     })
 }
 
@@ -301,7 +327,7 @@ fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: Mar
             } else {
                 styled(ink, bold)
             };
-            buf[(x, y)].set_symbol(&symbol).set_style(style);
+            buf[(x, y)].set_char(symbol).set_style(style);
         }
     }
 }
