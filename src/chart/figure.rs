@@ -385,6 +385,7 @@ mod tests {
                 label: "v_y".into(),
             }],
             notes: Vec::new(),
+            readout: None,
         }
     }
 

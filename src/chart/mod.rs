@@ -173,6 +173,8 @@ pub struct Chart {
     pub rules: Vec<Rule>,
     /// Why something is missing ("proposed: step budget exhausted at t = …"), shown with the chart.
     pub notes: Vec<String>,
+    /// The data cursor's reading (each curve's value where it stands), shown above the plot.
+    pub readout: Option<String>,
 }
 
 /// The paper's Fig. 5 models first (proposed, Hunt–Crossley, Lankarani–Nikravesh), then elastic

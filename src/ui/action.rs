@@ -59,6 +59,10 @@ pub enum Action {
     Presets,
     Save,
     Export,
+    /// Writes the charts of the view on screen to an SVG figure.
+    Figure,
+    /// Moves the explorer's data cursor along the charts' x axes (forward: right).
+    MoveCursor(bool),
     /// Applies the material selected in the picker to a body.
     ApplyMaterialTo(BodyIndex),
     /// The terminal has this many columns and rows: redraw (and size sweeps to it).

@@ -185,6 +185,8 @@ pub struct App {
     pub screen: (u16, u16),
     /// The chart shown first (alone where only one fits).
     pub chart: ChartKind,
+    /// The explorer's data cursor, per mille along the charts' x axes (`None`: hidden).
+    pub data_cursor: Option<u16>,
     pub marker: MarkerStyle,
     pub theme: Theme,
     pub message: Option<Message>,
@@ -252,6 +254,7 @@ impl App {
             cost: Cost::Seconds,
             screen: (0, 0),
             chart: ChartKind::ForceDisplacement,
+            data_cursor: None,
             marker,
             theme,
             message: None,

@@ -47,9 +47,12 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "presets: type to filter; Enter loads (1 2: to body 1 2)",
     ),
     ("s e", "save the scene (name or path.toml) · export as CSV"),
-    ("m", "mouse on / off (off: the terminal selects text)"),
-    ("t", "engine parameters (translate): ← → engine, Esc closes"),
+    ("m t", "mouse on / off · engine parameters (← → engine)"),
     ("paste", "opens the field under the cursor with the text"),
+    (
+        "f < > , .",
+        "this view's charts to <scene>-<view>.svg · data cursor",
+    ),
     (
         "in 3",
         "Enter types the step (auto: rk4 critical); ← → ½× 2×",
@@ -172,6 +175,9 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('u') => Action::Undo,
         KeyCode::Char('r') => Action::ResetField,
         KeyCode::Char('m') => Action::ToggleMouse,
+        KeyCode::Char('f') => Action::Figure,
+        KeyCode::Char('<') | KeyCode::Char(',') => Action::MoveCursor(false),
+        KeyCode::Char('>') | KeyCode::Char('.') => Action::MoveCursor(true),
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

@@ -14,9 +14,11 @@ mod app_daily_tests;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+pub mod data_cursor;
 mod edited;
 pub mod export;
 pub mod field;
+pub mod figure_export;
 pub mod keymap;
 mod marker;
 mod mouse;

@@ -4,11 +4,17 @@
 use crate::model::ForceModel;
 use crate::model::impact::{ImpactSolution, Sample};
 
+use std::borrow::Borrow;
+
 use crate::chart::{Chart, Ink, Series as ChartSeries};
 
 use super::app::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
+
+/// Samples taken of each solution once, when it arrives (evenly in t, the exact extrema added):
+/// two or more per braille column of any chart up to 300 columns wide, so no chart re-samples.
+pub const SAMPLES_PER_SOLVE: usize = 1200;
 
 /// One solution's samples and its exact extrema, under a key that says whose they are (a force
 /// model in the explorer; a method or the reference in the stability view).
@@ -101,15 +107,16 @@ fn finite(p: &(f64, f64)) -> bool {
 
 /// The chart of `kind` over `series`, with at most the given numbers of axis labels. Non-finite
 /// points are dropped (never drawn, never NaN on an axis).
-pub fn plot<K: Copy>(
+pub fn plot<K: Copy, S: Borrow<Series<K>>>(
     kind: ChartKind,
-    series: &[Series<K>],
+    series: &[S],
     max_x_labels: usize,
     max_y_labels: usize,
 ) -> Plot<K> {
     // Curves in SI first, to find the ranges.
     let raw: Vec<Curve<K>> = series
         .iter()
+        .map(Borrow::borrow)
         .map(|s| Curve {
             model: s.model,
             points: s
@@ -193,6 +200,7 @@ impl<K: Copy> Plot<K> {
             marks: Vec::new(),
             rules: Vec::new(),
             notes: Vec::new(),
+            readout: None,
         }
     }
 }

@@ -67,6 +67,7 @@ pub fn realised_chart(
         marks: Vec::new(),
         rules: Vec::new(),
         notes: Vec::new(),
+        readout: None,
     }
 }
 
@@ -106,5 +107,6 @@ pub fn velocity_chart(
         marks: Vec::new(),
         rules,
         notes: Vec::new(),
+        readout: None,
     }
 }

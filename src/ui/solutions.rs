@@ -10,6 +10,8 @@ use crate::model::force::LAW_COUNT;
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
 
+use super::plot::{SAMPLES_PER_SOLVE, Series};
+
 /// One impact to solve off the UI thread.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Job {
@@ -43,6 +45,8 @@ struct Slot {
     pending: bool,
     /// The latest finished result (of the latest request once it is no longer pending).
     shown: Option<SolveResult>,
+    /// Its curves sampled once, for every chart and frame until the next solve.
+    sampled: Option<Arc<Series>>,
 }
 
 /// Results per model (one slot per row of the law table), with the bookkeeping of requests in flight.
@@ -98,6 +102,14 @@ impl Solutions {
             return false;
         }
         slot.pending = false;
+        slot.sampled = match &outcome.result {
+            Ok(solution) => Some(Arc::new(Series::sample(
+                outcome.model,
+                solution,
+                SAMPLES_PER_SOLVE,
+            ))),
+            Err(_) => None,
+        };
         slot.shown = Some(outcome.result);
         true
     }
@@ -113,6 +125,11 @@ impl Solutions {
             Some(Ok(solution)) => Some(solution),
             _ => None,
         }
+    }
+
+    /// The curves of `model`'s solution, sampled when it arrived.
+    pub fn samples(&self, model: ForceModel) -> Option<&Series> {
+        self.slots[index(model)].sampled.as_deref()
     }
 
     pub fn is_pending(&self, model: ForceModel) -> bool {

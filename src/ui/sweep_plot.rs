@@ -133,6 +133,7 @@ pub fn chart(
             marks: Vec::new(),
             rules: Vec::new(),
             notes: Vec::new(),
+            readout: None,
         };
     };
     let spec = &first.data.spec;
@@ -246,6 +247,7 @@ pub fn chart(
         marks: Vec::new(),
         rules,
         notes: Vec::new(),
+        readout: None,
     }
 }
 

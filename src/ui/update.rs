@@ -11,9 +11,11 @@ use crate::model::{ForceModel, Scene};
 
 use super::action::{Action, Jump};
 use super::app::{App, Confirm, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
+use super::data_cursor;
 use super::edited;
 use super::export;
 use super::field::{Field, Nudge};
+use super::figure_export;
 use super::mouse;
 use super::picker::{EntryKind, Picker};
 use super::study_worker::StudyReport;
@@ -196,6 +198,13 @@ fn normal(app: &mut App, action: Action) {
                 error: None,
             });
         }
+        Action::MoveCursor(forward) => {
+            app.data_cursor = Some(data_cursor::moved(app.data_cursor, forward));
+        }
+        Action::Figure => match figure_export::write_view(app) {
+            Ok(news) => app.say(news, false),
+            Err(reason) => app.say(reason, true),
+        },
         Action::Export => {
             let model = app.focused;
             if app.solutions.is_pending(model) {
@@ -221,8 +230,8 @@ fn normal(app: &mut App, action: Action) {
                 );
             }
         }
-        Action::Cancel
-        | Action::Jump(_)
+        Action::Cancel => app.data_cursor = None,
+        Action::Jump(_)
         | Action::ResetField
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)

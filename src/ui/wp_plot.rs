@@ -148,6 +148,7 @@ pub fn chart(
             .collect(),
         rules: Vec::new(),
         notes: Vec::new(),
+        readout: None,
     }
 }
 

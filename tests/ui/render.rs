@@ -112,6 +112,16 @@ fn text(buffer: &Buffer) -> String {
         .join("\n")
 }
 
+/// Types `value` into the field under the cursor by keystrokes: Enter, clear, the text, Enter.
+fn type_in(app: &mut App, value: &str) {
+    press(app, KeyCode::Enter);
+    update(app, Action::Input(tui_input::InputRequest::DeleteLine));
+    for c in value.chars() {
+        press(app, KeyCode::Char(c));
+    }
+    press(app, KeyCode::Enter);
+}
+
 /// The app with body 1's ν set to 0.6 by keystrokes: invalid, and the last results stay.
 fn invalid_app() -> App {
     let mut app = app();
@@ -119,12 +129,7 @@ fn invalid_app() -> App {
         BodyIndex::One,
         BodyField::PoissonRatio,
     )));
-    press(&mut app, KeyCode::Enter);
-    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
-    for c in "0.6".chars() {
-        press(&mut app, KeyCode::Char(c));
-    }
-    press(&mut app, KeyCode::Enter);
+    type_in(&mut app, "0.6");
     app
 }
 
@@ -422,12 +427,7 @@ fn no_color_holds_in_every_tab() {
 /// The app with v₀ typed in by keystrokes, every solve done.
 fn app_with_speed(v0: &str) -> App {
     let mut app = app();
-    press(&mut app, KeyCode::Enter);
-    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
-    for c in v0.chars() {
-        press(&mut app, KeyCode::Char(c));
-    }
-    press(&mut app, KeyCode::Enter);
+    type_in(&mut app, v0);
     settle(&mut app);
     app
 }
@@ -591,4 +591,84 @@ fn engine_panel_shows_the_translation_and_cycles_engines() {
     press(&mut app, KeyCode::Esc);
     let screen = text(render(&app, 120, 40).backend().buffer());
     assert!(!screen.contains("Engine 2/9"), "closed:\n{screen}");
+}
+
+/// The app with every model solved by explicit Euler at 50 µs, a step at which it blows up.
+fn unstable_app() -> App {
+    let mut app = app();
+    for (field, value) in [(Field::Method, "euler"), (Field::Dt, "50 µs")] {
+        app.cursor = Cursor::Field(field);
+        type_in(&mut app, value);
+        settle(&mut app);
+    }
+    app
+}
+
+#[test]
+fn a_failed_solve_says_why_in_the_results_and_on_the_chart() {
+    let app = unstable_app();
+    for (w, h) in [(80, 24), (120, 40), (160, 48)] {
+        let screen = text(render(&app, w, h).backend().buffer());
+        let rows: Vec<&str> = screen
+            .lines()
+            .filter(|l| l.contains("✗ euler: the method is unstable"))
+            .collect();
+        // Every checked model's row, and the chart, say it; no row is a bare ✗.
+        assert!(rows.len() >= 4, "{w}×{h}:\n{screen}");
+        if std::env::var_os("SHOW_SCREENS").is_some() {
+            println!("{screen}");
+        }
+        assert!(!screen.contains("✗ euler:  ") && !screen.contains("✗ euler:\n"));
+    }
+}
+
+/// The data cursor's readout on F(t) is each model's force at that time on its dense output, in
+/// the chart's units; `<` moves it back, Esc hides it.
+#[test]
+fn the_data_cursor_reads_each_curve_at_its_place() {
+    let mut app = app();
+    press(&mut app, KeyCode::Char('>'));
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    let line = screen
+        .lines()
+        .find(|l| l.contains("t = "))
+        .unwrap_or_else(|| panic!("no readout:\n{screen}"));
+    let after = &line[line.find("t = ").unwrap() + 4..];
+    let (number, rest) = after.split_once(' ').unwrap();
+    assert!(rest.starts_with("µs"), "{line}");
+    let t = number.parse::<f64>().unwrap() * 1e-6;
+    for model in [ForceModel::Proposed, ForceModel::HuntCrossley] {
+        let solution = app.solutions.solution(model).unwrap();
+        let f = solution.trajectory.at(t).f;
+        let expected = hertz_tui::ui::units::engineering(f, hertz_tui::ui::units::NEWTON, 4);
+        assert!(
+            line.contains(&expected),
+            "{model:?} F({t}) = {expected} in {line}"
+        );
+    }
+    press(&mut app, KeyCode::Char('<'));
+    assert_eq!(app.data_cursor, Some(490));
+    press(&mut app, KeyCode::Esc);
+    assert_eq!(app.data_cursor, None);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(!screen.contains("t = "));
+}
+
+/// At 80×24 the scrolled form keeps the header of its top section in view, wherever the cursor.
+#[test]
+fn the_compact_form_keeps_its_section_header_in_view() {
+    let mut app = app();
+    for _ in 0..20 {
+        let screen = text(render(&app, 80, 24).backend().buffer());
+        let lines: Vec<&str> = screen.lines().collect();
+        let pane = lines.iter().position(|l| l.starts_with("Scene")).unwrap();
+        let first = lines[pane + 1];
+        assert!(
+            ["Body 1", "Body 2", "Impact"]
+                .iter()
+                .any(|h| first.starts_with(h)),
+            "{screen}"
+        );
+        press(&mut app, KeyCode::Down);
+    }
 }

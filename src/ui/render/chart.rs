@@ -7,14 +7,18 @@ use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Wrap};
 
-use crate::chart::{Chart, Ink, model_glyph};
+use crate::chart::{Chart, Ink, Mark, Rule, model_glyph};
 use crate::model::ForceModel;
+use crate::model::impact::Sample;
 use crate::ui::app::{App, ChartKind};
+use crate::ui::data_cursor::{self, FULL};
 use crate::ui::plot::{Look, Series, plot};
 use crate::ui::theme::Role;
+use crate::ui::units::{self, METRE, METRE_PER_SECOND, NEWTON, SECOND};
 
 use super::common::{model_name, pane, span};
 use super::graph;
+use super::results::reason_first;
 
 /// The models drawn.
 fn drawn_models(app: &App) -> Vec<ForceModel> {
@@ -29,7 +33,7 @@ fn failures(app: &App) -> Vec<String> {
     app.checked_models()
         .into_iter()
         .filter_map(|m| match app.solutions.result(m) {
-            Some(Err(message)) => Some(format!("✗ {}: {message}", m.name())),
+            Some(Err(message)) => Some(format!("✗ {}: {}", m.name(), reason_first(message))),
             _ => None,
         })
         .collect()
@@ -44,25 +48,112 @@ pub fn budget(columns: u16, rows: u16) -> (usize, usize) {
     )
 }
 
-/// The chart of `kind` for the models of `app` drawn in `columns` × `rows` cells.
+/// The chart of `kind` for the models of `app` drawn in `columns` × `rows` cells: the focused
+/// model's peak labelled with its value, and the data cursor where it stands.
 pub fn describe(app: &App, kind: ChartKind, columns: u16, rows: u16) -> Chart {
     let models = drawn_models(app);
-    let n = 2 * usize::from(columns) * usize::from(app.marker.dots_per_cell());
-    let series: Vec<Series> = models
+    let series: Vec<&Series> = models
         .iter()
-        .filter_map(|&m| app.solutions.solution(m).map(|s| Series::sample(m, s, n)))
+        .filter_map(|&m| app.solutions.samples(m))
         .collect();
     let (max_x, max_y) = budget(columns, rows);
-    let mut chart =
-        plot(kind, &series, max_x, max_y).into_chart(kind.title().to_string(), |m| Look {
-            name: model_name(m, 9).to_string(),
-            ink: Ink::Model(m),
-            glyph: model_glyph(m),
-            focused: m == app.focused,
-            steps: false,
-        });
+    let p = plot(kind, &series, max_x, max_y);
+    let (x_scale, y_scale) = (p.x.scale, p.y.scale);
+    let x_range = p.x.bounds;
+    let mut chart = p.into_chart(kind.title().to_string(), |m| Look {
+        name: model_name(m, 9).to_string(),
+        ink: Ink::Model(m),
+        glyph: model_glyph(m),
+        focused: m == app.focused,
+        steps: false,
+    });
     chart.notes = failures(app);
+    if let Some(s) = app.solutions.samples(app.focused) {
+        let (peak, label) = match kind {
+            ChartKind::VelocityDisplacement => (s.deepest, ("x_max", s.deepest.0, METRE)),
+            ChartKind::ForceDisplacement => (s.force_peak_x, ("F_max", s.force_peak_x.1, NEWTON)),
+            ChartKind::ForceTime => (s.force_peak_t, ("F_max", s.force_peak_t.1, NEWTON)),
+        };
+        chart.marks.push(Mark {
+            at: (peak.0 / x_scale, peak.1 / y_scale),
+            ink: Ink::Model(app.focused),
+            glyph: model_glyph(app.focused),
+            label: Some(format!(
+                "{} {}",
+                label.0,
+                units::engineering(label.1, label.2, 4)
+            )),
+        });
+    }
+    if let Some(at) = app.data_cursor {
+        let x = x_range[0] + (x_range[1] - x_range[0]) * f64::from(at) / f64::from(FULL);
+        cursor(app, kind, &models, &mut chart, x, (x_scale, y_scale));
+    }
     chart
+}
+
+/// The data cursor at display value `x`: a rule, a dot where each curve passes, and the readout of
+/// every curve's value there, in the chart's units.
+fn cursor(
+    app: &App,
+    kind: ChartKind,
+    models: &[ForceModel],
+    chart: &mut Chart,
+    x: f64,
+    (x_scale, y_scale): (f64, f64),
+) {
+    let (x_unit, y_name, y_unit) = match kind {
+        ChartKind::ForceDisplacement => (METRE, "F", NEWTON),
+        ChartKind::ForceTime => (SECOND, "F", NEWTON),
+        ChartKind::VelocityDisplacement => (METRE, "v", METRE_PER_SECOND),
+    };
+    let x_si = x * x_scale;
+    let x_name = if kind == ChartKind::ForceTime {
+        "t"
+    } else {
+        "x"
+    };
+    let mut parts = vec![format!(
+        "{x_name} = {}",
+        units::engineering(x_si, x_unit, 4)
+    )];
+    for &m in models {
+        let (Some(solution), Some(samples)) = (app.solutions.solution(m), app.solutions.samples(m))
+        else {
+            continue;
+        };
+        let readings = data_cursor::read(kind, solution, &samples.samples, x_si);
+        let value = |r: &Sample| match kind {
+            ChartKind::VelocityDisplacement => r.v,
+            _ => r.f,
+        };
+        for r in &readings {
+            chart.marks.push(Mark {
+                at: (x, value(r) / y_scale),
+                ink: Ink::Model(m),
+                glyph: '●',
+                label: None,
+            });
+        }
+        let values: Vec<String> = readings
+            .iter()
+            .map(|r| units::engineering(value(r), y_unit, 4))
+            .collect();
+        if !values.is_empty() {
+            parts.push(format!(
+                "{} {y_name} {}",
+                model_name(m, 9),
+                values.join(" / ")
+            ));
+        }
+    }
+    chart.rules.push(Rule {
+        at: x,
+        horizontal: false,
+        ink: Ink::Foreground,
+        label: String::new(),
+    });
+    chart.readout = Some(parts.join(" · "));
 }
 
 /// Draws the chart of `kind`; `single` where it is the only one shown, so the title says which
@@ -87,23 +178,23 @@ pub fn render(
     let inner = block.inner(area);
     if drawn_models(app).is_empty() {
         let failed = failures(app);
-        let text = if app.is_computing() {
-            "computing…".to_string()
+        let (texts, role) = if app.is_computing() {
+            (vec!["computing…".to_string()], Role::Muted)
         } else if app.checked_models().is_empty() {
-            "no model checked: Space on a model draws it".to_string()
+            (
+                vec!["no model checked: Space on a model draws it".to_string()],
+                Role::Muted,
+            )
         } else if !failed.is_empty() {
-            failed.join(" · ")
+            (failed, Role::Error)
         } else {
-            "no solution to draw".to_string()
+            (vec!["no solution to draw".to_string()], Role::Muted)
         };
-        let role = if failed.is_empty() {
-            Role::Muted
-        } else {
-            Role::Error
-        };
-        let note = Paragraph::new(Line::from(span(text, theme.style(role))))
-            .wrap(Wrap { trim: true })
-            .block(block);
+        let lines: Vec<Line> = texts
+            .into_iter()
+            .map(|t| Line::from(span(t, theme.style(role))))
+            .collect();
+        let note = Paragraph::new(lines).wrap(Wrap { trim: true }).block(block);
         frame.render_widget(note, area);
         return;
     }

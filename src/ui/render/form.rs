@@ -74,11 +74,24 @@ fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
 /// a header line per section, scrolled to keep the cursor in view.
 enum Placement {
     Panes(Vec<(Section, Rect, Vec<Row>)>),
+    /// One scrolled list; `pinned` is the header of the section at the top when the list is
+    /// scrolled past it, drawn on the first row with the rows from `offset` below it.
     List {
         area: Rect,
         rows: Vec<Row>,
         offset: usize,
+        pinned: Option<usize>,
     },
+}
+
+impl Placement {
+    /// Where the scrolled rows of a list go: below its pinned header, if any.
+    fn list_rows(area: Rect, pinned: Option<usize>) -> Rect {
+        match pinned {
+            Some(_) => Rect::new(area.x, area.y + 1, area.width, area.height - 1),
+            None => area,
+        }
+    }
 }
 
 fn place(app: &App, area: Rect, roomy: bool) -> Placement {
@@ -105,7 +118,9 @@ fn place(app: &App, area: Rect, roomy: bool) -> Placement {
     }
     let inner = pane("Scene", app.theme, roomy).inner(area);
     let mut list: Vec<Row> = Vec::new();
+    let mut headers: Vec<usize> = Vec::new();
     for (section, rows) in sections {
+        headers.push(list.len());
         list.push(Row::Note(title(app, section), Role::Title));
         list.extend(rows);
     }
@@ -116,10 +131,26 @@ fn place(app: &App, area: Rect, roomy: bool) -> Placement {
     let height = inner.height as usize;
     let max_offset = list.len().saturating_sub(height);
     let offset = cursor_row.saturating_sub(height / 2).min(max_offset);
-    Placement::List {
-        area: inner,
-        rows: list,
-        offset,
+    // The header of the section at the top stays in view: pinned on the first row when the list
+    // is scrolled past it, the rows continuing below it.
+    let header = headers.iter().rev().find(|&&h| h <= offset).copied();
+    match header {
+        Some(h) if h < offset && inner.height > 2 => Placement::List {
+            area: inner,
+            rows: list,
+            offset: if cursor_row > offset {
+                offset + 1
+            } else {
+                offset
+            },
+            pinned: Some(h),
+        },
+        _ => Placement::List {
+            area: inner,
+            rows: list,
+            offset,
+            pinned: None,
+        },
     }
 }
 
@@ -138,9 +169,14 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             area: inner,
             rows,
             offset,
+            pinned,
         } => {
             frame.render_widget(pane("Scene", app.theme, roomy), area);
-            draw_rows(frame, inner, app, &rows, offset);
+            if let Some(h) = pinned {
+                draw_rows(frame, inner, app, &rows[h..=h], 0);
+            }
+            let below = Placement::list_rows(inner, pinned);
+            draw_rows(frame, below, app, &rows, offset);
         }
     }
 }
@@ -168,7 +204,8 @@ pub fn field_at(app: &App, area: Rect, roomy: bool, position: Position) -> Optio
             area: inner,
             rows,
             offset,
-        } => pick(inner, &rows, offset),
+            pinned,
+        } => pick(Placement::list_rows(inner, pinned), &rows, offset),
     }
 }
 

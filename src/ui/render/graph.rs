@@ -16,6 +16,8 @@ use crate::chart::{Chart, Ink, place_ticks};
 use crate::ui::marker::MarkerStyle;
 use crate::ui::theme::{Role, Theme, sample};
 
+use super::common::wrap;
+
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ChartFrame {
@@ -143,14 +145,19 @@ impl Canvas {
         self.cells.get_mut(row * usize::from(self.width) + col)
     }
 
-    fn set(&mut self, x: f64, y: f64, ink: Ink, bold: bool) {
-        if x < -0.5 || y < -0.5 {
+    /// The dot nearest a fractional dot position (`None` left of or below the canvas).
+    fn nearest(x: f64, y: f64) -> Option<(i64, i64)> {
+        (x >= -0.5 && y >= -0.5 && x.is_finite() && y.is_finite())
+            .then(|| (x.round() as i64, y.round() as i64))
+    }
+
+    fn set_dot(&mut self, (x, y): (i64, i64), ink: Ink, bold: bool) {
+        let (Ok(x), Ok(y)) = (u32::try_from(x), u32::try_from(y)) else {
             return;
-        }
-        let (x, y) = (x.round() as u32, y.round() as u32);
-        let (dx, dy) = (self.dx, self.dy);
+        };
+        let braille = self.dx == 2 && self.dy == 4;
         if let Some(cell) = self.cell_mut(x, y) {
-            cell.dots |= if dx == 2 && dy == 4 {
+            cell.dots |= if braille {
                 BRAILLE[3 - (y % 4) as usize][(x % 2) as usize]
             } else {
                 1
@@ -159,16 +166,39 @@ impl Canvas {
         }
     }
 
-    /// A straight line between two dots, one dot at a time (clipped to the canvas).
+    fn set(&mut self, x: f64, y: f64, ink: Ink, bold: bool) {
+        if let Some(dot) = Canvas::nearest(x, y) {
+            self.set_dot(dot, ink, bold);
+        }
+    }
+
+    /// A straight line between two dots, one dot at a time (clipped to the canvas): from the dot
+    /// after `a`'s to `b`'s, so that a polyline sets each dot once; a segment within one dot sets
+    /// nothing new.
     fn line(&mut self, a: (f64, f64), b: (f64, f64), ink: Ink, bold: bool) {
-        let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
-        if !steps.is_finite() || steps > 1e5 {
+        let (Some(a), Some(b)) = (Canvas::nearest(a.0, a.1), Canvas::nearest(b.0, b.1)) else {
+            // An end off the canvas: fall back to stepping the fractional line, clipped.
+            let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
+            if steps.is_finite() && steps <= 1e5 {
+                let steps = steps.max(1.0) as u32;
+                for k in 0..=steps {
+                    let s = f64::from(k) / f64::from(steps);
+                    self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
+                }
+            }
+            return;
+        };
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let steps = dx.abs().max(dy.abs());
+        if steps == 0 || steps > 100_000 {
+            self.set_dot(b, ink, bold);
             return;
         }
-        let steps = steps.max(1.0) as u32;
-        for k in 0..=steps {
-            let s = f64::from(k) / f64::from(steps);
-            self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
+        for k in 1..=steps {
+            // Integer DDA, rounded to the nearest dot.
+            let x = a.0 + (2 * dx * k + steps).div_euclid(2 * steps);
+            let y = a.1 + (2 * dy * k + steps).div_euclid(2 * steps);
+            self.set_dot((x, y), ink, bold);
         }
     }
 
@@ -218,8 +248,8 @@ fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) 
                 .iter()
                 .filter_map(|&p| canvas.to_dots(chart, p))
                 .collect();
-            if let [only] = pts.as_slice() {
-                canvas.set(only.0, only.1, series.ink, bold);
+            if let Some(first) = pts.first() {
+                canvas.set(first.0, first.1, series.ink, bold);
             }
             let mut travelled = spacing / 2.0;
             for w in pts.windows(2) {
@@ -254,16 +284,14 @@ fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) 
     }
 }
 
-fn cell_symbol(cell: &Cell, marker: MarkerStyle) -> Option<String> {
+fn cell_symbol(cell: &Cell, marker: MarkerStyle) -> Option<char> {
     if cell.dots == 0 {
         return None;
     }
     Some(match marker {
-        MarkerStyle::Braille => char::from_u32(0x2800 + u32::from(cell.dots))
-            .unwrap_or('•')
-            .to_string(),
-        MarkerStyle::Dot => "•".to_string(),
-        MarkerStyle::Block => "█".to_string(),
+        MarkerStyle::Braille => char::from_u32(0x2800 + u32::from(cell.dots)).unwrap_or('•'),
+        MarkerStyle::Dot => '•',
+        MarkerStyle::Block => '█',
     })
 }
 
@@ -299,7 +327,7 @@ fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: Mar
             } else {
                 styled(ink, bold)
             };
-            buf[(x, y)].set_symbol(&symbol).set_style(style);
+            buf[(x, y)].set_char(symbol).set_style(style);
         }
     }
 }
@@ -341,11 +369,22 @@ fn axes(
     let title = theme.style(Role::Label).add_modifier(Modifier::BOLD);
     put(buf, inner.x, inner.y, &chart.y.title, title, inner);
     let x_title = width(&chart.x.title);
+    if let Some(readout) = &chart.readout {
+        // The cursor's reading takes the row above the plot after the y title.
+        let x = inner.x + width(&chart.y.title) + 2;
+        put(buf, x, inner.y, readout, theme.style(Role::Normal), inner);
+        if f.x_title_below {
+            let x = inner.right().saturating_sub(x_title);
+            put(buf, x, axis_y + 2, &chart.x.title, title, inner);
+        }
+        return;
+    }
     if f.x_title_below {
         let x = inner.right().saturating_sub(x_title);
         put(buf, x, axis_y + 2, &chart.x.title, title, inner);
-    } else if width(&chart.y.title) + 2 + x_title <= inner.width {
-        let x = inner.right().saturating_sub(x_title);
+    } else if width(&chart.y.title) + 3 + x_title <= inner.width {
+        // A blank column after it, so it never runs into a neighbouring chart's title.
+        let x = inner.right().saturating_sub(x_title + 1);
         put(buf, x, inner.y, &chart.x.title, title, inner);
     }
 }
@@ -387,10 +426,28 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
         };
         put(buf, x, row, label, theme.ink(mark.ink), plot);
     }
-    for (i, note) in chart.notes.iter().enumerate() {
-        let y = plot.y + 1 + i as u16;
-        let text: String = note.chars().take(usize::from(plot.width)).collect();
-        put(buf, plot.x + 1, y, &text, theme.style(Role::Error), plot);
+    // Notes wrapped to the plot's width from its second row, where they leave two thirds of the
+    // plot to the curves; else one line naming what has no curve.
+    let lines: Vec<String> = chart
+        .notes
+        .iter()
+        .flat_map(|note| wrap(note, usize::from(plot.width.saturating_sub(2))))
+        .collect();
+    let lines = if lines.len() <= usize::from(plot.height / 3) {
+        lines
+    } else {
+        let names: Vec<&str> = chart
+            .notes
+            .iter()
+            .map(|n| n.trim_start_matches("✗ ").split(':').next().unwrap_or(n))
+            .collect();
+        wrap(
+            &format!("✗ no curve: {}", names.join(", ")),
+            usize::from(plot.width.saturating_sub(2)),
+        )
+    };
+    for (y, line) in (plot.y + 1..plot.bottom()).zip(lines) {
+        put(buf, plot.x + 1, y, &line, theme.style(Role::Error), plot);
     }
 }
 
@@ -582,6 +639,7 @@ mod tests {
                 label: "v_p".into(),
             }],
             notes: Vec::new(),
+            readout: None,
         }
     }
 

@@ -1,6 +1,6 @@
 //! Rendering: one pure function per pane, each drawing from `&App` only.
 
-mod chart;
+pub mod chart;
 mod common;
 mod editable;
 pub(crate) mod form;

@@ -187,6 +187,26 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .chain(widths.iter().map(|&w| Constraint::Length(w)));
     let table = Table::new(rows, widths).header(header).column_spacing(1);
     frame.render_widget(table, table_area);
+    // A failed model's reason over its number columns, whole where the row has room: a table
+    // cell would cut it to the width of one number.
+    let reason_x = table_area.x + model_width + 1;
+    for (i, &model) in checked.iter().enumerate() {
+        let (Some(Err(message)), Some(y)) = (
+            app.solutions.result(model),
+            table_area.y.checked_add(1 + i as u16),
+        ) else {
+            continue;
+        };
+        if y >= table_area.bottom() || reason_x >= table_area.right() {
+            continue;
+        }
+        let width = table_area.right() - reason_x;
+        let text = fit_reason(&format!("✗ {}", reason_first(message)), usize::from(width));
+        frame.render_widget(
+            Paragraph::new(span(text, theme.style(Role::Error))),
+            Rect::new(reason_x, y, width, 1),
+        );
+    }
     frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
     if !roomy {
         // The compact header has no room for units: name them once, in the title row.
@@ -232,15 +252,35 @@ fn model_row<'a>(
                     .map(|(c, &w)| Cell::from((c.value)(&solution.summary).text(usize::from(w)))),
             ),
         ),
-        Some(Err(message)) => Row::new(vec![
-            name_cell,
-            Cell::from(span(format!("✗ {message}"), theme.style(Role::Error))),
-        ]),
+        // The reason is laid over the row after the table is drawn.
+        Some(Err(_)) => Row::new(vec![name_cell]),
         None => Row::new(vec![
             name_cell,
             Cell::from(span("computing…", theme.style(Role::Muted))),
         ]),
     }
+}
+
+/// A solver message with its conclusion first: `euler: energy grew by 347 % at t = …: the method
+/// is unstable at this step` → `euler: the method is unstable at this step — energy grew by …`,
+/// so that a row cut short still says why.
+pub fn reason_first(message: &str) -> String {
+    let parts: Vec<&str> = message.split(": ").collect();
+    match parts.as_slice() {
+        [who, detail @ .., conclusion] if !detail.is_empty() => {
+            format!("{who}: {conclusion} — {}", detail.join(": "))
+        }
+        _ => message.to_string(),
+    }
+}
+
+/// `text` in `width` columns, cut with … where longer.
+fn fit_reason(text: &str, width: usize) -> String {
+    if text.chars().count() <= width {
+        return text.to_string();
+    }
+    let kept: String = text.chars().take(width.saturating_sub(1)).collect();
+    format!("{kept}…")
 }
 
 /// The quasistatic block: k, n, contact radius or half-width, p₀, and the elastic estimates.
@@ -292,4 +332,24 @@ fn quasistatic_block(app: &App, width: usize, max_lines: usize) -> Vec<Line<'sta
         ));
     }
     flow(items, width, max_lines, Span::raw("  "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_reason_leads_with_its_conclusion() {
+        assert_eq!(
+            reason_first(
+                "euler: energy grew by 347.4 % at t = 5.000000e-5 s: the method is unstable at \
+                 this step"
+            ),
+            "euler: the method is unstable at this step — energy grew by 347.4 % at t = \
+             5.000000e-5 s"
+        );
+        assert_eq!(reason_first("contact did not end"), "contact did not end");
+        assert_eq!(fit_reason("✗ abcdef", 5), "✗ ab…");
+        assert_eq!(fit_reason("✗ ab", 5), "✗ ab");
+    }
 }
