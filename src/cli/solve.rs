@@ -6,8 +6,8 @@ use super::args::{SceneSelection, SolveArgs};
 use super::error::CliError;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
-use crate::model::warnings::{ModelWarning, impact_warnings, scene_warnings};
-use crate::model::{ForceModel, Quasistatic, Scene};
+use crate::model::warnings::{ModelWarning, end_warning, scene_warnings};
+use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 
 /// Everything `solve` computed; serialized as the JSON output.
 #[derive(Debug, Serialize)]
@@ -145,30 +145,36 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
     let quasistatic = scene.quasistatic()?;
     let params = scene.impact_params(&quasistatic);
     let options = solve_options(args);
-    let mut warnings: Vec<WarningRow> = scene_warnings(&scene.pair()?, &quasistatic)
-        .into_iter()
-        .map(WarningRow::from)
-        .collect();
-    let impacts = models_or_all(&args.models)
+    let impacts: Vec<ImpactRow> = models_or_all(&args.models)
         .into_iter()
         .map(|model| {
             let result = impact::solve_impact(model, &params, &options);
-            if let Ok(solution) = &result {
-                warnings.extend(
-                    impact_warnings(&params, &solution.summary)
-                        .into_iter()
-                        .map(WarningRow::from),
-                );
-            }
             ImpactRow::new(model, &options, result.as_ref())
         })
         .collect();
+    let warnings = warning_rows(&scene, &quasistatic, &params, &impacts)?;
     Ok(SolveReport {
         scene,
         quasistatic,
         impacts,
         warnings,
     })
+}
+
+/// The scene's warnings, then each solved impact's.
+fn warning_rows(
+    scene: &Scene,
+    quasistatic: &Quasistatic,
+    params: &ImpactParams,
+    impacts: &[ImpactRow],
+) -> Result<Vec<WarningRow>, CliError> {
+    let mut warnings = scene_warnings(&scene.pair()?, quasistatic);
+    for row in impacts {
+        if let (Some(v_out), Some(t_contact)) = (row.v_out, row.t_contact) {
+            warnings.extend(end_warning(params, row.model, v_out, t_contact));
+        }
+    }
+    Ok(warnings.into_iter().map(WarningRow::from).collect())
 }
 
 /// The one model's solution that `--format csv` prints.

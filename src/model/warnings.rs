@@ -76,19 +76,31 @@ pub fn scene_warnings(pair: &ContactPair, q: &Quasistatic) -> Vec<ModelWarning> 
 /// δg/(k·v_out); relative to t_c that is rtol·(x_e + x_pl/e)/(v_out·t_c), whose factor is the
 /// condition number reported.
 pub fn impact_warnings(params: &ImpactParams, summary: &ImpactSummary) -> Vec<ModelWarning> {
-    let mut out = Vec::new();
-    if summary.model == ForceModel::Proposed && params.plastic_indentation > 0.0 {
-        let x_e = params.law.max_approach(params.mass, params.v0);
-        let reach = x_e + params.plastic_indentation / params.restitution;
-        let condition = reach / (summary.v_out * summary.t_contact);
-        if condition.is_nan() || condition > MAX_END_CONDITION {
-            out.push(ModelWarning::IllConditionedEnd {
-                model: summary.model,
-                condition,
-                e_out: summary.e_out,
-                x_pl_ratio: params.plastic_indentation / x_e,
-            });
-        }
+    end_warning(params, summary.model, summary.v_out, summary.t_contact)
+        .into_iter()
+        .collect()
+}
+
+/// The ill-conditioned-end warning of [`impact_warnings`] from the three numbers it needs (exit
+/// speed m/s, contact time s), for callers that keep only those.
+pub fn end_warning(
+    params: &ImpactParams,
+    model: ForceModel,
+    v_out: f64,
+    t_contact: f64,
+) -> Option<ModelWarning> {
+    if model != ForceModel::Proposed || params.plastic_indentation <= 0.0 {
+        return None;
     }
-    out
+    let x_e = params.law.max_approach(params.mass, params.v0);
+    let reach = x_e + params.plastic_indentation / params.restitution;
+    let condition = reach / (v_out * t_contact);
+    (condition.is_nan() || condition > MAX_END_CONDITION).then_some(
+        ModelWarning::IllConditionedEnd {
+            model,
+            condition,
+            e_out: v_out / params.v0,
+            x_pl_ratio: params.plastic_indentation / x_e,
+        },
+    )
 }

@@ -545,3 +545,40 @@ fn help_and_version_work() {
         assert!(out.contains(flag), "{flag} missing:\n{out}");
     }
 }
+
+#[test]
+fn solve_json_warns_where_the_theory_or_the_numbers_do_not_hold() {
+    // At 50 m/s a 10 mm steel sphere's contact radius is 0.23 R: outside Hertz's a ≪ R.
+    let fast = json(&[
+        "solve",
+        "--scene",
+        "steel-sphere-r10-plate",
+        "--set",
+        "impact.v0=50",
+        "--model",
+        "hunt-crossley",
+    ]);
+    let kinds: Vec<&str> = fast["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, ["large-contact"]);
+    assert!(fast["warnings"][0]["ratio"].as_f64().unwrap() > 0.1);
+    // e = 0.05 on the Fig. 5 scene: the proposed model's bodies creep apart along F ≈ 0.
+    let grazing = json(&[
+        "solve",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--set",
+        "impact.restitution=0.05",
+        "--model",
+        "proposed",
+    ]);
+    assert_eq!(grazing["warnings"][0]["kind"], "ill-conditioned-end");
+    assert!(grazing["warnings"][0]["condition"].as_f64().unwrap() > 10.0);
+    // The Fig. 5 scene as published has nothing to warn about.
+    let fig5 = json(&["solve", "--scene", "fig5-steel-sphere-r10-plate"]);
+    assert_eq!(fig5["warnings"].as_array().map(Vec::len), Some(0));
+}
