@@ -103,36 +103,12 @@ pub fn line_contact_impact(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::body::{Body, Shape};
     use crate::model::cylinder::scene_fit;
-    use crate::model::material::tests::steel;
-    use crate::model::pair::ContactPair;
-
-    fn cylinder() -> Body {
-        Body {
-            shape: Shape::Cylinder {
-                radius: 0.02,
-                length: 0.1,
-            },
-            mass: Some(1.0),
-            material: steel(),
-        }
-    }
-
-    fn plane() -> Body {
-        Body {
-            shape: Shape::Plane,
-            mass: None,
-            material: steel(),
-        }
-    }
+    use crate::model::cylinder::table_2_tests::{cylinder_on_plane, two_cylinders};
 
     #[test]
     fn the_exact_law_stores_the_impact_energy_and_the_fit_departs_by_a_fraction_of_a_percent() {
-        for pair in [
-            ContactPair::new(cylinder(), cylinder()).unwrap(),
-            ContactPair::new(cylinder(), plane()).unwrap(),
-        ] {
+        for pair in [two_cylinders(), cylinder_on_plane()] {
             let line = LineContact::of(&pair).unwrap();
             let mass = pair.reduced_mass();
             for v0 in [0.1, 0.5, 1.0] {
