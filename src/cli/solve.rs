@@ -168,7 +168,7 @@ fn warning_rows(
     params: &ImpactParams,
     impacts: &[ImpactRow],
 ) -> Result<Vec<WarningRow>, CliError> {
-    let mut warnings = scene_warnings(&scene.pair()?, quasistatic, params.v0);
+    let mut warnings = scene_warnings(&scene.pair()?, quasistatic);
     for row in impacts {
         if let (Some(v_out), Some(t_contact)) = (row.v_out, row.t_contact) {
             warnings.extend(end_warning(params, row.model, v_out, t_contact));

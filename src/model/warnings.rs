@@ -69,9 +69,9 @@ pub enum ModelWarning {
 /// Warnings about the scene itself: a sphere whose contact radius at the elastic F_max (eq 8) is
 /// not small against the smallest sphere radius of the pair; cylinders whose fitted law's impact
 /// departs from the exact line-contact law's by more than [`MAX_FIT_DEPARTURE`].
-pub fn scene_warnings(pair: &ContactPair, q: &Quasistatic, v0: f64) -> Vec<ModelWarning> {
+pub fn scene_warnings(pair: &ContactPair, q: &Quasistatic) -> Vec<ModelWarning> {
     let ContactGeometry::Point { contact_radius } = q.geometry else {
-        return fit_warning(pair, q, v0).into_iter().collect();
+        return fit_warning(pair, q).into_iter().collect();
     };
     let radius = pair.body1().shape.radius().min(pair.body2().shape.radius());
     let ratio = contact_radius / radius;
@@ -88,8 +88,11 @@ pub fn scene_warnings(pair: &ContactPair, q: &Quasistatic, v0: f64) -> Vec<Model
 }
 
 /// The [`ModelWarning::FitDeparts`] of a line contact, if its departure exceeds the limit.
-fn fit_warning(pair: &ContactPair, q: &Quasistatic, v0: f64) -> Option<ModelWarning> {
+fn fit_warning(pair: &ContactPair, q: &Quasistatic) -> Option<ModelWarning> {
     let line = LineContact::of(pair).ok()?;
+    // v₀ from the estimate's own energy balance, ½m·v₀² = k·x_max^{n+1}/(n+1) (eq 5 inverted).
+    let stored = q.k * q.x_max.powf(q.n + 1.0) / (q.n + 1.0);
+    let v0 = (2.0 * stored / q.reduced_mass).sqrt();
     let exact = line_contact_impact(&line, &q.law(), q.reduced_mass, v0).ok()?;
     let departure = exact.fit_error();
     (departure > MAX_FIT_DEPARTURE).then_some(ModelWarning::FitDeparts {
