@@ -1,6 +1,7 @@
 //! Line contact of parallel cylinders and of a cylinder on a plane (eqs 11–14), and its fitted law.
 
 mod approach;
+mod exact_impact;
 mod fit;
 mod root;
 mod scene;
@@ -19,6 +20,7 @@ use super::pair::ContactPair;
 use super::pressure::PressureLaw;
 
 pub use approach::LineContact;
+pub use exact_impact::{LineImpact, line_contact_impact};
 pub use fit::{FIT_SAMPLES, MIN_RANGE_RATIO, fit_power_law};
 pub use scene::{FIT_RANGE_LOWER_FRACTION, scene_fit};
 

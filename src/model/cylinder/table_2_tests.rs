@@ -35,11 +35,11 @@ fn plane() -> Body {
     }
 }
 
-fn two_cylinders() -> ContactPair {
+pub(super) fn two_cylinders() -> ContactPair {
     ContactPair::new(cylinder(), cylinder()).unwrap()
 }
 
-fn cylinder_on_plane() -> ContactPair {
+pub(super) fn cylinder_on_plane() -> ContactPair {
     ContactPair::new(cylinder(), plane()).unwrap()
 }
 

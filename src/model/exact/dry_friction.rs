@@ -11,8 +11,7 @@
 
 use super::ExactImpact;
 use super::elastic::elastic;
-use super::gauss_jacobi::singular_at_end;
-use super::hysteresis::nodes_for;
+use super::gauss_jacobi::{nodes_for, singular_at_end};
 use crate::model::force::ImpactParams;
 
 /// X_m^p − X^p from d = X_m − X without cancellation: X_m^p·(−expm1(p·ln(1 − d/X_m))).

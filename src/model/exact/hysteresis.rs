@@ -10,7 +10,7 @@
 //! starting at u = 1 + a > 0 exits at x = 0 with α·v_out = 1 + W₀(−e^{−(1+C)}) < 1. Only an
 //! integrator's error can carry the state across it (the solver then ends contact there and says so).
 
-use super::gauss_jacobi::{singular_at_end, singular_at_start};
+use super::gauss_jacobi::{nodes_for, singular_at_end, singular_at_start};
 use super::quadrature::tanh_sinh;
 use super::special::{unloading_root, y_minus_log1p};
 use super::{ExactImpact, elastic::elastic};
@@ -97,7 +97,8 @@ impl Integral {
 
 /// The exact impact of F = k·xⁿ(1 + α·ẋ) (eqs 19–20): x_max and v_out in closed form (docs/physics.md
 /// §3), the force peak at the root of (n+1)·D(V) = n·a·V, times by Gauss–Jacobi quadrature of
-/// dt = m·dv/F to `rtol` (tanh-sinh in x when the damping nearly stops the bodies). α = 0 is the elastic impact. `None` if a number comes out non-finite.
+/// dt = m·dv/F to `rtol` (tanh-sinh in x when the damping nearly stops the bodies). α = 0 is the
+/// elastic impact. `None` if a number comes out non-finite.
 pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactImpact> {
     let gauss = alpha * params.v0 <= GAUSS_JACOBI_MAX_DAMPING;
     hysteresis_with(params, alpha, rtol, gauss.then(|| nodes_for(rtol)))
@@ -107,18 +108,6 @@ pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactI
 /// loading interval [0, 1] that a Gauss rule's geometric convergence slows (ρ² < 10 beyond
 /// a ≈ 5). The paper's laws have a ≤ 1.5 (Hunt–Crossley) and ≤ 0.75 (Lankarani–Nikravesh).
 const GAUSS_JACOBI_MAX_DAMPING: f64 = 4.0;
-
-/// Gauss–Jacobi nodes per integral for a relative accuracy `rtol` of the times: the smooth
-/// remainders converge geometrically, at ≥ 1.1 digits per node on the damping range of the
-/// paper's laws and beyond (test `node_count_meets_the_tolerance`), so one node per digit plus
-/// three: 9 nodes at 1e-6, 15 at 1e-12.
-pub(crate) fn nodes_for(rtol: f64) -> usize {
-    let digits = -rtol.clamp(1e-16, 1e-2).log10();
-    (NODES_PER_DIGIT * digits).ceil() as usize + NODES_BASE
-}
-
-const NODES_PER_DIGIT: f64 = 1.0;
-const NODES_BASE: usize = 3;
 
 /// [`hysteresis`] with `size` Gauss–Jacobi nodes per integral, or tanh-sinh when `None`.
 pub(crate) fn hysteresis_with(

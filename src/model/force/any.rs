@@ -117,6 +117,12 @@ macro_rules! any_law {
                     $(AnyLaw::$variant(l) => l.stored_energy(x, phase)),*
                 }
             }
+
+            fn rate_independent(&self) -> bool {
+                match self {
+                    $(AnyLaw::$variant(l) => l.rate_independent()),*
+                }
+            }
         }
     };
 }

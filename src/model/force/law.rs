@@ -94,6 +94,13 @@ pub trait ForceLaw {
         0.0
     }
 
+    /// Whether F depends on x alone within each phase (a rate-independent hysteresis such as
+    /// Thornton's), so that ∮F dx over an impact is exact from [`ForceLaw::stored_energy`]: no
+    /// quadrature has to resolve the kink where such a law changes branch.
+    fn rate_independent(&self) -> bool {
+        false
+    }
+
     /// The energy the contact holds at approach x during `phase`, J: what the solver's energy
     /// guard adds to ½mẋ². Hertz's k·x^{n+1}/(n+1) unless the law's conservative part differs.
     fn stored_energy(&self, x: f64, _phase: Phase) -> f64 {

@@ -156,6 +156,11 @@ impl ForceLaw for Thornton {
         (dfdx, 0.0)
     }
 
+    /// Loading and unloading are each a force of x alone (Thornton 1997).
+    fn rate_independent(&self) -> bool {
+        true
+    }
+
     /// Loading: Hertz's k·x^{n+1}/(n+1) up to x_y, then + F_y·d + ½k_p·d² (d = x − x_y);
     /// unloading: k_u·(x − x_res)^{n+1}/(n+1), what the rebound gives back.
     fn stored_energy(&self, x: f64, phase: Phase) -> f64 {

@@ -50,13 +50,39 @@ fn phase_peak<L: ForceLaw>(
     for seg in &segments[near] {
         let (ta, tb) = (seg.t_start().max(t_lo), seg.t_end().min(t_hi));
         if tb > ta {
-            let peak = brent_max(|t| force(seg.eval(t)), ta, tb);
+            let peak = segment_peak(|t| force(seg.eval(t)), ta, tb);
             if peak.1 > best.1 {
                 best = peak;
             }
         }
     }
     best
+}
+
+/// Sub-intervals a step is sampled in before its peak is refined.
+const PEAK_SAMPLES: usize = 8;
+
+/// The maximum of `f` on one step [ta, tb]: f is sampled at [`PEAK_SAMPLES`] + 1 points and
+/// maximised (Brent's fmin) between the neighbours of the largest. An interpolant need not be
+/// unimodal over a whole step (a symplectic Euler step at loose resolution rises, dips and rises
+/// again), and an end peak found by a unimodality test would then hide a higher interior one.
+fn segment_peak(mut f: impl FnMut(f64) -> f64, ta: f64, tb: f64) -> (f64, f64) {
+    let at = |k: usize| ta + (tb - ta) * (k as f64 / PEAK_SAMPLES as f64);
+    let (mut k_best, mut f_best) = (0, f(ta));
+    for k in 1..=PEAK_SAMPLES {
+        let value = f(at(k));
+        if value > f_best {
+            (k_best, f_best) = (k, value);
+        }
+    }
+    let lo = at(k_best.saturating_sub(1));
+    let hi = at((k_best + 1).min(PEAK_SAMPLES));
+    let peak = brent_max(&mut f, lo, hi);
+    if peak.1 >= f_best {
+        peak
+    } else {
+        (at(k_best), f_best)
+    }
 }
 
 /// ∫ F_d·ẋ dt over [t_lo, t_hi] of one phase, in units of F_ref·x_e (F_d the dissipative force).
@@ -121,6 +147,14 @@ fn phase_work<L: ForceLaw>(
 /// ∮F dx over the contact of `run`, in units of ½mv₀²: k·x_end^{n+1}/(n+1) (the elastic part,
 /// exact) plus ∮F_d dx by quadrature on the dense output (F_ref·x_e = (n+1)/2·mv₀²).
 pub(crate) fn cycle_work<L: ForceLaw>(law: &L, sc: &Scales, run: &Run) -> f64 {
+    if law.rate_independent() {
+        // Work in, minus what the unloading branch gives back from x_max to the end, exactly.
+        let (x_max, x_end) = (run.y_switch[0] * sc.x, run.y_end[0] * sc.x);
+        let given_back =
+            law.stored_energy(x_max, Phase::Unloading) - law.stored_energy(x_end, Phase::Unloading);
+        let work = law.stored_energy(x_max, Phase::Loading) - given_back;
+        return work / (0.5 * sc.mass * sc.v * sc.v);
+    }
     let dissipative = phase_work(law, sc, &run.loading, Phase::Loading, (0.0, run.t_switch))
         + phase_work(
             law,
