@@ -12,6 +12,7 @@ pub mod app;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+pub mod chart_kind;
 pub mod data_cursor;
 pub mod export;
 pub mod field;

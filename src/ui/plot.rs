@@ -8,7 +8,7 @@ use std::borrow::Borrow;
 
 use crate::chart::{Chart, Ink, Series as ChartSeries};
 
-use super::app::ChartKind;
+use super::chart_kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
 
