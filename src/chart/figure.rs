@@ -185,9 +185,10 @@ fn text_style(size: u32, ink: RGBColor, h: HPos, v: VPos) -> TextStyle<'static> 
 fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Drawn<DB> {
     let (w, h) = area.dim_in_pixel();
     let (w, h) = (w as i32, h as i32);
+    // The legend stands right of the plot, where it covers no data.
     let p = Plot {
         x0: LEFT,
-        x1: w - RIGHT,
+        x1: w - RIGHT - legend_width(chart),
         y0: TOP,
         y1: h - BOTTOM,
     };
@@ -253,7 +254,7 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
     for s in &chart.series {
         let style = color(s.ink).stroke_width(if s.focused { 3 } else { 2 });
         for run in &s.runs {
-            let points: Vec<(i32, i32)> = run.iter().filter_map(|&q| p.at(chart, q)).collect();
+            let points = thinned(run.iter().filter_map(|&q| p.at(chart, q)));
             area.draw(&PathElement::new(points, style))?;
         }
         let glyph = text_style(16, color(s.ink), HPos::Center, VPos::Center);
@@ -295,21 +296,47 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
     Ok(())
 }
 
-/// The series' names with line samples and glyphs, in a box at the plot's top right.
+/// Pixels closer than this to the last point kept are dropped from a path: wide strokes drawn
+/// through many sub-pixel segments come out ragged at every joint.
+const MIN_STEP_PX: i32 = 3;
+
+/// `points` without those within [`MIN_STEP_PX`] of the previous one kept (the last always kept).
+fn thinned(points: impl Iterator<Item = (i32, i32)>) -> Vec<(i32, i32)> {
+    let mut out: Vec<(i32, i32)> = Vec::new();
+    let mut last_dropped = None;
+    for q in points {
+        match out.last() {
+            Some(&(x, y)) if (q.0 - x).abs().max((q.1 - y).abs()) < MIN_STEP_PX => {
+                last_dropped = Some(q);
+            }
+            _ => {
+                out.push(q);
+                last_dropped = None;
+            }
+        }
+    }
+    out.extend(last_dropped);
+    out
+}
+
+/// Space between the plot and its legend, px.
+const LEGEND_GAP: i32 = 12;
+
+/// Width the legend takes right of the plot (gap included), px; none without series.
+fn legend_width(chart: &Chart) -> i32 {
+    let longest = chart.series.iter().map(|s| s.name.chars().count()).max();
+    longest.map_or(0, |n| LEGEND_GAP + 44 + 7 * n as i32)
+}
+
+/// The series' names with line samples and glyphs, in a box right of the plot's top.
 fn legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart, p: &Plot) -> Drawn<DB> {
     if chart.series.is_empty() {
         return Ok(());
     }
     let row = 18;
-    let longest = chart
-        .series
-        .iter()
-        .map(|s| s.name.chars().count())
-        .max()
-        .unwrap_or(0) as i32;
-    let width = 44 + 8 * longest;
+    let width = legend_width(chart) - LEGEND_GAP;
     let height = row * chart.series.len() as i32 + 8;
-    let (x, y) = (p.x1 - width - 6, p.y0 + 6);
+    let (x, y) = (p.x1 + LEGEND_GAP, p.y0);
     area.draw(&Rectangle::new(
         [(x, y), (x + width, y + height)],
         WHITE.mix(0.85).filled(),
@@ -412,8 +439,8 @@ mod tests {
                 .and_then(|t| attr(t, "x"))
                 .unwrap_or_else(|| panic!("{label} in {svg}"))
         };
-        // x ticks 0, 2, …, 8 over the plot from LEFT to 640 − RIGHT.
-        let span = f64::from(640 - RIGHT - LEFT);
+        // x ticks 0, 2, …, 8 over the plot from LEFT to the legend.
+        let span = f64::from(640 - RIGHT - legend_width(&chart()) - LEFT);
         for (i, label) in ["0", "2", "4", "6", "8"].iter().enumerate() {
             let expected = f64::from(LEFT) + span * i as f64 / 4.0;
             assert!((label_x(label) - expected).abs() <= 1.0, "{label}");
@@ -437,6 +464,13 @@ mod tests {
             .count();
         assert_eq!(curves, 1, "{svg}");
         assert!(svg.contains("#00A0BE"), "hunt-crossley in cyan");
+    }
+
+    #[test]
+    fn paths_drop_points_closer_than_a_few_pixels_but_keep_their_ends() {
+        let points = [(0, 0), (1, 0), (2, 1), (5, 1), (6, 1), (7, 2)];
+        assert_eq!(thinned(points.into_iter()), [(0, 0), (5, 1), (7, 2)]);
+        assert_eq!(thinned([(0, 0)].into_iter()), [(0, 0)]);
     }
 
     #[test]

@@ -8,7 +8,7 @@ use crate::model::presets::Registry;
 use crate::model::study::stability::critical_step;
 use crate::model::study::sweep::{SweepSpec, sweep};
 use crate::model::{ForceModel, ImpactParams, Scene};
-use crate::ui::app::ChartKind;
+use crate::ui::chart_kind::ChartKind;
 use crate::ui::plot::{Look, Series, plot};
 use crate::ui::stability_plot;
 use crate::ui::studies::{self, StabilityData, StudyJob, StudyResult, StudySpec, SweepData};

@@ -92,26 +92,8 @@ pub enum Mode {
     Confirm(Confirm),
 }
 
-/// The charts, in the order `c` cycles them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ChartKind {
-    ForceDisplacement,
-    ForceTime,
-    VelocityDisplacement,
-}
-
-impl ChartKind {
-    pub const ALL: [ChartKind; 3] = [
-        ChartKind::ForceDisplacement,
-        ChartKind::VelocityDisplacement,
-        ChartKind::ForceTime,
-    ];
-
-    pub(super) fn next(self) -> ChartKind {
-        let i = ChartKind::ALL.iter().position(|&c| c == self).unwrap_or(0);
-        ChartKind::ALL[(i + 1) % ChartKind::ALL.len()]
-    }
-}
+/// Lives in its own module so that layouts and charts need not import the app state.
+pub use super::chart_kind::ChartKind;
 
 /// A line for the status bar: news of the last action.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -4,7 +4,7 @@
 
 use crate::model::impact::{ImpactSolution, Sample};
 
-use super::app::ChartKind;
+use super::chart_kind::ChartKind;
 
 /// Steps of the cursor along the axis: per mille of its length.
 pub const FULL: u16 = 1000;

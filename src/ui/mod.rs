@@ -14,6 +14,7 @@ mod app_daily_tests;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+pub mod chart_kind;
 pub mod data_cursor;
 mod edited;
 pub mod export;

@@ -8,13 +8,14 @@ use std::borrow::Borrow;
 
 use crate::chart::{Chart, Ink, Series as ChartSeries};
 
-use super::app::ChartKind;
+use super::chart_kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
 
 /// Samples taken of each solution once, when it arrives (evenly in t, the exact extrema added):
-/// two or more per braille column of any chart up to 300 columns wide, so no chart re-samples.
-pub const SAMPLES_PER_SOLVE: usize = 1200;
+/// about two per braille column of a 150-column chart on each of loading and unloading; lines are
+/// drawn between them, so wider charts stay connected.
+pub const SAMPLES_PER_SOLVE: usize = 600;
 
 /// One solution's samples and its exact extrema, under a key that says whose they are (a force
 /// model in the explorer; a method or the reference in the stability view).

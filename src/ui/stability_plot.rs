@@ -6,7 +6,7 @@ use crate::chart::{Chart, Ink, REFERENCE_GLYPH, method_glyph};
 use crate::model::ode::Method;
 use crate::model::study::stability::Verdict;
 
-use super::app::ChartKind;
+use super::chart_kind::ChartKind;
 use super::plot::{Look, Series, plot};
 use super::studies::{MethodRun, StabilityData};
 use super::units::sig;

@@ -4,7 +4,7 @@
 
 use ratatui::layout::{Constraint, Layout, Rect};
 
-use crate::ui::app::ChartKind;
+use crate::ui::chart_kind::ChartKind;
 
 /// The smallest terminal the explorer draws in.
 pub const MIN_WIDTH: u16 = 80;
