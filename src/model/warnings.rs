@@ -54,8 +54,8 @@ pub enum ModelWarning {
     /// The proposed model's contact ends where F = k·xⁿ + b·xⁿ⁻¹·ẋ grazes zero: the bodies creep
     /// apart along F ≈ 0 and the end time depends on digits the integration does not have.
     #[error(
-        "{model}: the end of contact is ill-conditioned (condition number {condition:.0}: e_out = \
-         {e_out:.3}, x_pl/x_e = {x_pl_ratio:.2}); t_contact and v_out may be off by that multiple \
+        "{model}: the end of contact is ill-conditioned (condition number {condition:.2e}: e_out = \
+         {e_out:.3}, x_pl/x_e = {x_pl_ratio:.3e}); t_contact and v_out may be off by that multiple \
          of the tolerance"
     )]
     IllConditionedEnd {

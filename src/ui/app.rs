@@ -12,6 +12,7 @@ use crate::model::presets::Registry;
 use crate::model::scene_file::View;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::study::stability::critical_step;
+use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 
 use super::action::Jump;
@@ -108,6 +109,9 @@ pub struct Valid {
     pub scene: Scene,
     pub quasistatic: Quasistatic,
     pub params: ImpactParams,
+    /// Where the scene leaves the theory's range (a contact not small against R, a cylinder fit
+    /// that departs from eqs 13–14), computed once per edit.
+    pub warnings: Vec<ModelWarning>,
 }
 
 /// Models checked when the explorer opens on a bare scene: the paper's Fig. 5 three plus elastic
@@ -498,10 +502,17 @@ impl App {
             Ok(quasistatic) => {
                 self.scene_error = None;
                 let params = self.draft.scene.impact_params(&quasistatic);
+                let warnings = self
+                    .draft
+                    .scene
+                    .pair()
+                    .map(|pair| scene_warnings(&pair, &quasistatic))
+                    .unwrap_or_default();
                 self.valid = Some(Valid {
                     scene: self.draft.scene.clone(),
                     quasistatic,
                     params,
+                    warnings,
                 });
                 if !self.request_solves(start) && !self.solutions.any_pending() {
                     // Only the estimate was recomputed.

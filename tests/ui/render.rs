@@ -672,3 +672,26 @@ fn the_compact_form_keeps_its_section_header_in_view() {
         press(&mut app, KeyCode::Down);
     }
 }
+
+/// A sphere struck at 50 m/s has a contact radius 0.23 of its radius: outside Hertz's a ≪ R. The
+/// explorer says so in the regime box, as `solve` does in its warnings; the Fig. 5 scene as
+/// published has nothing to warn about.
+#[test]
+fn the_regime_box_warns_where_hertz_theory_does_not_hold() {
+    let quiet = text(render(&app(), 160, 48).backend().buffer());
+    assert!(!quiet.contains('⚠'), "{quiet}");
+    let mut app = app();
+    app.cursor = Cursor::Field(Field::Number(SceneKey::V0));
+    press(&mut app, KeyCode::Enter);
+    update(&mut app, Action::Input(tui_input::InputRequest::DeleteLine));
+    for c in "50".chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    press(&mut app, KeyCode::Enter);
+    settle(&mut app);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(
+        screen.contains("⚠ contact radius a =") && screen.contains("of the sphere radius"),
+        "{screen}"
+    );
+}

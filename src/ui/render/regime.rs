@@ -8,6 +8,7 @@ use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
 use crate::model::recommend::recommend;
+use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::theme::Role;
 use crate::ui::units::sig;
@@ -129,6 +130,29 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         speed(onset.v_yield_mean_pressure),
         speed(onset.v_plastic_mean_pressure)
     );
+    // Warnings before the reason: the scene's, then each checked model's solved impact's.
+    let impact = app.checked_models().into_iter().filter_map(|model| {
+        let solution = app.solutions.solution(model)?;
+        Some(impact_warnings(&valid.params, &solution.summary))
+    });
+    let warnings: Vec<String> = valid
+        .warnings
+        .iter()
+        .cloned()
+        .chain(impact.flatten())
+        .map(|w| format!("⚠ {w}"))
+        .collect();
+    for warning in warnings {
+        let wrapped = wrap(&warning, width);
+        if lines.len() + wrapped.len() > max_lines {
+            break;
+        }
+        lines.extend(
+            wrapped
+                .into_iter()
+                .map(|l| Line::from(Span::styled(l, theme.style(Role::Warning)))),
+        );
+    }
     let room = max_lines.saturating_sub(lines.len());
     let why = wrap(&format!("why: {}", advice.why), width);
     // The reason whole, or not at all; then the other convention if a line is left.
