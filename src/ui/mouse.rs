@@ -1,13 +1,13 @@
 //! Mouse clicks and the wheel, hit-tested against the same layout the screen is drawn with: a
-//! click picks a tab, a field or a model (on its box: checks it); the wheel nudges the field under
-//! the pointer and moves the model focus.
+//! click picks a tab, a field or a model (on its box: checks it), or places the data cursor on a
+//! chart's plot; the wheel nudges the field under the pointer and moves the model focus.
 
 use ratatui::layout::{Position, Rect};
 
 use super::app::{App, Cursor};
 use super::edited;
 use super::field::Nudge;
-use super::render::{form, layout, models, tabs};
+use super::render::{chart, form, layout, models, tabs};
 use super::tab::Tab;
 
 /// What lies under the pointer in the explorer.
@@ -18,6 +18,8 @@ enum Target {
         model: crate::model::ForceModel,
         on_box: bool,
     },
+    /// A column of a chart's plot: the data cursor's place there, per mille of the axis.
+    Chart(u16),
 }
 
 fn target(app: &App, column: u16, row: u16) -> Option<Target> {
@@ -34,8 +36,18 @@ fn target(app: &App, column: u16, row: u16) -> Option<Target> {
     if let Some(field) = form::field_at(app, areas.form, areas.roomy, position) {
         return Some(Target::Field(field));
     }
-    models::model_at(app, areas.models, areas.roomy, position)
-        .map(|(model, on_box)| Target::Model { model, on_box })
+    if let Some(hit) = models::model_at(app, areas.models, areas.roomy, position) {
+        return Some(Target::Model {
+            model: hit.0,
+            on_box: hit.1,
+        });
+    }
+    areas
+        .charts
+        .iter()
+        .find(|(_, rect)| rect.contains(position))
+        .and_then(|&(kind, rect)| chart::cursor_at(app, kind, rect, areas.roomy, position))
+        .map(Target::Chart)
 }
 
 /// A left click at (column, row).
@@ -51,6 +63,7 @@ pub fn click(app: &mut App, column: u16, row: u16) {
                 app.focused = model;
             }
         }
+        Some(Target::Chart(at)) => app.data_cursor = Some(at),
         None => {}
     }
 }
@@ -67,6 +80,6 @@ pub fn wheel(app: &mut App, column: u16, row: u16, direction: Nudge) {
             app.cursor = Cursor::Model(model);
             app.move_cursor(direction == Nudge::Down);
         }
-        Some(Target::Tab(_)) | None => {}
+        Some(Target::Tab(_)) | Some(Target::Chart(_)) | None => {}
     }
 }

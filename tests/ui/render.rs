@@ -695,3 +695,54 @@ fn the_regime_box_warns_where_hertz_theory_does_not_hold() {
         "{screen}"
     );
 }
+
+/// A click on a chart's plot places the data cursor at that column: clicking the F(t) axis's
+/// tick for 50 µs reads t = 50 µs to within one column of a 100 µs axis.
+#[test]
+fn a_click_on_a_chart_places_the_data_cursor_there() {
+    let mut app = app();
+    update(&mut app, Action::Resize(160, 48));
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    let lines: Vec<&str> = screen.lines().collect();
+    let (title_row, title_col) = lines
+        .iter()
+        .enumerate()
+        .find_map(|(y, l)| {
+            l.find("F(t) force–time")
+                .map(|b| (y, l[..b].chars().count()))
+        })
+        .expect("the F(t) chart");
+    // The axis line under the plot, and its ticks ┴ (0, 10, …, 100 µs) in this chart's columns.
+    let (axis_row, ticks) = lines
+        .iter()
+        .enumerate()
+        .skip(title_row)
+        .find_map(|(y, l)| {
+            let cols: Vec<usize> = l
+                .chars()
+                .enumerate()
+                .skip(title_col)
+                .filter(|&(_, c)| c == '┴')
+                .map(|(x, _)| x)
+                .collect();
+            (cols.len() > 5).then_some((y, cols))
+        })
+        .expect("the F(t) axis");
+    let labels = lines[axis_row + 1];
+    assert!(labels.contains("50"), "{labels}");
+    let fifty = ticks[5];
+    update(&mut app, Action::Click(fifty as u16, (axis_row - 2) as u16));
+    assert!(app.data_cursor.is_some(), "the click placed the cursor");
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    let readout = screen
+        .lines()
+        .find(|l| l.contains("t = "))
+        .unwrap_or_else(|| panic!("no readout:\n{screen}"));
+    let after = &readout[readout.find("t = ").unwrap() + 4..];
+    let t: f64 = after.split(' ').next().unwrap().parse().unwrap();
+    let column = 100.0 / (ticks[10] - ticks[0]) as f64;
+    assert!(
+        (t - 50.0).abs() <= column,
+        "t = {t} µs, a column is {column} µs"
+    );
+}

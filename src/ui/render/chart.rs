@@ -3,7 +3,7 @@
 //! every model that failed.
 
 use ratatui::Frame;
-use ratatui::layout::Rect;
+use ratatui::layout::{Position, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Wrap};
 
@@ -13,7 +13,7 @@ use crate::model::impact::Sample;
 use crate::ui::app::{App, ChartKind};
 use crate::ui::data_cursor::{self, FULL};
 use crate::ui::plot::{Look, Series, plot};
-use crate::ui::theme::Role;
+use crate::ui::theme::{Role, Theme};
 use crate::ui::units::{self, METRE, METRE_PER_SECOND, NEWTON, SECOND};
 
 use super::common::{model_name, pane, span};
@@ -215,4 +215,28 @@ pub fn render(
         block
     };
     graph::render(frame, area, block, &chart, app.marker, theme);
+}
+
+/// The data cursor's place for a click at `position` on the chart `kind` drawn in `area`: the
+/// plot built and framed as the chart pane draws it, the column's share of the x axis.
+pub fn cursor_at(
+    app: &App,
+    kind: ChartKind,
+    area: Rect,
+    roomy: bool,
+    position: Position,
+) -> Option<u16> {
+    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    let chart = describe(
+        app,
+        kind,
+        inner.width.saturating_sub(7),
+        inner.height.saturating_sub(4),
+    );
+    let plot = graph::frame_of(inner, &chart).plot;
+    if plot.width < 2 || !plot.contains(position) {
+        return None;
+    }
+    let share = f64::from(position.x - plot.x) / f64::from(plot.width - 1);
+    Some((share * f64::from(FULL)).round() as u16)
 }
