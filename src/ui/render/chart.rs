@@ -205,16 +205,7 @@ pub fn render(
         inner.width.saturating_sub(7),
         inner.height.saturating_sub(4),
     );
-    let block = if roomy {
-        block.title_bottom(graph::legend(
-            &chart,
-            theme,
-            usize::from(area.width.saturating_sub(2)),
-        ))
-    } else {
-        block
-    };
-    graph::render(frame, area, block, &chart, app.marker, theme);
+    graph::render_with_legend(frame, area, block, &chart, (app.marker, theme), roomy);
 }
 
 /// The data cursor's place for a click at `position` on the chart `kind` drawn in `area`: the

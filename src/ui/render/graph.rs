@@ -474,6 +474,28 @@ pub fn render(
     labels(buf, chart, &f, theme, marker);
 }
 
+/// [`render`] with the legend along the block's bottom edge on roomy screens (compact panes have
+/// no bottom border to carry it).
+pub fn render_with_legend(
+    frame: &mut Frame,
+    area: Rect,
+    block: Block,
+    chart: &Chart,
+    (marker, theme): (MarkerStyle, Theme),
+    roomy: bool,
+) {
+    let block = if roomy {
+        block.title_bottom(legend(
+            chart,
+            theme,
+            usize::from(area.width.saturating_sub(2)),
+        ))
+    } else {
+        block
+    };
+    render(frame, area, block, chart, marker, theme);
+}
+
 /// The legend of `chart`'s series in their inks (name and line sample with its glyph), as many as
 /// fit in `width` columns, then "+N more".
 pub fn legend(chart: &Chart, theme: Theme, width: usize) -> Line<'static> {

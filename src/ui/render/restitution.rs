@@ -87,15 +87,8 @@ fn velocity_chart(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionDa
 }
 
 fn draw(frame: &mut Frame, area: Rect, app: &App, roomy: bool, title: String, chart: &Chart) {
-    let mut block = pane(title, app.theme, roomy);
-    if roomy {
-        block = block.title_bottom(graph::legend(
-            chart,
-            app.theme,
-            usize::from(area.width.saturating_sub(2)),
-        ));
-    }
-    graph::render(frame, area, block, chart, app.marker, app.theme);
+    let block = pane(title, app.theme, roomy);
+    graph::render_with_legend(frame, area, block, chart, (app.marker, app.theme), roomy);
 }
 
 fn table(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionData, roomy: bool) {

@@ -311,13 +311,6 @@ fn chart(
             .next()
             .unwrap_or_default();
     }
-    let mut block = pane(title, theme, roomy);
-    if roomy {
-        block = block.title_bottom(graph::legend(
-            &chart,
-            theme,
-            usize::from(area.width.saturating_sub(2)),
-        ));
-    }
-    graph::render(frame, area, block, &chart, app.marker, theme);
+    let block = pane(title, theme, roomy);
+    graph::render_with_legend(frame, area, block, &chart, (app.marker, theme), roomy);
 }
