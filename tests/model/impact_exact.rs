@@ -25,7 +25,7 @@ fn sphere(restitution: f64) -> ImpactParams {
 }
 
 /// Table 2's steel cylinder on a plate: n = 1.081, k = 1.91e9 N/m^n, m = 1 kg, at 0.5 m/s.
-fn cylinder(restitution: f64) -> ImpactParams {
+pub(crate) fn cylinder(restitution: f64) -> ImpactParams {
     ImpactParams {
         mass: 1.0,
         law: PowerLaw {

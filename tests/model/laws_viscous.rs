@@ -2,30 +2,18 @@
 //! against the damped-oscillator closed form, Hertz–viscous against its scale invariance and the
 //! engines' β-map, both contact-end rules, and the damping-parameter API.
 
-use hertz_tui::model::PowerLaw;
 use hertz_tui::model::force::kelvin_voigt::damping_ratio;
 use hertz_tui::model::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams};
 use hertz_tui::model::impact::{ImpactSummary, MethodUsed, SolveOptions, solve_impact, solve_law};
 
 use crate::laws_common::{dop853, sphere};
 
+use crate::impact_exact::cylinder;
+
 const KV: ForceModel = ForceModel::with_id("kelvin-voigt");
 const KV_TENSION: ForceModel = ForceModel::with_id("kelvin-voigt-tension");
 const HV: ForceModel = ForceModel::with_id("hertz-viscous");
 const HV_TENSION: ForceModel = ForceModel::with_id("hertz-viscous-tension");
-
-fn cylinder(restitution: f64) -> ImpactParams {
-    ImpactParams {
-        mass: 1.0,
-        law: PowerLaw {
-            k: 1.91e9,
-            n: 1.081,
-        },
-        v0: 0.5,
-        restitution,
-        plastic_indentation: 1e-6,
-    }
-}
 
 fn rel(a: f64, b: f64) -> f64 {
     (a / b - 1.0).abs()
