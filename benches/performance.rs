@@ -18,7 +18,7 @@ use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::App;
 use hertz_tui::ui::field::Nudge;
 use hertz_tui::ui::render::draw;
-use hertz_tui::ui::theme::Theme;
+use hertz_tui::ui::style::Theme;
 use hertz_tui::ui::update::update;
 use hertz_tui::ui::worker;
 use ratatui::Terminal;

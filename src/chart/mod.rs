@@ -1,4 +1,4 @@
-//! A chart as plain data, for any renderer: the terminal canvas (`crate::ui::render::graph`) or a
+//! A chart as plain data, for any renderer: the terminal canvas (`crate::ui::widgets::graph`) or a
 //! figure file ([`figure`]). Views build a [`Chart`]; renderers place ticks, lines and labels.
 //!
 //! Coordinates are display values: SI divided by the axis's prefix and unit, and log₁₀ of that on

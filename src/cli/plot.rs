@@ -10,11 +10,11 @@ use crate::model::study::sweep::{SweepSpec, sweep};
 use crate::model::{ForceModel, ImpactParams, Scene};
 use crate::ui::chart_kind::ChartKind;
 use crate::ui::plot::{Look, Series, plot};
-use crate::ui::stability_plot;
 use crate::ui::studies::{self, StabilityData, StudyJob, StudyResult, StudySpec, SweepData};
-use crate::ui::sweep_plot::{self, SweepSet};
-use crate::ui::sweep_settings::{SweepOutput, default_range};
-use crate::ui::wp_plot::{self, Cost};
+use crate::ui::views::stability::plot as stability_plot;
+use crate::ui::views::sweep::plot::{self as sweep_plot, SweepSet};
+use crate::ui::views::sweep::settings::{SweepOutput, default_range};
+use crate::ui::views::work_precision::plot::{self as wp_plot, Cost};
 
 use super::args::{ChartChoice, PlotArgs, QuantityChoice, SceneSelection};
 use super::error::CliError;

@@ -7,25 +7,21 @@ use tui_input::Input;
 
 use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
-use crate::model::ode::Method;
 use crate::model::presets::Registry;
 use crate::model::scene_file::View;
 use crate::model::scene_key::{BodyIndex, SceneKey};
-use crate::model::study::stability::critical_step;
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 
 use super::action::Jump;
-use super::field::{self, Draft, Field, Section};
-use super::marker::MarkerStyle;
+use super::field::{self, Draft, Field, Nudge, Section};
 use super::picker::Picker;
-use super::render::layout;
 use super::solutions::{Job, Solutions};
-use super::studies::{Studies, StudyJob, StudyKind, StudySpec};
-use super::sweep_settings::{SweepField, SweepSettings};
+use super::studies::{Studies, StudyJob, StudySpec};
+use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
-use super::theme::Theme;
-use super::wp_plot::Cost;
+use super::views::sweep::settings::{SweepField, SweepSettings};
+use super::views::work_precision::plot::Cost;
 
 /// Where the cursor is: on a form field or on a model of the checklist.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -232,7 +228,7 @@ impl App {
             focused: view.focused(),
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
-            tab: Tab::Explorer,
+            tab: Tab::HOME,
             studies: Studies::default(),
             step: None,
             sweep: SweepSettings::default(),
@@ -342,34 +338,6 @@ impl App {
         self.solutions.any_pending()
     }
 
-    /// The studies the shown tab draws.
-    pub fn tab_studies(&self) -> &'static [StudyKind] {
-        match self.tab {
-            Tab::Explorer => &[],
-            Tab::WorkPrecision => &[StudyKind::WorkPrecision, StudyKind::Current],
-            Tab::Stability => &[StudyKind::Runs, StudyKind::Bounds],
-            Tab::Sweep => &[StudyKind::Sweep],
-            Tab::Restitution => &[StudyKind::Restitution],
-        }
-    }
-
-    /// Whether a study of the shown tab is running.
-    pub fn is_studying(&self) -> bool {
-        self.tab_studies()
-            .iter()
-            .any(|&k| self.studies.is_pending(k))
-    }
-
-    /// The step of the stability view: the user's, else the RK4 critical step of the last valid
-    /// scene (the largest step at which RK4 is stable in theory).
-    pub fn stability_step(&self) -> Option<f64> {
-        self.step.or_else(|| {
-            self.valid
-                .as_ref()
-                .and_then(|v| critical_step(Method::Rk4, &v.params))
-        })
-    }
-
     /// The step fixed-step methods take when dt is `auto`: t_c/1000 of the elastic estimate, as
     /// the solver picks it (`None` without a valid scene).
     pub fn auto_dt(&self) -> Option<f64> {
@@ -379,61 +347,30 @@ impl App {
             .filter(|dt| *dt > 0.0 && dt.is_finite())
     }
 
-    /// The most points the sweep chart shows distinctly: one per braille dot column (two per
-    /// terminal column), one per column with the other markers.
-    pub fn sweep_max_points(&self) -> usize {
-        let (width, height) = self.screen;
-        let columns = layout::sweep_plot_columns(ratatui::layout::Rect::new(0, 0, width, height));
-        usize::from(columns) * usize::from(self.marker.dots_per_cell())
+    /// Queues `spec` for the study worker unless the same study is held or running.
+    pub(crate) fn queue_study(&mut self, spec: StudySpec) {
+        if let Some(job) = self.studies.request(spec) {
+            self.study_outbox.push(job);
+        }
     }
 
-    /// Requests the studies of the shown tab whose inputs changed (nothing for the explorer).
-    pub(super) fn request_studies(&mut self) {
-        let Some(valid) = &self.valid else {
-            return;
-        };
-        let model = self.focused;
-        let params = valid.params;
-        let specs = match self.tab {
-            Tab::Explorer => Vec::new(),
-            Tab::WorkPrecision => vec![
-                StudySpec::WorkPrecision { model, params },
-                StudySpec::Current {
-                    model,
-                    params,
-                    options: self.draft.options,
-                },
-            ],
-            Tab::Stability => {
-                let mut specs = vec![StudySpec::Bounds { model, params }];
-                if let Some(dt) = self.stability_step() {
-                    specs.insert(0, StudySpec::Runs { model, params, dt });
-                }
-                specs
-            }
-            Tab::Sweep => match self.sweep.spec(
-                &valid.scene,
-                self.checked_models(),
-                self.draft.options,
-                self.sweep_max_points(),
-            ) {
-                Ok(spec) => vec![StudySpec::Sweep {
-                    scene: Box::new(valid.scene.clone()),
-                    spec: Box::new(spec),
-                }],
-                // The view says why; there is nothing to compute.
-                Err(_) => Vec::new(),
-            },
-            Tab::Restitution => vec![StudySpec::Restitution {
-                models: self.checked_models(),
-                params,
-            }],
-        };
-        for spec in specs {
-            if let Some(job) = self.studies.request(spec) {
-                self.study_outbox.push(job);
-            }
-        }
+    /// Opens a line editor on `target` holding `text`.
+    pub(crate) fn open_editor(&mut self, target: EditTarget, text: String) {
+        self.mode = Mode::Editing(Editor {
+            target,
+            input: Input::new(text),
+            error: None,
+        });
+    }
+
+    /// Moves the focus to the next (`Up`) or previous (`Down`) model of [`ForceModel::ALL`].
+    pub(crate) fn step_focus(&mut self, direction: Nudge) {
+        let n = ForceModel::ALL.len();
+        let i = model_index(self.focused);
+        self.focused = ForceModel::ALL[match direction {
+            Nudge::Up => (i + 1) % n,
+            Nudge::Down => (i + n - 1) % n,
+        }];
     }
 
     /// The cursor stops, in order: the visible fields, then the models.
@@ -488,7 +425,7 @@ impl App {
         }
     }
 
-    pub(super) fn say(&mut self, text: impl Into<String>, error: bool) {
+    pub(crate) fn say(&mut self, text: impl Into<String>, error: bool) {
         self.message = Some(Message {
             text: text.into(),
             error,
@@ -496,7 +433,7 @@ impl App {
     }
 
     /// Re-evaluates the estimate of the draft and requests the solves whose inputs changed.
-    pub(super) fn recompute(&mut self) {
+    pub(crate) fn recompute(&mut self) {
         let start = Instant::now();
         match self.draft.scene.quasistatic() {
             Ok(quasistatic) => {
@@ -561,7 +498,7 @@ impl App {
         }
     }
 
-    pub(super) fn move_cursor(&mut self, forward: bool) {
+    pub(crate) fn move_cursor(&mut self, forward: bool) {
         let rows = self.rows();
         let n = rows.len();
         let i = rows.iter().position(|&r| r == self.cursor).unwrap_or(0);
@@ -578,7 +515,7 @@ impl App {
 
     /// `Home` `End` `PgUp` `PgDn`: the first or last row, or the first field of the previous or
     /// next section (the models count as the last section).
-    pub(super) fn jump_cursor(&mut self, jump: Jump) {
+    pub(crate) fn jump_cursor(&mut self, jump: Jump) {
         let rows = self.rows();
         let section_of = |row: &Cursor| match row {
             Cursor::Field(f) => Some(f.section()),
@@ -603,7 +540,7 @@ impl App {
         }
     }
 
-    pub(super) fn toggle(&mut self, model: ForceModel) {
+    pub(crate) fn toggle(&mut self, model: ForceModel) {
         let i = model_index(model);
         self.checked[i] = !self.checked[i];
         self.focused = model;

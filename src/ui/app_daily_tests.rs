@@ -13,10 +13,9 @@ use super::app::{App, Confirm, Cursor, Mode};
 use super::app_tests::{app, enter_text, key, key_with, settle, temp_path, type_text};
 use super::field::Field;
 use super::keymap::{BINDINGS, INPUT_HINTS, action_for_event};
-use super::marker::MarkerStyle;
 use super::render;
+use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
-use super::theme::Theme;
 use super::update::update;
 use crate::model::ForceModel;
 use crate::model::presets::{DEFAULT_SCENE, Registry};
@@ -114,7 +113,7 @@ fn a_paste_opens_the_field_under_the_cursor_and_never_runs_commands() {
     // On a model: ignored with a message; "200 GPa" would have switched to tab 2 and toggled.
     a.cursor = Cursor::Model(ForceModel::Proposed);
     paste(&mut a, "200 GPa");
-    assert_eq!(a.tab, Tab::Explorer);
+    assert_eq!(a.tab, Tab::HOME);
     assert_eq!(a.checked_models(), checked);
     assert!(matches!(a.mode, Mode::Normal));
     assert!(
@@ -362,7 +361,7 @@ fn mouse_clicks_tabs_fields_and_model_boxes_and_the_wheel_nudges() {
     assert_eq!(a.cursor, Cursor::Model(ForceModel::DryFriction));
     let (x, y) = find("3 stability").unwrap();
     mouse(&mut a, MouseEventKind::Down(MouseButton::Left), x + 3, y);
-    assert_eq!(a.tab, Tab::Stability);
+    assert_eq!(a.tab, Tab::named("stability").unwrap());
     // m turns capture off (the terminal selects text) and on again.
     key(&mut a, KeyCode::Char('m'));
     assert!(!a.mouse);

@@ -3,23 +3,24 @@
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
-use super::action::Action;
-use super::app::{App, Cursor, EditTarget, Mode};
-use super::field::Field;
-use super::keymap::action_for_event;
-use super::marker::MarkerStyle;
-use super::studies::{StudyKind, StudySpec};
-use super::sweep_settings::SweepField;
-use super::tab::Tab;
-use super::testing::fig5_scene;
-use super::theme::Theme;
-use super::update::update;
-use super::wp_plot::Cost;
 use crate::model::ForceModel;
 use crate::model::ode::Method;
 use crate::model::presets::Registry;
 use crate::model::scene_key::SceneKey;
 use crate::model::study::stability::critical_step;
+
+use super::action::Action;
+use super::app::{App, Cursor, EditTarget, Mode};
+use super::field::Field;
+use super::keymap::action_for_event;
+use super::studies::{StudyKind, StudySpec};
+use super::style::{MarkerStyle, Theme};
+use super::tab::Tab;
+use super::testing::fig5_scene;
+use super::update::update;
+use super::views;
+use super::views::sweep::settings::SweepField;
+use super::views::work_precision::plot::Cost;
 
 fn app() -> App {
     let mut app = App::new(
@@ -65,15 +66,15 @@ fn rk4_critical(app: &App) -> f64 {
 #[test]
 fn digits_switch_tabs_and_each_tab_asks_only_for_its_studies() {
     let mut a = app();
-    assert_eq!(a.tab, Tab::Explorer);
+    assert_eq!(a.tab, Tab::HOME);
     assert!(kinds(&mut a).is_empty(), "the explorer studies nothing");
     key(&mut a, KeyCode::Char('2'));
-    assert_eq!(a.tab, Tab::WorkPrecision);
+    assert_eq!(a.tab, Tab::named("work-precision").unwrap());
     assert_eq!(
         kinds(&mut a),
         [StudyKind::WorkPrecision, StudyKind::Current]
     );
-    assert!(a.is_studying());
+    assert!(views::is_studying(&a));
     key(&mut a, KeyCode::Char('3'));
     assert_eq!(kinds(&mut a), [StudyKind::Runs, StudyKind::Bounds]);
     key(&mut a, KeyCode::Char('4'));
@@ -82,8 +83,8 @@ fn digits_switch_tabs_and_each_tab_asks_only_for_its_studies() {
     key(&mut a, KeyCode::Char('2'));
     key(&mut a, KeyCode::Char('1'));
     assert!(kinds(&mut a).is_empty());
-    assert_eq!(a.tab, Tab::Explorer);
-    assert!(!a.is_studying(), "the explorer shows no study");
+    assert_eq!(a.tab, Tab::HOME);
+    assert!(!views::is_studying(&a), "the explorer shows no study");
 }
 
 #[test]
@@ -143,14 +144,14 @@ fn the_stability_step_defaults_to_rk4_critical_and_halves_doubles_and_types() {
     key(&mut a, KeyCode::Char('3'));
     a.take_studies();
     let critical = rk4_critical(&a);
-    assert_eq!(a.stability_step(), Some(critical));
+    assert_eq!(views::stability::step(&a), Some(critical));
     key(&mut a, KeyCode::Left);
-    assert_eq!(a.stability_step(), Some(critical / 2.0));
+    assert_eq!(views::stability::step(&a), Some(critical / 2.0));
     // A new step runs the methods again; the measured bounds do not depend on it.
     assert_eq!(kinds(&mut a), [StudyKind::Runs]);
     key(&mut a, KeyCode::Right);
     key(&mut a, KeyCode::Right);
-    assert_eq!(a.stability_step(), Some(critical * 2.0));
+    assert_eq!(views::stability::step(&a), Some(critical * 2.0));
     key(&mut a, KeyCode::Enter);
     assert!(matches!(&a.mode, Mode::Editing(e) if e.target == EditTarget::Step));
     enter_text(&mut a, "2 µs");
@@ -172,11 +173,11 @@ fn the_stability_step_defaults_to_rk4_critical_and_halves_doubles_and_types() {
     }
     enter_text(&mut a, "auto");
     assert_eq!(a.step, None);
-    assert_eq!(a.stability_step(), Some(critical));
+    assert_eq!(views::stability::step(&a), Some(critical));
     // Digits typed into the editor are text, not tab switches.
     key(&mut a, KeyCode::Enter);
     key(&mut a, KeyCode::Char('4'));
-    assert_eq!(a.tab, Tab::Stability);
+    assert_eq!(a.tab, Tab::named("stability").unwrap());
     key(&mut a, KeyCode::Esc);
     // The explorer's form is out of reach here: Up/Down leave its cursor alone.
     let cursor = a.cursor;
@@ -194,7 +195,7 @@ fn the_sweep_form_moves_edits_and_follows_the_checked_models() {
         panic!("{:?}", jobs[0].spec);
     };
     assert_eq!(spec.key, SceneKey::V0);
-    assert_eq!(spec.points, a.sweep_max_points());
+    assert_eq!(spec.points, views::sweep::max_points(&a));
     assert_eq!(spec.models, a.checked_models());
     // ↓ to the output, → for the next one: a new sweep (the same rows, another output drawn
     // from them would do, but the spec is the sweep's identity).
@@ -227,7 +228,7 @@ fn the_sweep_form_moves_edits_and_follows_the_checked_models() {
     let StudySpec::Sweep { spec, .. } = &jobs[0].spec else {
         panic!("{:?}", jobs[0].spec);
     };
-    assert_eq!(spec.points, a.sweep_max_points());
+    assert_eq!(spec.points, views::sweep::max_points(&a));
     assert!(spec.points < 200);
     // Enter on the scale switches it.
     a.sweep_cursor = SweepField::Scale;

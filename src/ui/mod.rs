@@ -1,9 +1,11 @@
 //! The terminal explorer (ratatui + crossterm) over the model layer.
 //!
-//! [`app`] holds the state and [`update`] its transitions, `update(&mut App, Action)`; [`keymap`] turns keys into actions;
-//! [`render`] draws one pane per pure function; [`worker`] solves off the UI thread and
-//! [`study_worker`] computes the [`studies`] of the other [`tab`]s (work-precision, stability,
-//! sweep) on a thread of its own; [`runtime`] ties them to the terminal. The UI holds no physics:
+//! [`app`] holds the state and [`update`] its transitions, `update(&mut App, Action)`; [`keymap`]
+//! turns keys into actions; [`render`] draws the screen from `&App`: the tab bar, the shown view
+//! and the status line. Each tab is a folder of [`views`] (its keys, panes and charts) registered
+//! in [`views::VIEWS`]; the panes they share are in [`widgets`], the looks in [`style`].
+//! [`worker`] solves off the UI thread and [`study_worker`] computes the [`studies`] of the study
+//! views on a thread of its own; [`runtime`] ties them to the terminal. The UI holds no physics:
 //! every number comes from `crate::model`.
 
 pub mod action;
@@ -21,34 +23,30 @@ pub mod export;
 pub mod field;
 pub mod figure_export;
 pub mod keymap;
-mod marker;
+pub mod layout;
 mod mouse;
 pub mod picker;
 pub mod plot;
 pub mod render;
-pub mod restitution_plot;
 mod runtime;
 pub mod solutions;
-pub mod stability_plot;
 pub mod studies;
 pub mod study_worker;
-pub mod sweep_plot;
-pub mod sweep_settings;
+pub mod style;
 pub mod tab;
 #[cfg(test)]
 mod testing;
-pub mod theme;
 pub mod ticks;
 pub mod units;
 pub mod update;
-mod update_tabs;
+pub mod views;
+pub mod widgets;
 pub mod worker;
-pub mod wp_plot;
 
 /// The engine panel's state (`t`: a simulation engine's parameters for the scene).
 pub mod engine_panel;
 
-pub use marker::MarkerStyle;
+pub use style::MarkerStyle;
 
 use color_eyre::eyre::WrapErr;
 
@@ -57,7 +55,7 @@ use crate::model::presets::Registry;
 use crate::model::scene_file::View;
 
 use app::App;
-use theme::Theme;
+use style::Theme;
 
 /// Opens the explorer on `scene` read from `source` (a preset name or a path), as `view` asks
 /// (checked models, solver settings), and runs it until the user quits; the terminal is restored on

@@ -178,9 +178,9 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
 mod tests {
     use super::*;
     use crate::model::presets::Registry;
-    use crate::ui::marker::MarkerStyle;
+    use crate::ui::style::MarkerStyle;
+    use crate::ui::style::Theme;
     use crate::ui::testing::fig5_scene;
-    use crate::ui::theme::Theme;
     use ratatui::Terminal;
     use ratatui::backend::TestBackend;
     use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};

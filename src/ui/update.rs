@@ -10,17 +10,16 @@ use crate::model::scene_key::BodyIndex;
 use crate::model::{ForceModel, Scene};
 
 use super::action::{Action, Jump};
-use super::app::{App, Confirm, Cursor, EditTarget, Editor, Mode, Prompt, PromptKind, model_index};
+use super::app::{App, Confirm, Cursor, Editor, Mode, Prompt, PromptKind};
 use super::data_cursor;
 use super::edited;
 use super::export;
-use super::field::{Field, Nudge};
+use super::field::Nudge;
 use super::figure_export;
 use super::mouse;
 use super::picker::{EntryKind, Picker};
 use super::study_worker::StudyReport;
-use super::tab::Tab;
-use super::update_tabs;
+use super::views;
 use super::worker::Report;
 
 /// Advances the state machine by one action.
@@ -33,7 +32,7 @@ pub fn update(app: &mut App, action: Action) {
         app.remember_for_undo(before);
     }
     // Whatever changed, the shown tab asks for the studies it lacks (same inputs ask nothing).
-    app.request_studies();
+    views::request_studies(app);
 }
 
 fn transition(app: &mut App, action: Action) {
@@ -134,49 +133,24 @@ fn studied(app: &mut App, report: StudyReport) {
 }
 
 fn normal(app: &mut App, action: Action) {
-    // Keys that act the same on every tab.
+    // Keys that act the same on every tab, wherever the pointer is.
     let action = match action {
-        Action::Paste(text) => return paste_in_normal(app, &text),
         Action::Undo => return undo(app),
         Action::Click(column, row) => return mouse::click(app, column, row),
         Action::Wheel(column, row, direction) => return mouse::wheel(app, column, row, direction),
         action => action,
     };
-    let action = match app.tab {
-        Tab::Explorer => action,
-        // The study tabs take the keys that act on their own settings; the rest is shared.
-        _ => match update_tabs::study_tab(app, action) {
-            Some(action) => action,
-            None => return,
-        },
+    // The shown view takes its own keys; the rest is shared.
+    let Some(action) = app.tab.view().handle(app, action) else {
+        return;
     };
     match action {
         Action::Tab(tab) => app.tab = tab,
-        Action::Up => app.move_cursor(false),
-        Action::Down => app.move_cursor(true),
-        // The form's rows are the explorer's: elsewhere they are not on screen.
-        Action::Jump(jump) if app.tab == Tab::Explorer => app.jump_cursor(jump),
-        Action::Nudge(direction) => match app.cursor {
-            Cursor::Field(field) => edited::nudge_within_domain(app, field, direction),
-            Cursor::Model(_) => app.focused = step_model(app.focused, direction),
-        },
-        Action::ResetField if app.tab == Tab::Explorer => match app.cursor {
-            Cursor::Field(field) => edited::reset_field(app, field),
-            Cursor::Model(_) => app.say("r resets the field under the cursor", true),
-        },
-        Action::Enter => match app.cursor {
-            Cursor::Field(field) => {
-                let text = field.edit_text(&app.draft);
-                open_field_editor(app, field, text);
-            }
-            Cursor::Model(model) => app.toggle(model),
-        },
         Action::ToggleModel => match app.cursor {
             Cursor::Model(model) => app.toggle(model),
             Cursor::Field(_) => app.toggle(app.focused),
         },
-        Action::FocusModel(direction) => app.focused = step_model(app.focused, direction),
-        Action::CycleChart => app.chart = app.chart.next(),
+        Action::FocusModel(direction) => app.step_focus(direction),
         Action::ToggleCalibration => app.toggle_calibration(),
         Action::Help => app.mode = Mode::Help,
         Action::Engines => {
@@ -231,14 +205,23 @@ fn normal(app: &mut App, action: Action) {
             }
         }
         Action::Cancel => app.data_cursor = None,
-        Action::Jump(_)
+        Action::Paste(_) => app.say(
+            "paste ignored: move to a field of the explorer (1) and paste there",
+            true,
+        ),
+        // The keys of a view's form: no form here.
+        Action::Up
+        | Action::Down
+        | Action::Jump(_)
+        | Action::Nudge(_)
         | Action::ResetField
+        | Action::Enter
+        | Action::CycleChart
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit
         | Action::Interrupt
         | Action::Yes
-        | Action::Paste(_)
         | Action::Undo
         | Action::ToggleMouse
         | Action::Click(..)
@@ -246,29 +229,6 @@ fn normal(app: &mut App, action: Action) {
         | Action::Resize(..)
         | Action::Solved(_)
         | Action::Studied(_) => {}
-    }
-}
-
-fn open_field_editor(app: &mut App, field: Field, text: String) {
-    app.mode = Mode::Editing(Editor {
-        target: EditTarget::Field(field),
-        input: Input::new(text),
-        error: None,
-    });
-}
-
-/// A paste outside an editor opens the field under the cursor with the pasted text (its first
-/// line); elsewhere it is ignored, with a message, so that pasted characters never run commands.
-fn paste_in_normal(app: &mut App, text: &str) {
-    let line = text.lines().next().unwrap_or_default().trim().to_string();
-    match (app.tab, app.cursor) {
-        (Tab::Explorer, Cursor::Field(field)) if !line.is_empty() => {
-            open_field_editor(app, field, line);
-        }
-        _ => app.say(
-            "paste ignored: move to a field of the explorer (1) and paste there",
-            true,
-        ),
     }
 }
 
@@ -306,15 +266,6 @@ fn save_suggestion(app: &App) -> String {
         .unwrap_or(base)
 }
 
-fn step_model(model: ForceModel, direction: Nudge) -> ForceModel {
-    let n = ForceModel::ALL.len();
-    let i = model_index(model);
-    ForceModel::ALL[match direction {
-        Nudge::Up => (i + 1) % n,
-        Nudge::Down => (i + n - 1) % n,
-    }]
-}
-
 fn editing(app: &mut App, mut editor: Editor, action: Action) {
     match action {
         Action::Input(request) => {
@@ -326,16 +277,11 @@ fn editing(app: &mut App, mut editor: Editor, action: Action) {
             app.mode = Mode::Editing(editor);
         }
         Action::Enter => {
-            let committed = match editor.target {
-                EditTarget::Field(field) => {
-                    let mut draft = app.draft.clone();
-                    field.apply(editor.input.value(), &mut draft).map(|()| {
-                        app.draft = draft;
-                        app.recompute();
-                    })
-                }
-                target => update_tabs::commit(app, target, editor.input.value()),
-            };
+            // An editor belongs to the view shown: no key changes the view while it is open.
+            let committed = app
+                .tab
+                .view()
+                .commit(app, editor.target, editor.input.value());
             if let Err(reason) = committed {
                 editor.error = Some(reason);
                 app.mode = Mode::Editing(editor);

@@ -6,10 +6,10 @@
 use hertz_tui::model::ForceModel;
 use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::{App, ChartKind};
-use hertz_tui::ui::sweep_plot;
 use hertz_tui::ui::tab::Tab;
 use hertz_tui::ui::update::update;
-use hertz_tui::ui::wp_plot::{self, Cost};
+use hertz_tui::ui::views::sweep::plot as sweep_plot;
+use hertz_tui::ui::views::work_precision::plot::{self as wp_plot, Cost};
 use ratatui::buffer::Buffer;
 
 use super::render::{app, render, settle};
@@ -172,7 +172,7 @@ fn chart_titled<'a>(charts: &'a [Found], words: &[&str]) -> Option<&'a Found> {
 #[test]
 fn explorer_peaks_lie_where_the_ticks_say() {
     for size in SIZES {
-        let mut app = sized(app(), Tab::Explorer, size);
+        let mut app = sized(app(), Tab::HOME, size);
         let solution = app
             .solutions
             .solution(ForceModel::Proposed)
@@ -203,7 +203,7 @@ fn explorer_peaks_lie_where_the_ticks_say() {
 #[test]
 fn sweep_onset_rules_lie_where_the_ticks_say() {
     for size in SIZES {
-        let app = sized(app(), Tab::Sweep, size);
+        let app = sized(app(), Tab::named("sweep").unwrap(), size);
         let data = match app.studies.sweep() {
             Some(Ok(data)) => data.clone(),
             other => panic!("{other:?}"),
@@ -237,7 +237,7 @@ fn sweep_onset_rules_lie_where_the_ticks_say() {
 #[test]
 fn work_precision_marks_the_explorers_solve_where_the_ticks_say() {
     for size in SIZES {
-        let mut app = sized(app(), Tab::WorkPrecision, size);
+        let mut app = sized(app(), Tab::named("work-precision").unwrap(), size);
         let current = match app.studies.current() {
             Some(Ok(point)) => point.clone(),
             other => panic!("{other:?}"),
@@ -258,7 +258,7 @@ fn work_precision_marks_the_explorers_solve_where_the_ticks_say() {
 #[test]
 fn stability_reference_peak_lies_where_the_ticks_say() {
     for size in SIZES {
-        let app = sized(app(), Tab::Stability, size);
+        let app = sized(app(), Tab::named("stability").unwrap(), size);
         let data = match app.studies.runs() {
             Some(Ok(data)) => data.clone(),
             other => panic!("{other:?}"),

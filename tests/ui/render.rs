@@ -13,8 +13,8 @@ use hertz_tui::ui::app::{App, Cursor};
 use hertz_tui::ui::field::Field;
 use hertz_tui::ui::render::draw;
 use hertz_tui::ui::studies::{self, StudyOutcome, StudyResult, WorkPrecisionData};
+use hertz_tui::ui::style::Theme;
 use hertz_tui::ui::tab::Tab;
-use hertz_tui::ui::theme::Theme;
 use hertz_tui::ui::update::update;
 use hertz_tui::ui::worker;
 use ratatui::Terminal;
@@ -311,7 +311,7 @@ fn an_edit_changes_the_charts_and_the_results() {
 
 #[test]
 fn work_precision_160x48() {
-    let app = app_on(Tab::WorkPrecision);
+    let app = app_on(Tab::named("work-precision").unwrap());
     let screen = text(render(&app, 160, 48).backend().buffer());
     assert!(
         screen.contains("log₁₀ error against log₁₀ s per solve"),
@@ -329,7 +329,7 @@ fn work_precision_160x48() {
 
 #[test]
 fn stability_160x48() {
-    let app = app_on(Tab::Stability);
+    let app = app_on(Tab::named("stability").unwrap());
     let screen = text(render(&app, 160, 48).backend().buffer());
     assert!(screen.contains("auto: the rk4 critical step"), "{screen}");
     assert!(screen.contains("h·ω_max = 2.83"), "{screen}");
@@ -343,7 +343,7 @@ fn stability_160x48() {
 
 #[test]
 fn sweep_160x48() {
-    let app = app_on(Tab::Sweep);
+    let app = app_on(Tab::named("sweep").unwrap());
     let screen = text(render(&app, 160, 48).backend().buffer());
     assert!(screen.contains("e_out against v₀"), "{screen}");
     assert!(
@@ -356,7 +356,7 @@ fn sweep_160x48() {
 
 #[test]
 fn restitution_160x48() {
-    let mut app = app_on(Tab::Restitution);
+    let mut app = app_on(Tab::named("restitution").unwrap());
     let screen = text(render(&app, 160, 48).backend().buffer());
     assert!(
         screen.contains("realised e against requested e"),
@@ -382,10 +382,10 @@ fn restitution_160x48() {
 #[test]
 fn every_tab_draws_at_every_size_without_nan() {
     for tab in [
-        Tab::WorkPrecision,
-        Tab::Stability,
-        Tab::Sweep,
-        Tab::Restitution,
+        Tab::named("work-precision").unwrap(),
+        Tab::named("stability").unwrap(),
+        Tab::named("sweep").unwrap(),
+        Tab::named("restitution").unwrap(),
     ] {
         let app = app_on(tab);
         for (w, h) in [(80, 24), (100, 30), (120, 40), (200, 60), (30, 5)] {
@@ -406,7 +406,11 @@ fn every_tab_draws_at_every_size_without_nan() {
 
 #[test]
 fn no_color_holds_in_every_tab() {
-    for tab in [Tab::WorkPrecision, Tab::Stability, Tab::Sweep] {
+    for tab in [
+        Tab::named("work-precision").unwrap(),
+        Tab::named("stability").unwrap(),
+        Tab::named("sweep").unwrap(),
+    ] {
         let mut app = app_with(MarkerStyle::Braille, Theme { color: false });
         update(&mut app, Action::Resize(160, 48));
         update(&mut app, Action::Tab(tab));

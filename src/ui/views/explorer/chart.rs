@@ -1,0 +1,224 @@
+//! One chart (F(x), F(t) or v(x)) of the checked models: solid curves in each model's colour, the
+//! focused one last and bold, each model's glyph at its exact peak and its end, and the reason of
+//! every model that failed.
+
+use ratatui::Frame;
+use ratatui::layout::{Position, Rect};
+use ratatui::text::Line;
+use ratatui::widgets::{Paragraph, Wrap};
+
+use crate::chart::{Chart, Ink, Mark, Rule, model_glyph};
+use crate::model::ForceModel;
+use crate::model::impact::Sample;
+use crate::ui::app::{App, ChartKind};
+use crate::ui::data_cursor::{self, FULL};
+use crate::ui::plot::{Look, Series, plot};
+use crate::ui::style::{Role, Theme};
+use crate::ui::units::{self, METRE, METRE_PER_SECOND, NEWTON, SECOND};
+use crate::ui::widgets::common::{model_name, pane, span};
+use crate::ui::widgets::graph;
+
+use super::results::reason_first;
+
+/// The models drawn.
+fn drawn_models(app: &App) -> Vec<ForceModel> {
+    app.checked_models()
+        .into_iter()
+        .filter(|&m| app.solutions.solution(m).is_some())
+        .collect()
+}
+
+/// Why each checked model that failed has no curve: `✗ proposed: …`.
+fn failures(app: &App) -> Vec<String> {
+    app.checked_models()
+        .into_iter()
+        .filter_map(|m| match app.solutions.result(m) {
+            Some(Err(message)) => Some(format!("✗ {}: {}", m.name(), reason_first(message))),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The chart of `kind` for the models of `app` drawn in `columns` × `rows` cells: the focused
+/// model's peak labelled with its value, and the data cursor where it stands.
+pub fn describe(app: &App, kind: ChartKind, columns: u16, rows: u16) -> Chart {
+    let models = drawn_models(app);
+    let series: Vec<&Series> = models
+        .iter()
+        .filter_map(|&m| app.solutions.samples(m))
+        .collect();
+    let (max_x, max_y) = graph::budget(columns, rows);
+    let p = plot(kind, &series, max_x, max_y);
+    let (x_scale, y_scale) = (p.x.scale, p.y.scale);
+    let x_range = p.x.bounds;
+    let mut chart = p.into_chart(kind.title().to_string(), |m| Look {
+        name: model_name(m, 9).to_string(),
+        ink: Ink::Model(m),
+        glyph: model_glyph(m),
+        focused: m == app.focused,
+        steps: false,
+    });
+    chart.notes = failures(app);
+    if let Some(s) = app.solutions.samples(app.focused) {
+        let (peak, label) = match kind {
+            ChartKind::VelocityDisplacement => (s.deepest, ("x_max", s.deepest.0, METRE)),
+            ChartKind::ForceDisplacement => (s.force_peak_x, ("F_max", s.force_peak_x.1, NEWTON)),
+            ChartKind::ForceTime => (s.force_peak_t, ("F_max", s.force_peak_t.1, NEWTON)),
+        };
+        chart.marks.push(Mark {
+            at: (peak.0 / x_scale, peak.1 / y_scale),
+            ink: Ink::Model(app.focused),
+            glyph: model_glyph(app.focused),
+            label: Some(format!(
+                "{} {}",
+                label.0,
+                units::engineering(label.1, label.2, 4)
+            )),
+        });
+    }
+    if let Some(at) = app.data_cursor {
+        let x = x_range[0] + (x_range[1] - x_range[0]) * f64::from(at) / f64::from(FULL);
+        cursor(app, kind, &models, &mut chart, x, (x_scale, y_scale));
+    }
+    chart
+}
+
+/// The data cursor at display value `x`: a rule, a dot where each curve passes, and the readout of
+/// every curve's value there, in the chart's units.
+fn cursor(
+    app: &App,
+    kind: ChartKind,
+    models: &[ForceModel],
+    chart: &mut Chart,
+    x: f64,
+    (x_scale, y_scale): (f64, f64),
+) {
+    let (x_unit, y_name, y_unit) = match kind {
+        ChartKind::ForceDisplacement => (METRE, "F", NEWTON),
+        ChartKind::ForceTime => (SECOND, "F", NEWTON),
+        ChartKind::VelocityDisplacement => (METRE, "v", METRE_PER_SECOND),
+    };
+    let x_si = x * x_scale;
+    let x_name = if kind == ChartKind::ForceTime {
+        "t"
+    } else {
+        "x"
+    };
+    let mut parts = vec![format!(
+        "{x_name} = {}",
+        units::engineering(x_si, x_unit, 4)
+    )];
+    for &m in models {
+        let (Some(solution), Some(samples)) = (app.solutions.solution(m), app.solutions.samples(m))
+        else {
+            continue;
+        };
+        let readings = data_cursor::read(kind, solution, &samples.samples, x_si);
+        let value = |r: &Sample| match kind {
+            ChartKind::VelocityDisplacement => r.v,
+            _ => r.f,
+        };
+        for r in &readings {
+            chart.marks.push(Mark {
+                at: (x, value(r) / y_scale),
+                ink: Ink::Model(m),
+                glyph: '●',
+                label: None,
+            });
+        }
+        let values: Vec<String> = readings
+            .iter()
+            .map(|r| units::engineering(value(r), y_unit, 4))
+            .collect();
+        if !values.is_empty() {
+            parts.push(format!(
+                "{} {y_name} {}",
+                model_name(m, 9),
+                values.join(" / ")
+            ));
+        }
+    }
+    chart.rules.push(Rule {
+        at: x,
+        horizontal: false,
+        ink: Ink::Foreground,
+        label: String::new(),
+    });
+    chart.readout = Some(parts.join(" · "));
+}
+
+/// Draws the chart of `kind`; `single` where it is the only one shown, so the title says which
+/// key shows the others.
+pub fn render(
+    frame: &mut Frame,
+    area: Rect,
+    app: &App,
+    kind: ChartKind,
+    roomy: bool,
+    single: bool,
+) {
+    let theme = app.theme;
+    let mut title = kind.title().to_string();
+    if app.scene_error.is_some() {
+        title.push_str(" · last valid scene");
+    }
+    if single {
+        title.push_str(" · c: next chart");
+    }
+    let block = pane(title, theme, roomy);
+    let inner = block.inner(area);
+    if drawn_models(app).is_empty() {
+        let failed = failures(app);
+        let (texts, role) = if app.is_computing() {
+            (vec!["computing…".to_string()], Role::Muted)
+        } else if app.checked_models().is_empty() {
+            (
+                vec!["no model checked: Space on a model draws it".to_string()],
+                Role::Muted,
+            )
+        } else if !failed.is_empty() {
+            (failed, Role::Error)
+        } else {
+            (vec!["no solution to draw".to_string()], Role::Muted)
+        };
+        let lines: Vec<Line> = texts
+            .into_iter()
+            .map(|t| Line::from(span(t, theme.style(role))))
+            .collect();
+        let note = Paragraph::new(lines).wrap(Wrap { trim: true }).block(block);
+        frame.render_widget(note, area);
+        return;
+    }
+    // The plot is the frame less the labels, axis lines and titles: about 7 columns, 4 rows.
+    let chart = describe(
+        app,
+        kind,
+        inner.width.saturating_sub(7),
+        inner.height.saturating_sub(4),
+    );
+    graph::render_with_legend(frame, area, block, &chart, (app.marker, theme), roomy);
+}
+
+/// The data cursor's place for a click at `position` on the chart `kind` drawn in `area`: the
+/// plot built and framed as the chart pane draws it, the column's share of the x axis.
+pub fn cursor_at(
+    app: &App,
+    kind: ChartKind,
+    area: Rect,
+    roomy: bool,
+    position: Position,
+) -> Option<u16> {
+    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    let chart = describe(
+        app,
+        kind,
+        inner.width.saturating_sub(7),
+        inner.height.saturating_sub(4),
+    );
+    let plot = graph::frame_of(inner, &chart).plot;
+    if plot.width < 2 || !plot.contains(position) {
+        return None;
+    }
+    let share = f64::from(position.x - plot.x) / f64::from(plot.width - 1);
+    Some((share * f64::from(FULL)).round() as u16)
+}

@@ -1,0 +1,133 @@
+//! Where the explorer's panes go: the regime box on top, the form and the models on the left, the
+//! charts over the results on the right.
+
+use ratatui::layout::{Constraint, Layout, Rect};
+
+use crate::ui::chart_kind::ChartKind;
+use crate::ui::layout::{Screen, left_width, screen};
+
+/// The rectangles of the explorer's panes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Areas {
+    pub tabs: Rect,
+    /// Regime line(s).
+    pub info: Rect,
+    pub form: Rect,
+    pub models: Rect,
+    pub charts: Vec<(ChartKind, Rect)>,
+    pub results: Rect,
+    pub status: Rect,
+    /// Panes get full borders (roomy screens) or a top rule only (compact ones).
+    pub roomy: bool,
+}
+
+/// The panes of a screen of `area`, with `first` the chart shown where only one fits.
+pub fn layout(area: Rect, first: ChartKind) -> Option<Areas> {
+    let Screen {
+        tabs,
+        body,
+        status,
+        roomy,
+    } = screen(area)?;
+    let info_height = if roomy { 6 } else { 3 };
+    let [info, body] =
+        Layout::vertical([Constraint::Length(info_height), Constraint::Fill(1)]).areas(body);
+    let [left, right] =
+        Layout::horizontal([Constraint::Length(left_width(area)), Constraint::Fill(1)]).areas(body);
+    let models_height = if roomy { 7 } else { 8 };
+    let [form, models] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(models_height)]).areas(left);
+    let results_height = if roomy { 10 } else { 8 };
+    let [charts_area, results] =
+        Layout::vertical([Constraint::Fill(1), Constraint::Length(results_height)]).areas(right);
+    Some(Areas {
+        tabs,
+        info,
+        form,
+        models,
+        charts: chart_grid(charts_area, first),
+        results,
+        status,
+        roomy,
+    })
+}
+
+/// One, two or three charts, as the space allows: F(x) and v(x) side by side like the paper's
+/// Fig. 5, with F(t) under them when there is height, or beside them when there is width.
+fn chart_grid(area: Rect, first: ChartKind) -> Vec<(ChartKind, Rect)> {
+    use ChartKind::*;
+    if area.width >= 76 && area.height >= 30 {
+        let [top, bottom] =
+            Layout::vertical([Constraint::Percentage(60), Constraint::Fill(1)]).areas(area);
+        let [a, b] = Layout::horizontal([Constraint::Fill(1); 2]).areas(top);
+        return vec![
+            (ForceDisplacement, a),
+            (VelocityDisplacement, b),
+            (ForceTime, bottom),
+        ];
+    }
+    if area.width >= 114 {
+        let [a, b, c] = Layout::horizontal([Constraint::Fill(1); 3]).areas(area);
+        return vec![
+            (ForceDisplacement, a),
+            (VelocityDisplacement, b),
+            (ForceTime, c),
+        ];
+    }
+    if area.width >= 76 {
+        let [a, b] = Layout::horizontal([Constraint::Fill(1); 2]).areas(area);
+        let i = ChartKind::ALL.iter().position(|&k| k == first).unwrap_or(0);
+        let second = ChartKind::ALL[(i + 1) % ChartKind::ALL.len()];
+        return vec![(first, a), (second, b)];
+    }
+    vec![(first, area)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ui::layout::tests::inside;
+
+    #[test]
+    fn too_small_has_no_layout() {
+        assert!(layout(Rect::new(0, 0, 79, 24), ChartKind::ForceTime).is_none());
+        assert!(layout(Rect::new(0, 0, 80, 23), ChartKind::ForceTime).is_none());
+        assert!(layout(Rect::new(0, 0, 80, 24), ChartKind::ForceTime).is_some());
+    }
+
+    #[test]
+    fn panes_fit_and_do_not_overlap() {
+        for (w, h) in [(80, 24), (100, 30), (120, 40), (160, 48), (250, 80)] {
+            let area = Rect::new(0, 0, w, h);
+            let a = layout(area, ChartKind::ForceDisplacement).unwrap();
+            let mut rects = vec![a.tabs, a.info, a.form, a.models, a.results, a.status];
+            rects.extend(a.charts.iter().map(|(_, r)| *r));
+            for (i, r) in rects.iter().enumerate() {
+                assert!(inside(*r, area), "{w}×{h}: {r:?}");
+                assert!(r.width > 0 && r.height > 0, "{w}×{h}: {r:?}");
+                for s in &rects[i + 1..] {
+                    assert!(!r.intersects(*s), "{w}×{h}: {r:?} overlaps {s:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn one_chart_on_small_screens_all_three_on_big_ones() {
+        let small = layout(Rect::new(0, 0, 80, 24), ChartKind::ForceTime).unwrap();
+        assert_eq!(small.charts.len(), 1);
+        assert_eq!(small.charts[0].0, ChartKind::ForceTime, "the chosen chart");
+        assert!(!small.roomy);
+        let big = layout(Rect::new(0, 0, 160, 48), ChartKind::ForceTime).unwrap();
+        let kinds: Vec<_> = big.charts.iter().map(|(k, _)| *k).collect();
+        assert_eq!(
+            kinds,
+            [
+                ChartKind::ForceDisplacement,
+                ChartKind::VelocityDisplacement,
+                ChartKind::ForceTime
+            ]
+        );
+        assert!(big.roomy);
+    }
+}

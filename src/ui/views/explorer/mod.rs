@@ -1,0 +1,91 @@
+//! Tab 1, the explorer: the scene's form and the model checklist, the charts F(x), v(x) and F(t)
+//! of the checked models, their results and the regime of the impact.
+
+pub mod chart;
+mod form;
+mod keys;
+pub mod layout;
+mod mouse;
+mod regime;
+mod results;
+
+use ratatui::Frame;
+use ratatui::layout::Position;
+
+use crate::chart::Chart;
+use crate::ui::action::Action;
+use crate::ui::app::{App, EditTarget};
+use crate::ui::chart_kind::ChartKind;
+use crate::ui::field::Nudge;
+use crate::ui::layout::Screen;
+use crate::ui::widgets::models;
+
+use super::{FIGURE_COLUMNS, Hints, View};
+
+pub struct Explorer;
+
+impl View for Explorer {
+    fn id(&self) -> &'static str {
+        "explorer"
+    }
+
+    fn title(&self) -> &'static str {
+        "explorer"
+    }
+
+    fn render(&self, frame: &mut Frame, _screen: &Screen, app: &App) {
+        let Some(areas) = layout::layout(frame.area(), app.chart) else {
+            return;
+        };
+        regime::render(frame, areas.info, app, areas.roomy);
+        form::render(frame, areas.form, app, areas.roomy);
+        models::render(frame, areas.models, app, areas.roomy);
+        let single = areas.charts.len() == 1;
+        for (kind, rect) in &areas.charts {
+            chart::render(frame, *rect, app, *kind, areas.roomy, single);
+        }
+        results::render(frame, areas.results, app, areas.roomy);
+    }
+
+    fn hints(&self) -> Hints {
+        &[
+            ("↑↓", "move"),
+            ("Enter", "edit"),
+            ("←→", "nudge"),
+            ("Space", "model"),
+            ("p", "presets"),
+            ("s", "save"),
+            ("e", "export"),
+        ]
+    }
+
+    fn handle(&self, app: &mut App, action: Action) -> Option<Action> {
+        keys::handle(app, action)
+    }
+
+    fn commit(&self, app: &mut App, target: EditTarget, text: &str) -> Result<(), String> {
+        match target {
+            EditTarget::Field(field) => keys::commit_field(app, field, text),
+            _ => Ok(()),
+        }
+    }
+
+    fn click(&self, app: &mut App, at: Position) {
+        mouse::click(app, at);
+    }
+
+    fn wheel(&self, app: &mut App, at: Position, direction: Nudge) {
+        mouse::wheel(app, at, direction);
+    }
+
+    fn charts(&self, app: &App) -> Vec<Chart> {
+        [
+            ChartKind::ForceDisplacement,
+            ChartKind::ForceTime,
+            ChartKind::VelocityDisplacement,
+        ]
+        .into_iter()
+        .map(|kind| chart::describe(app, kind, FIGURE_COLUMNS, 40))
+        .collect()
+    }
+}

@@ -1,0 +1,164 @@
+//! The views of the explorer, one folder each, and the one registry the rest iterates: the tab
+//! bar, the digit keys, the body drawn, the keys a view takes, its status hints, the studies it
+//! needs and the figure `f` writes all come from [`VIEWS`]. A new view is a folder implementing
+//! [`View`] plus one line in [`VIEWS`].
+//!
+//! A view reads the app (`&App`) to draw and acts on it (`&mut App`) for its own keys; the app
+//! state never imports a view back.
+
+pub mod explorer;
+pub mod restitution;
+pub mod stability;
+pub mod sweep;
+pub mod work_precision;
+
+use ratatui::Frame;
+use ratatui::layout::Position;
+
+use crate::chart::Chart;
+
+use super::action::Action;
+use super::app::{App, EditTarget, Valid};
+use super::field::Nudge;
+use super::layout::Screen;
+use super::studies::{StudyKind, StudySpec};
+use super::tab::Tab;
+
+/// Tick labels on a figure's axes, x and y, and the columns its curves are sampled for.
+pub const FIGURE_TICKS: (usize, usize) = (9, 8);
+pub const FIGURE_COLUMNS: u16 = 600;
+
+/// Key hints of the status line in normal mode: (key, action).
+pub type Hints = &'static [(&'static str, &'static str)];
+
+/// One tab of the explorer.
+pub trait View: Sync {
+    /// The name in file names (`<scene>-<id>.svg`) and for [`Tab::named`].
+    fn id(&self) -> &'static str;
+    /// The name on the tab bar.
+    fn title(&self) -> &'static str;
+    /// Draws the view in the body of `screen`.
+    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App);
+    /// The view's own key hints, after the shared ones (help, quit, views).
+    fn hints(&self) -> Hints;
+    /// Handles `action` in normal mode if it is one of the view's own keys; returns it otherwise,
+    /// for the keys every view shares (quit, help, presets, models…).
+    fn handle(&self, _app: &mut App, action: Action) -> Option<Action> {
+        Some(action)
+    }
+    /// Commits the text of a line editor the view opened; the reason if it is refused.
+    fn commit(&self, _app: &mut App, _target: EditTarget, _text: &str) -> Result<(), String> {
+        Ok(())
+    }
+    /// A left click in the body.
+    fn click(&self, _app: &mut App, _at: Position) {}
+    /// The wheel in the body.
+    fn wheel(&self, _app: &mut App, _at: Position, _direction: Nudge) {}
+    /// The studies the view draws (the explorer draws solves only).
+    fn studies(&self) -> &'static [StudyKind] {
+        &[]
+    }
+    /// The studies the view needs for `valid` and the app's settings.
+    fn study_specs(&self, _app: &App, _valid: &Valid) -> Vec<StudySpec> {
+        Vec::new()
+    }
+    /// The charts `f` writes to a figure (none while a study is missing).
+    fn charts(&self, app: &App) -> Vec<Chart>;
+}
+
+/// Every view, in tab order: the first is where the explorer opens, the n-th opens with digit n.
+pub static VIEWS: &[&dyn View] = &[
+    &explorer::Explorer,
+    &work_precision::WorkPrecision,
+    &stability::Stability,
+    &sweep::Sweep,
+    &restitution::Restitution,
+];
+
+// The digit keys 1–9 open the views.
+const _: () = assert!(!VIEWS.is_empty() && VIEWS.len() <= 9);
+
+impl Tab {
+    /// The view this tab shows.
+    pub fn view(self) -> &'static dyn View {
+        VIEWS.get(self.0).copied().unwrap_or(VIEWS[0])
+    }
+
+    /// Every tab, in order.
+    pub fn all() -> impl Iterator<Item = Tab> {
+        (0..VIEWS.len()).map(Tab)
+    }
+
+    /// The digit key that opens the tab.
+    pub fn key(self) -> char {
+        char::from(b'1' + self.0 as u8)
+    }
+
+    /// The tab of a digit key, if any.
+    pub fn of_key(key: char) -> Option<Tab> {
+        Tab::all().find(|t| t.key() == key)
+    }
+
+    /// The tab of a view's [`View::id`], if any.
+    pub fn named(id: &str) -> Option<Tab> {
+        Tab::all().find(|t| t.view().id() == id)
+    }
+
+    /// The name on the tab bar.
+    pub fn title(self) -> &'static str {
+        self.view().title()
+    }
+}
+
+/// The keys of all views as the status line names them: `1-5`.
+pub fn keys_hint() -> String {
+    format!("1-{}", VIEWS.len())
+}
+
+/// Whether a study the shown view draws is running.
+pub fn is_studying(app: &App) -> bool {
+    app.tab
+        .view()
+        .studies()
+        .iter()
+        .any(|&k| app.studies.is_pending(k))
+}
+
+/// Requests the studies of the shown view whose inputs changed (same inputs ask nothing).
+pub fn request_studies(app: &mut App) {
+    let Some(valid) = &app.valid else {
+        return;
+    };
+    let specs = app.tab.view().study_specs(app, valid);
+    for spec in specs {
+        app.queue_study(spec);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn digits_one_to_five_open_the_tabs_in_order() {
+        let keys: String = Tab::all().map(|t| t.key()).collect();
+        assert_eq!(keys, "12345");
+        for tab in Tab::all() {
+            assert_eq!(Tab::of_key(tab.key()), Some(tab));
+            assert_eq!(Tab::named(tab.view().id()), Some(tab));
+        }
+        assert_eq!(Tab::of_key('6'), None);
+        assert_eq!(Tab::of_key('0'), None);
+        assert_eq!(Tab::HOME.view().id(), "explorer");
+    }
+
+    #[test]
+    fn ids_and_titles_are_distinct() {
+        for (i, a) in VIEWS.iter().enumerate() {
+            for b in &VIEWS[i + 1..] {
+                assert_ne!(a.id(), b.id());
+                assert_ne!(a.title(), b.title());
+            }
+        }
+    }
+}

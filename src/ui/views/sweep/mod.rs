@@ -1,0 +1,112 @@
+//! Tab 4: one output against one scene parameter for the checked models.
+
+mod keys;
+pub mod layout;
+pub mod plot;
+mod render;
+pub mod settings;
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+
+use crate::chart::Chart;
+use crate::ui::action::Action;
+use crate::ui::app::{App, EditTarget, Valid};
+use crate::ui::layout::Screen;
+use crate::ui::studies::{StudyKind, StudySpec};
+
+use plot::SweepSet;
+
+use super::{FIGURE_TICKS, Hints, View};
+
+pub struct Sweep;
+
+impl View for Sweep {
+    fn id(&self) -> &'static str {
+        "sweep"
+    }
+
+    fn title(&self) -> &'static str {
+        "sweep"
+    }
+
+    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
+        render::render(frame, screen, app);
+    }
+
+    fn hints(&self) -> Hints {
+        &[
+            ("↑↓", "move"),
+            ("Enter", "edit"),
+            ("←→", "change"),
+            ("Space", "model"),
+            ("[ ]", "focus"),
+        ]
+    }
+
+    fn handle(&self, app: &mut App, action: Action) -> Option<Action> {
+        keys::handle(app, action)
+    }
+
+    fn commit(&self, app: &mut App, target: EditTarget, text: &str) -> Result<(), String> {
+        match target {
+            EditTarget::Sweep(field) => {
+                let scene = keys::sweep_scene(app);
+                app.sweep.apply(field, text, &scene)
+            }
+            _ => Ok(()),
+        }
+    }
+
+    fn studies(&self) -> &'static [StudyKind] {
+        &[StudyKind::Sweep]
+    }
+
+    fn study_specs(&self, app: &App, valid: &Valid) -> Vec<StudySpec> {
+        match app.sweep.spec(
+            &valid.scene,
+            app.checked_models(),
+            app.draft.options,
+            max_points(app),
+        ) {
+            Ok(spec) => vec![StudySpec::Sweep {
+                scene: Box::new(valid.scene.clone()),
+                spec: Box::new(spec),
+            }],
+            // The view says why; there is nothing to compute.
+            Err(_) => Vec::new(),
+        }
+    }
+
+    fn charts(&self, app: &App) -> Vec<Chart> {
+        match app.studies.sweep() {
+            Some(Ok(data)) => {
+                let yield_stress = app
+                    .valid
+                    .as_ref()
+                    .and_then(|v| v.scene.pair().ok())
+                    .map(|p| p.yield_stress());
+                let set = SweepSet {
+                    name: None,
+                    data,
+                    yield_stress,
+                };
+                vec![plot::chart(
+                    &[set],
+                    app.sweep.output,
+                    Some(app.focused),
+                    FIGURE_TICKS,
+                )]
+            }
+            _ => Vec::new(),
+        }
+    }
+}
+
+/// The most points the sweep chart shows distinctly: one per braille dot column (two per
+/// terminal column), one per column with the other markers.
+pub fn max_points(app: &App) -> usize {
+    let (width, height) = app.screen;
+    let columns = layout::sweep_plot_columns(Rect::new(0, 0, width, height));
+    usize::from(columns) * usize::from(app.marker.dots_per_cell())
+}

@@ -1,0 +1,558 @@
+//! What the sweep view sweeps and draws: the parameter (any applicable [`SceneKey`]), the output,
+//! the range and scale, and the number of points (by default, as many as the chart can show).
+
+use crate::model::ForceModel;
+use crate::model::impact::SolveOptions;
+use crate::model::scene::Scene;
+use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use crate::model::study::sweep::{SweepRow, SweepSpec};
+use crate::ui::field::{Field, Nudge, nudged};
+use crate::ui::units::{self, Unit};
+
+/// The rows of the sweep form, in cursor order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SweepField {
+    Parameter,
+    Output,
+    From,
+    To,
+    Points,
+    Scale,
+}
+
+impl SweepField {
+    pub const ALL: [SweepField; 6] = [
+        SweepField::Parameter,
+        SweepField::Output,
+        SweepField::From,
+        SweepField::To,
+        SweepField::Points,
+        SweepField::Scale,
+    ];
+
+    pub fn label(self) -> &'static str {
+        match self {
+            SweepField::Parameter => "param",
+            SweepField::Output => "output",
+            SweepField::From => "from",
+            SweepField::To => "to",
+            SweepField::Points => "points",
+            SweepField::Scale => "scale",
+        }
+    }
+
+    /// Whether Enter opens a line editor (else it steps the choice).
+    pub fn is_typed(self) -> bool {
+        matches!(self, SweepField::From | SweepField::To | SweepField::Points)
+    }
+
+    /// The next or previous row, wrapping.
+    pub fn step(self, forward: bool) -> SweepField {
+        let n = SweepField::ALL.len();
+        let i = SweepField::ALL
+            .iter()
+            .position(|&f| f == self)
+            .unwrap_or_default();
+        SweepField::ALL[if forward {
+            (i + 1) % n
+        } else {
+            (i + n - 1) % n
+        }]
+    }
+}
+
+/// What the sweep chart draws against the parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SweepOutput {
+    /// Maximum contact pressure p₀ of the quasistatic estimate (the paper's Fig. 2).
+    PeakPressure,
+    /// Contact radius (point contact) or half-width (line contact) of the estimate.
+    ContactSize,
+    XMax,
+    FMax,
+    TContact,
+    VOut,
+    EOut,
+}
+
+impl SweepOutput {
+    pub const ALL: [SweepOutput; 7] = [
+        SweepOutput::PeakPressure,
+        SweepOutput::ContactSize,
+        SweepOutput::XMax,
+        SweepOutput::FMax,
+        SweepOutput::TContact,
+        SweepOutput::VOut,
+        SweepOutput::EOut,
+    ];
+
+    /// The symbol on the axis and in the form.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            SweepOutput::PeakPressure => "p₀",
+            SweepOutput::ContactSize => "a | b",
+            SweepOutput::XMax => "x_max",
+            SweepOutput::FMax => "F_max",
+            SweepOutput::TContact => "t_c",
+            SweepOutput::VOut => "v_out",
+            SweepOutput::EOut => "e_out",
+        }
+    }
+
+    /// What it is, for the form.
+    pub fn description(self) -> &'static str {
+        match self {
+            SweepOutput::PeakPressure => "max pressure (Hertz)",
+            SweepOutput::ContactSize => "contact radius | half-width",
+            SweepOutput::XMax => "max approach",
+            SweepOutput::FMax => "max force",
+            SweepOutput::TContact => "contact time",
+            SweepOutput::VOut => "exit speed",
+            SweepOutput::EOut => "realized restitution",
+        }
+    }
+
+    pub fn unit(self) -> Unit {
+        match self {
+            SweepOutput::PeakPressure => units::PASCAL,
+            SweepOutput::ContactSize | SweepOutput::XMax => units::METRE,
+            SweepOutput::FMax => units::NEWTON,
+            SweepOutput::TContact => units::SECOND,
+            SweepOutput::VOut => units::METRE_PER_SECOND,
+            SweepOutput::EOut => units::DIMENSIONLESS,
+        }
+    }
+
+    /// Whether each model has its own value (else the quasistatic estimate has one per point).
+    pub fn per_model(self) -> bool {
+        !matches!(self, SweepOutput::PeakPressure | SweepOutput::ContactSize)
+    }
+
+    /// The quasistatic value at a row.
+    pub fn estimate(self, row: &SweepRow) -> Option<f64> {
+        let q = row.quasistatic.as_ref()?;
+        match self {
+            SweepOutput::PeakPressure => Some(q.p_max),
+            SweepOutput::ContactSize => q.contact_radius.or(q.half_width),
+            _ => None,
+        }
+    }
+
+    /// The value of `model` at a row.
+    pub fn of_model(self, row: &SweepRow, model: ForceModel) -> Option<f64> {
+        let point = row.impacts.iter().find(|p| p.model == model)?;
+        match self {
+            SweepOutput::XMax => point.x_max,
+            SweepOutput::FMax => point.f_max,
+            SweepOutput::TContact => point.t_contact,
+            SweepOutput::VOut => point.v_out,
+            SweepOutput::EOut => point.e_out,
+            SweepOutput::PeakPressure | SweepOutput::ContactSize => None,
+        }
+    }
+
+    fn step(self, direction: Nudge) -> SweepOutput {
+        cycle(&SweepOutput::ALL, self, direction)
+    }
+}
+
+/// The swept interval and its spacing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Range {
+    pub from: f64,
+    pub to: f64,
+    pub log: bool,
+}
+
+/// Everything the sweep form sets.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepSettings {
+    pub key: SceneKey,
+    pub output: SweepOutput,
+    /// A range the user set; `None` follows the scene (see [`default_range`]).
+    pub custom: Option<Range>,
+    /// A number of points the user set; `None` sizes the sweep to the chart.
+    pub points: Option<usize>,
+}
+
+impl Default for SweepSettings {
+    /// e_out against v₀: how each model's losses follow the impact speed.
+    fn default() -> Self {
+        SweepSettings {
+            key: SceneKey::V0,
+            output: SweepOutput::EOut,
+            custom: None,
+            points: None,
+        }
+    }
+}
+
+/// Fewest points of a sweep (a line needs two).
+pub const MIN_POINTS: usize = 2;
+
+/// The key's value in `scene`, with a derived mass as its value (`None`: the key does not apply).
+pub fn value_of(key: SceneKey, scene: &Scene) -> Option<f64> {
+    let value = match key {
+        SceneKey::Body(index, BodyField::Mass) => Some(match index {
+            BodyIndex::One => scene.body1.mass(),
+            BodyIndex::Two => scene.body2.mass(),
+        }),
+        _ => key.get(scene),
+    }?;
+    // A plane's mass is infinite: there is nothing to sweep.
+    value.is_finite().then_some(value)
+}
+
+/// The keys a sweep of `scene` can vary, in [`SceneKey::all`] order.
+pub fn sweepable_keys(scene: &Scene) -> Vec<SceneKey> {
+    SceneKey::all()
+        .into_iter()
+        .filter(|&k| value_of(k, scene).is_some())
+        .collect()
+}
+
+/// A range around the scene's value: v₀/100 … 10·v₀ on a log scale for v₀, a decade either side
+/// for sizes, masses and moduli, the whole admissible interval for e and ν, 0 … 2·x_pl for x_pl.
+pub fn default_range(key: SceneKey, scene: &Scene) -> Option<Range> {
+    let value = value_of(key, scene)?;
+    let range = |from, to, log| Range { from, to, log };
+    Some(match key {
+        SceneKey::V0 => range(value / 100.0, value * 10.0, true),
+        SceneKey::Restitution => range(0.05, 1.0, false),
+        SceneKey::PlasticIndentation if value > 0.0 => range(0.0, 2.0 * value, false),
+        SceneKey::PlasticIndentation => range(0.0, 1e-5, false),
+        SceneKey::Body(_, BodyField::PoissonRatio) => range(0.0, 0.49, false),
+        SceneKey::Body(..) => range(value / 10.0, value * 10.0, true),
+    })
+}
+
+/// The short name of a key on an axis: `v₀`, `R₁`, `E₂`.
+pub fn key_symbol(key: SceneKey) -> String {
+    let label = Field::Number(key).label();
+    match key {
+        SceneKey::Body(BodyIndex::One, _) => format!("{label}₁"),
+        SceneKey::Body(BodyIndex::Two, _) => format!("{label}₂"),
+        _ => label.to_string(),
+    }
+}
+
+/// The unit a key's values are typed and shown in.
+pub fn key_unit(key: SceneKey) -> Unit {
+    Field::Number(key).unit()
+}
+
+impl SweepSettings {
+    /// The range swept in `scene`: the user's, else the default; `None` if the key does not apply.
+    pub fn range(&self, scene: &Scene) -> Option<Range> {
+        self.custom.or_else(|| default_range(self.key, scene))
+    }
+
+    /// The number of points for a chart that shows `max` of them distinctly.
+    pub fn effective_points(&self, max: usize) -> usize {
+        let max = max.max(MIN_POINTS);
+        self.points.unwrap_or(max).clamp(MIN_POINTS, max)
+    }
+
+    /// The sweep of `models` in `scene`, or why there is none.
+    pub fn spec(
+        &self,
+        scene: &Scene,
+        models: Vec<ForceModel>,
+        options: SolveOptions,
+        max_points: usize,
+    ) -> Result<SweepSpec, String> {
+        let range = self.range(scene).ok_or_else(|| {
+            format!(
+                "{} does not apply to this scene: pick another parameter",
+                self.key
+            )
+        })?;
+        Ok(SweepSpec {
+            key: self.key,
+            from: range.from,
+            to: range.to,
+            points: self.effective_points(max_points),
+            log: range.log,
+            models,
+            options,
+        })
+    }
+
+    /// The value shown in the form.
+    pub fn display(&self, field: SweepField, scene: &Scene, max_points: usize) -> String {
+        match field {
+            SweepField::Parameter => self.key.path(),
+            SweepField::Output => {
+                format!("{} {}", self.output.symbol(), self.output.description())
+            }
+            SweepField::Points => match self.points {
+                None => format!("auto ({})", self.effective_points(max_points)),
+                Some(_) => format!(
+                    "{} (chart shows ≤ {})",
+                    self.effective_points(max_points),
+                    max_points.max(MIN_POINTS)
+                ),
+            },
+            SweepField::Scale => match self.range(scene) {
+                Some(r) if r.log => "log".into(),
+                Some(_) => "linear".into(),
+                None => "—".into(),
+            },
+            SweepField::From | SweepField::To => self.edit_text(field, scene),
+        }
+    }
+
+    /// The text an edit starts from.
+    pub fn edit_text(&self, field: SweepField, scene: &Scene) -> String {
+        let unit = key_unit(self.key);
+        match (field, self.range(scene)) {
+            (SweepField::From, Some(r)) => units::engineering(r.from, unit, 4),
+            (SweepField::To, Some(r)) => units::engineering(r.to, unit, 4),
+            (SweepField::Points, _) => match self.points {
+                Some(n) => n.to_string(),
+                None => "auto".into(),
+            },
+            _ => String::new(),
+        }
+    }
+
+    /// Parses `text` into a typed field: a bound in the key's unit, or a count (or `auto`).
+    pub fn apply(&mut self, field: SweepField, text: &str, scene: &Scene) -> Result<(), String> {
+        match field {
+            SweepField::Points => {
+                let text = text.trim();
+                if text == "auto" {
+                    self.points = None;
+                    return Ok(());
+                }
+                let n: usize = text
+                    .parse()
+                    .map_err(|_| format!("'{text}' is not a count: type a whole number or auto"))?;
+                if n < MIN_POINTS {
+                    return Err(format!("a sweep needs at least {MIN_POINTS} points"));
+                }
+                self.points = Some(n);
+                Ok(())
+            }
+            SweepField::From | SweepField::To => {
+                let value = units::parse(text, key_unit(self.key))?;
+                let mut range = self
+                    .range(scene)
+                    .ok_or_else(|| format!("{} does not apply to this scene", self.key))?;
+                if field == SweepField::From {
+                    range.from = value;
+                } else {
+                    range.to = value;
+                }
+                self.custom = Some(range);
+                Ok(())
+            }
+            SweepField::Parameter | SweepField::Output | SweepField::Scale => {
+                self.nudge(field, Nudge::Up, scene, usize::MAX);
+                Ok(())
+            }
+        }
+    }
+
+    /// Steps a field: the next key or output, the other scale, a bound by its second digit, the
+    /// points halved or doubled. Returns whether anything changed.
+    pub fn nudge(
+        &mut self,
+        field: SweepField,
+        direction: Nudge,
+        scene: &Scene,
+        max_points: usize,
+    ) -> bool {
+        let before = self.clone();
+        match field {
+            SweepField::Parameter => {
+                let keys = sweepable_keys(scene);
+                if keys.is_empty() {
+                    return false;
+                }
+                self.key = cycle(&keys, self.key, direction);
+                // A new parameter starts from its own default range.
+                self.custom = None;
+            }
+            SweepField::Output => self.output = self.output.step(direction),
+            SweepField::Scale => {
+                if let Some(mut range) = self.range(scene) {
+                    range.log = !range.log;
+                    self.custom = Some(range);
+                }
+            }
+            SweepField::From | SweepField::To => {
+                if let Some(mut range) = self.range(scene) {
+                    let bound = if field == SweepField::From {
+                        &mut range.from
+                    } else {
+                        &mut range.to
+                    };
+                    if let Some(next) = nudged(*bound, direction, 0.01 * range_scale(self.key)) {
+                        *bound = next;
+                        self.custom = Some(range);
+                    }
+                }
+            }
+            SweepField::Points => {
+                let current = self.effective_points(max_points);
+                let next = match direction {
+                    Nudge::Up => current.saturating_mul(2),
+                    Nudge::Down => current / 2,
+                };
+                self.points = Some(next.clamp(MIN_POINTS, max_points.max(MIN_POINTS)));
+            }
+        }
+        *self != before
+    }
+}
+
+/// The order of magnitude of a key's values in SI, for stepping a bound away from zero.
+fn range_scale(key: SceneKey) -> f64 {
+    match key {
+        SceneKey::PlasticIndentation => 1e-5,
+        _ => 1.0,
+    }
+}
+
+fn cycle<T: Copy + PartialEq>(choices: &[T], current: T, direction: Nudge) -> T {
+    let n = choices.len();
+    let i = choices.iter().position(|&c| c == current).unwrap_or(0);
+    choices[match direction {
+        Nudge::Up => (i + 1) % n,
+        Nudge::Down => (i + n - 1) % n,
+    }]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ui::testing::fig5_scene;
+
+    #[test]
+    fn v0_sweeps_two_decades_down_and_one_up_on_a_log_scale() {
+        let scene = fig5_scene();
+        let settings = SweepSettings::default();
+        let spec = settings
+            .spec(
+                &scene,
+                vec![ForceModel::Proposed],
+                SolveOptions::default(),
+                240,
+            )
+            .unwrap();
+        assert_eq!(spec.key, SceneKey::V0);
+        assert!((spec.from - 0.003).abs() < 1e-15 && (spec.to - 3.0).abs() < 1e-12);
+        assert!(spec.log);
+        assert_eq!(spec.points, 240, "as many points as the chart shows");
+        assert_eq!(spec.models, [ForceModel::Proposed]);
+    }
+
+    #[test]
+    fn only_keys_that_apply_to_the_shapes_are_offered() {
+        let scene = fig5_scene();
+        let keys = sweepable_keys(&scene);
+        let radius2 = SceneKey::Body(BodyIndex::Two, BodyField::Radius);
+        let mass2 = SceneKey::Body(BodyIndex::Two, BodyField::Mass);
+        let mass1 = SceneKey::Body(BodyIndex::One, BodyField::Mass);
+        assert!(!keys.contains(&radius2), "the plane has no radius");
+        assert!(!keys.contains(&mass2), "the plane's mass is infinite");
+        assert!(
+            keys.contains(&mass1),
+            "a derived mass sweeps from its value"
+        );
+        assert!(!keys.contains(&SceneKey::Body(BodyIndex::One, BodyField::Length)));
+        // Cycling the parameter visits them in order and resets the range.
+        let mut s = SweepSettings {
+            custom: Some(Range {
+                from: 1.0,
+                to: 2.0,
+                log: false,
+            }),
+            ..SweepSettings::default()
+        };
+        assert!(s.nudge(SweepField::Parameter, Nudge::Up, &scene, 100));
+        assert_eq!(s.key, SceneKey::Restitution);
+        assert_eq!(s.custom, None);
+        assert_eq!(
+            s.range(&scene),
+            Some(Range {
+                from: 0.05,
+                to: 1.0,
+                log: false
+            })
+        );
+        assert!(s.nudge(SweepField::Parameter, Nudge::Down, &scene, 100));
+        assert!(s.nudge(SweepField::Parameter, Nudge::Down, &scene, 100));
+        assert_eq!(s.key, *keys.last().unwrap(), "wraps backwards");
+    }
+
+    #[test]
+    fn bounds_take_units_and_points_stay_within_the_chart() {
+        let scene = fig5_scene();
+        let mut s = SweepSettings::default();
+        s.apply(SweepField::From, "10 mm/s", &scene).unwrap();
+        let range = s.range(&scene).unwrap();
+        assert!((range.from - 0.01).abs() < 1e-15);
+        assert!((range.to - 3.0).abs() < 1e-12, "the other bound is kept");
+        assert!(s.apply(SweepField::To, "fast", &scene).is_err());
+        assert_eq!(s.edit_text(SweepField::From, &scene), "0.01 m/s");
+        assert!(s.apply(SweepField::Points, "1", &scene).is_err());
+        s.apply(SweepField::Points, "1000", &scene).unwrap();
+        assert_eq!(
+            s.effective_points(300),
+            300,
+            "never more than the chart shows"
+        );
+        assert_eq!(
+            s.display(SweepField::Points, &scene, 300),
+            "300 (chart shows ≤ 300)"
+        );
+        assert!(s.nudge(SweepField::Points, Nudge::Down, &scene, 300));
+        assert_eq!(s.points, Some(150));
+        s.apply(SweepField::Points, "auto", &scene).unwrap();
+        assert_eq!(s.display(SweepField::Points, &scene, 300), "auto (300)");
+        assert!(s.nudge(SweepField::Scale, Nudge::Up, &scene, 300));
+        assert_eq!(s.display(SweepField::Scale, &scene, 300), "linear");
+    }
+
+    #[test]
+    fn outputs_read_the_estimate_or_each_model() {
+        use crate::model::study::sweep::{ImpactPoint, QuasistaticPoint};
+        let row = SweepRow {
+            value: 0.3,
+            quasistatic: Some(QuasistaticPoint {
+                p_max: 2.1e9,
+                contact_radius: Some(3e-4),
+                half_width: None,
+                v_yield: 0.03,
+                v_plastic: 0.33,
+            }),
+            impacts: vec![ImpactPoint {
+                model: ForceModel::Proposed,
+                x_max: Some(7.6e-6),
+                f_max: Some(326.0),
+                t_contact: Some(8.3e-5),
+                v_out: Some(0.18),
+                e_out: Some(0.62),
+                error: None,
+            }],
+            error: None,
+        };
+        assert_eq!(SweepOutput::PeakPressure.estimate(&row), Some(2.1e9));
+        assert_eq!(SweepOutput::ContactSize.estimate(&row), Some(3e-4));
+        assert_eq!(
+            SweepOutput::EOut.of_model(&row, ForceModel::Proposed),
+            Some(0.62)
+        );
+        assert_eq!(
+            SweepOutput::EOut.of_model(&row, ForceModel::HuntCrossley),
+            None
+        );
+        assert!(!SweepOutput::PeakPressure.per_model() && SweepOutput::VOut.per_model());
+        assert_eq!(
+            key_symbol(SceneKey::Body(BodyIndex::Two, BodyField::YoungsModulus)),
+            "E₂"
+        );
+    }
+}

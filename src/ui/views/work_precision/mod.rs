@@ -1,0 +1,76 @@
+//! Tab 2: error against cost of every method for the focused model.
+
+pub mod plot;
+mod render;
+
+use ratatui::Frame;
+
+use crate::chart::Chart;
+use crate::ui::action::Action;
+use crate::ui::app::{App, Valid};
+use crate::ui::layout::Screen;
+use crate::ui::studies::{StudyKind, StudySpec};
+
+use plot::Cost;
+
+use super::{FIGURE_TICKS, Hints, View};
+
+pub struct WorkPrecision;
+
+impl View for WorkPrecision {
+    fn id(&self) -> &'static str {
+        "work-precision"
+    }
+
+    fn title(&self) -> &'static str {
+        "work–precision"
+    }
+
+    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
+        render::render(frame, screen.body, app, screen.roomy);
+    }
+
+    fn hints(&self) -> Hints {
+        &[("[ ]", "model"), ("c", "chart")]
+    }
+
+    fn handle(&self, app: &mut App, action: Action) -> Option<Action> {
+        match action {
+            // The cost axis shown where only one chart fits.
+            Action::CycleChart => {
+                app.cost = app.cost.other();
+                None
+            }
+            action => Some(action),
+        }
+    }
+
+    fn studies(&self) -> &'static [StudyKind] {
+        &[StudyKind::WorkPrecision, StudyKind::Current]
+    }
+
+    fn study_specs(&self, app: &App, valid: &Valid) -> Vec<StudySpec> {
+        let (model, params) = (app.focused, valid.params);
+        vec![
+            StudySpec::WorkPrecision { model, params },
+            StudySpec::Current {
+                model,
+                params,
+                options: app.draft.options,
+            },
+        ]
+    }
+
+    fn charts(&self, app: &App) -> Vec<Chart> {
+        match app.studies.work_precision() {
+            Some(Ok(data)) => {
+                let current = app.studies.current().and_then(|c| c.as_ref().ok());
+                [Cost::Seconds, Cost::ForceEvals]
+                    .into_iter()
+                    .map(|cost| plot::chart(data, current, cost, FIGURE_TICKS))
+                    .collect()
+            }
+            _ => Vec::new(),
+        }
+    }
+}

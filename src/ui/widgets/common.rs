@@ -1,0 +1,148 @@
+//! Small helpers shared by the pane renderers.
+
+use ratatui::layout::{Constraint, Flex, Layout, Rect};
+use ratatui::style::Style;
+use ratatui::text::Span;
+use ratatui::widgets::{Block, Borders};
+
+use crate::model::ForceModel;
+use crate::ui::style::{Role, Theme};
+
+/// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
+pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Block<'a> {
+    let borders = if roomy { Borders::ALL } else { Borders::TOP };
+    Block::default()
+        .borders(borders)
+        .border_style(theme.style(Role::Muted))
+        .title(title)
+        .title_style(theme.style(Role::Title))
+}
+
+/// A model's name in `width` columns at most: the paper's label, the kebab name, or an abbreviation.
+pub fn model_name(model: ForceModel, width: usize) -> &'static str {
+    let label = model.label();
+    if label.chars().count() <= width {
+        return label;
+    }
+    if model.name().len() <= width {
+        return model.name();
+    }
+    model.short()
+}
+
+/// Word-wraps `text` to lines of at most `width` characters (long words are cut).
+pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    let width = width.max(1);
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        let mut word: Vec<char> = word.chars().collect();
+        while word.len() > width {
+            if !line.is_empty() {
+                lines.push(std::mem::take(&mut line));
+            }
+            lines.push(word.drain(..width).collect());
+        }
+        let word: String = word.into_iter().collect();
+        let needed = line.chars().count() + usize::from(!line.is_empty()) + word.chars().count();
+        if needed > width && !line.is_empty() {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(&word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// Spans laid out in lines of at most `width` columns, breaking only between items; items are
+/// separated by `gap` on a line. Lines past `max_lines` are dropped.
+pub fn flow<'a>(
+    items: Vec<Vec<Span<'a>>>,
+    width: usize,
+    max_lines: usize,
+    gap: Span<'a>,
+) -> Vec<ratatui::text::Line<'a>> {
+    let mut lines: Vec<Vec<Span<'a>>> = Vec::new();
+    let mut used = 0;
+    for item in items {
+        let item_width: usize = item.iter().map(Span::width).sum();
+        let fits = used > 0 && used + gap.width() + item_width <= width;
+        match lines.last_mut() {
+            Some(line) if fits => {
+                line.push(gap.clone());
+                line.extend(item);
+                used += gap.width() + item_width;
+            }
+            _ => {
+                lines.push(item);
+                used = item_width;
+            }
+        }
+    }
+    lines.truncate(max_lines);
+    lines.into_iter().map(ratatui::text::Line::from).collect()
+}
+
+/// A rectangle of at most `width`×`height` centred in `area`.
+pub fn centered(area: Rect, width: u16, height: u16) -> Rect {
+    let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
+        .flex(Flex::Center)
+        .areas(area);
+    let [cell] = Layout::horizontal([Constraint::Length(width.min(area.width))])
+        .flex(Flex::Center)
+        .areas(row);
+    cell
+}
+
+/// A styled span.
+pub fn span<'a>(text: impl Into<std::borrow::Cow<'a, str>>, style: Style) -> Span<'a> {
+    Span::styled(text, style)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wrap_breaks_between_words_and_cuts_long_ones() {
+        assert_eq!(
+            wrap("body1.radius must be a finite number > 0, got -0.001", 20),
+            ["body1.radius must be", "a finite number > 0,", "got -0.001"]
+        );
+        assert_eq!(wrap("abcdefghij", 4), ["abcd", "efgh", "ij"]);
+        assert!(wrap("", 10).is_empty());
+    }
+
+    #[test]
+    fn flow_keeps_items_whole() {
+        let item = |s: &'static str| vec![Span::raw(s)];
+        let lines = flow(
+            vec![item("aaaa"), item("bbbb"), item("cccccc"), item("d")],
+            10,
+            2,
+            Span::raw(" "),
+        );
+        let text: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+        assert_eq!(text, ["aaaa bbbb", "cccccc d"]);
+    }
+
+    #[test]
+    fn names_fit_their_width() {
+        for model in ForceModel::ALL {
+            for width in [5, 9, 19, 30] {
+                assert!(model_name(model, width).chars().count() <= width.max(8));
+            }
+        }
+        assert_eq!(
+            model_name(ForceModel::HuntCrossley, 30),
+            "Hunt–Crossley (eq 19)"
+        );
+        assert_eq!(model_name(ForceModel::HuntCrossley, 13), "hunt-crossley");
+        assert_eq!(model_name(ForceModel::HuntCrossley, 8), "H–C");
+    }
+}

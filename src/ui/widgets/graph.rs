@@ -1,0 +1,768 @@
+//! The terminal back-end of [`crate::chart`]: a chart painted cell by cell. The axes, ticks and
+//! labels are drawn here rather than by ratatui's `Chart` (which spreads labels evenly whatever
+//! their values), so each label is centred on the cell its value falls in, by the same rounding
+//! the curves are drawn with. Axis titles go outside the plot: the y title above it, the x title
+//! below the tick labels.
+
+use ratatui::Frame;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Block;
+
+use crate::chart::layout::dot;
+use crate::chart::{Chart, Ink, place_ticks};
+use crate::ui::style::MarkerStyle;
+use crate::ui::style::{Role, Theme, sample};
+
+use super::common::wrap;
+
+/// Where the parts of a chart go inside its frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ChartFrame {
+    /// Where the curves are drawn.
+    pub plot: Rect,
+    /// Width of the y tick labels, left of the axis line.
+    pub y_labels: u16,
+    /// Whether the x title has a row of its own under the tick labels (else it shares the y
+    /// title's row above the plot, on the right).
+    pub x_title_below: bool,
+}
+
+fn width(text: &str) -> u16 {
+    text.chars().count() as u16
+}
+
+/// Tick budgets for a plot of about `columns` × `rows` cells: labels need a few columns each and
+/// a blank row between them.
+pub fn budget(columns: u16, rows: u16) -> (usize, usize) {
+    (
+        usize::from(columns / 7).clamp(2, 11),
+        (usize::from(rows.saturating_sub(1)) / 2 + 1).clamp(2, 8),
+    )
+}
+
+/// The plot area inside `inner` for `chart`: the y title row on top, the y tick labels and axis
+/// line on the left, the axis line, tick labels (and the x title where there is height) below,
+/// and half the last x label's width on the right so it is not cut.
+pub fn frame_of(inner: Rect, chart: &Chart) -> ChartFrame {
+    let y_labels = chart
+        .y
+        .ticks
+        .iter()
+        .map(|t| width(&t.label))
+        .max()
+        .unwrap_or(1)
+        .min(inner.width / 3);
+    let x_title_below = inner.height >= 12;
+    let bottom = if x_title_below { 3 } else { 2 };
+    let right = chart.x.ticks.last().map_or(0, |t| width(&t.label) / 2);
+    let left = y_labels + 1;
+    let plot = Rect::new(
+        inner.x + left.min(inner.width),
+        inner.y + 1.min(inner.height),
+        inner.width.saturating_sub(left + right),
+        inner.height.saturating_sub(1 + bottom),
+    );
+    ChartFrame {
+        plot,
+        y_labels,
+        x_title_below,
+    }
+}
+
+/// Dots per cell across and down for `marker`.
+fn dots(marker: MarkerStyle) -> (u16, u16) {
+    match marker {
+        MarkerStyle::Braille => (2, 4),
+        MarkerStyle::Dot | MarkerStyle::Block => (1, 1),
+    }
+}
+
+/// The cell (column, row) of display point `p` in `plot`, if it lies on both axes.
+pub fn cell_of(
+    chart: &Chart,
+    plot: Rect,
+    marker: MarkerStyle,
+    p: (f64, f64),
+) -> Option<(u16, u16)> {
+    let (dx, dy) = dots(marker);
+    let col = dot(&chart.x, p.0, plot.width, dx)? / u32::from(dx);
+    let row = dot(&chart.y, p.1, plot.height, dy)? / u32::from(dy);
+    Some((plot.x + col as u16, plot.bottom() - 1 - row as u16))
+}
+
+/// One cell of the canvas: braille dots set, whose ink is on top, and a glyph over the dots.
+#[derive(Debug, Clone, Copy, Default)]
+struct Cell {
+    dots: u8,
+    ink: Option<(Ink, bool)>,
+    glyph: Option<(char, Ink, bool)>,
+}
+
+/// The canvas of a plot area, in dots.
+struct Canvas {
+    width: u16,
+    height: u16,
+    dx: u16,
+    dy: u16,
+    cells: Vec<Cell>,
+}
+
+/// Bits of the braille dots of a cell, by (column, row) within it (Unicode's 2×4 layout).
+const BRAILLE: [[u8; 2]; 4] = [[0x01, 0x08], [0x02, 0x10], [0x04, 0x20], [0x40, 0x80]];
+
+impl Canvas {
+    fn new(plot: Rect, marker: MarkerStyle) -> Canvas {
+        let (dx, dy) = dots(marker);
+        Canvas {
+            width: plot.width,
+            height: plot.height,
+            dx,
+            dy,
+            cells: vec![Cell::default(); usize::from(plot.width) * usize::from(plot.height)],
+        }
+    }
+
+    fn dots_wide(&self) -> u32 {
+        u32::from(self.width) * u32::from(self.dx)
+    }
+
+    fn dots_high(&self) -> u32 {
+        u32::from(self.height) * u32::from(self.dy)
+    }
+
+    /// The dot of display point `p`, in fractional dots from the bottom-left (may lie outside).
+    fn to_dots(&self, chart: &Chart, p: (f64, f64)) -> Option<(f64, f64)> {
+        let fx = chart.x.fraction(p.0);
+        let fy = chart.y.fraction(p.1);
+        (fx.is_finite() && fy.is_finite()).then(|| {
+            (
+                fx * f64::from(self.dots_wide().max(1) - 1),
+                fy * f64::from(self.dots_high().max(1) - 1),
+            )
+        })
+    }
+
+    fn cell_mut(&mut self, x: u32, y: u32) -> Option<&mut Cell> {
+        if x >= self.dots_wide() || y >= self.dots_high() {
+            return None;
+        }
+        let col = (x / u32::from(self.dx)) as usize;
+        let row = usize::from(self.height) - 1 - (y / u32::from(self.dy)) as usize;
+        self.cells.get_mut(row * usize::from(self.width) + col)
+    }
+
+    /// The dot nearest a fractional dot position (`None` left of or below the canvas).
+    fn nearest(x: f64, y: f64) -> Option<(i64, i64)> {
+        (x >= -0.5 && y >= -0.5 && x.is_finite() && y.is_finite())
+            .then(|| (x.round() as i64, y.round() as i64))
+    }
+
+    fn set_dot(&mut self, (x, y): (i64, i64), ink: Ink, bold: bool) {
+        let (Ok(x), Ok(y)) = (u32::try_from(x), u32::try_from(y)) else {
+            return;
+        };
+        let braille = self.dx == 2 && self.dy == 4;
+        if let Some(cell) = self.cell_mut(x, y) {
+            cell.dots |= if braille {
+                BRAILLE[3 - (y % 4) as usize][(x % 2) as usize]
+            } else {
+                1
+            };
+            cell.ink = Some((ink, bold));
+        }
+    }
+
+    fn set(&mut self, x: f64, y: f64, ink: Ink, bold: bool) {
+        if let Some(dot) = Canvas::nearest(x, y) {
+            self.set_dot(dot, ink, bold);
+        }
+    }
+
+    /// A straight line between two dots, one dot at a time (clipped to the canvas): from the dot
+    /// after `a`'s to `b`'s, so that a polyline sets each dot once; a segment within one dot sets
+    /// nothing new.
+    fn line(&mut self, a: (f64, f64), b: (f64, f64), ink: Ink, bold: bool) {
+        let (Some(a), Some(b)) = (Canvas::nearest(a.0, a.1), Canvas::nearest(b.0, b.1)) else {
+            // An end off the canvas: fall back to stepping the fractional line, clipped.
+            let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
+            if steps.is_finite() && steps <= 1e5 {
+                let steps = steps.max(1.0) as u32;
+                for k in 0..=steps {
+                    let s = f64::from(k) / f64::from(steps);
+                    self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
+                }
+            }
+            return;
+        };
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let steps = dx.abs().max(dy.abs());
+        if steps == 0 || steps > 100_000 {
+            self.set_dot(b, ink, bold);
+            return;
+        }
+        for k in 1..=steps {
+            // Integer DDA, rounded to the nearest dot.
+            let x = a.0 + (2 * dx * k + steps).div_euclid(2 * steps);
+            let y = a.1 + (2 * dy * k + steps).div_euclid(2 * steps);
+            self.set_dot((x, y), ink, bold);
+        }
+    }
+
+    fn glyph(&mut self, at: (f64, f64), glyph: char, ink: Ink, bold: bool) {
+        if at.0 < -0.5 || at.1 < -0.5 {
+            return;
+        }
+        if let Some(cell) = self.cell_mut(at.0.round() as u32, at.1.round() as u32) {
+            cell.glyph = Some((glyph, ink, bold));
+        }
+    }
+}
+
+/// How curves are told apart: by colour on braille, by glyphs where there is no colour or no
+/// braille (each model's glyph along the whole curve).
+fn glyphs_along(theme: Theme, marker: MarkerStyle) -> bool {
+    !theme.color || marker != MarkerStyle::Braille
+}
+
+/// Cells between the glyphs set along a curve when colour cannot tell curves apart.
+const GLYPH_SPACING: f64 = 6.0;
+
+fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) {
+    let along = glyphs_along(theme, marker);
+    for rule in &chart.rules {
+        let [a, b] = rule.ends(chart);
+        let (Some(a), Some(b)) = (canvas.to_dots(chart, a), canvas.to_dots(chart, b)) else {
+            continue;
+        };
+        // Dotted: every other dot, so curves crossing it stay visible.
+        let steps = (b.0 - a.0).max(b.1 - a.1).max(0.0) as u32 / 2;
+        for k in 0..=steps {
+            let s = f64::from(k) / f64::from(steps.max(1));
+            canvas.set(
+                a.0 + (b.0 - a.0) * s,
+                a.1 + (b.1 - a.1) * s,
+                rule.ink,
+                false,
+            );
+        }
+    }
+    let spacing = GLYPH_SPACING * f64::from(canvas.dx);
+    for series in &chart.series {
+        let bold = series.focused;
+        for run in &series.runs {
+            let pts: Vec<(f64, f64)> = run
+                .iter()
+                .filter_map(|&p| canvas.to_dots(chart, p))
+                .collect();
+            if let Some(first) = pts.first() {
+                canvas.set(first.0, first.1, series.ink, bold);
+            }
+            let mut travelled = spacing / 2.0;
+            for w in pts.windows(2) {
+                canvas.line(w[0], w[1], series.ink, bold);
+                if along {
+                    travelled += (w[1].0 - w[0].0).hypot((w[1].1 - w[0].1) * 0.5);
+                    if travelled >= spacing {
+                        travelled = 0.0;
+                        canvas.glyph(w[1], series.glyph, series.ink, bold);
+                    }
+                }
+            }
+            if series.steps {
+                for &p in &pts {
+                    canvas.glyph(p, series.glyph, series.ink, bold);
+                }
+            }
+        }
+    }
+    // Peaks and ends over every line, the focused series' last.
+    for series in &chart.series {
+        for p in series.peak.iter().copied().chain(series.end()) {
+            if let Some(at) = canvas.to_dots(chart, p) {
+                canvas.glyph(at, series.glyph, series.ink, series.focused);
+            }
+        }
+    }
+    for mark in &chart.marks {
+        if let Some(at) = canvas.to_dots(chart, mark.at) {
+            canvas.glyph(at, mark.glyph, mark.ink, true);
+        }
+    }
+}
+
+fn cell_symbol(cell: &Cell, marker: MarkerStyle) -> Option<char> {
+    if cell.dots == 0 {
+        return None;
+    }
+    Some(match marker {
+        MarkerStyle::Braille => char::from_u32(0x2800 + u32::from(cell.dots)).unwrap_or('•'),
+        MarkerStyle::Dot => '•',
+        MarkerStyle::Block => '█',
+    })
+}
+
+fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, limit: Rect) {
+    for (x, ch) in (x..).zip(text.chars()) {
+        if x >= limit.right() || y >= limit.bottom() || x < limit.x || y < limit.y {
+            break;
+        }
+        buf[(x, y)].set_char(ch).set_style(style);
+    }
+}
+
+fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: MarkerStyle) {
+    let along = glyphs_along(theme, marker);
+    for (i, cell) in canvas.cells.iter().enumerate() {
+        let x = plot.x + (i % usize::from(plot.width)) as u16;
+        let y = plot.y + (i / usize::from(plot.width)) as u16;
+        let styled = |ink: Ink, bold: bool| {
+            let style = theme.ink(ink);
+            if bold {
+                style.add_modifier(Modifier::BOLD)
+            } else {
+                style
+            }
+        };
+        if let Some((glyph, ink, bold)) = cell.glyph {
+            buf[(x, y)].set_char(glyph).set_style(styled(ink, bold));
+        } else if let (Some(symbol), Some((ink, bold))) = (cell_symbol(cell, marker), cell.ink) {
+            // Without braille or colour the dots are only the line between glyphs: keep them
+            // light so the glyphs read.
+            let style = if along && marker != MarkerStyle::Braille {
+                styled(ink, false).add_modifier(Modifier::DIM)
+            } else {
+                styled(ink, bold)
+            };
+            buf[(x, y)].set_char(symbol).set_style(style);
+        }
+    }
+}
+
+/// The axis lines with a tick mark at each label, and the labels centred on their cells.
+fn axes(
+    buf: &mut Buffer,
+    chart: &Chart,
+    inner: Rect,
+    f: &ChartFrame,
+    theme: Theme,
+    marker: MarkerStyle,
+) {
+    let plot = f.plot;
+    let (dx, dy) = dots(marker);
+    let line = theme.style(Role::Muted);
+    let text = theme.style(Role::Normal);
+    let axis_x = plot.x - 1;
+    let axis_y = plot.bottom();
+    for y in plot.y..plot.bottom() {
+        put(buf, axis_x, y, "│", line, inner);
+    }
+    put(buf, axis_x, axis_y, "└", line, inner);
+    for x in plot.x..plot.right() {
+        put(buf, x, axis_y, "─", line, inner);
+    }
+    for t in place_ticks(&chart.y, plot.height, dy, |_| 1) {
+        let y = plot.bottom() - 1 - t.cell;
+        put(buf, axis_x, y, "┤", line, inner);
+        let w = width(&t.label).min(f.y_labels);
+        put(buf, inner.x + f.y_labels - w, y, &t.label, text, inner);
+    }
+    for t in place_ticks(&chart.x, plot.width, dx, width) {
+        let x = plot.x + t.cell;
+        put(buf, x, axis_y, "┴", line, inner);
+        let start = x.saturating_sub((width(&t.label).saturating_sub(1)) / 2);
+        put(buf, start.max(inner.x), axis_y + 1, &t.label, text, inner);
+    }
+    let title = theme.style(Role::Label).add_modifier(Modifier::BOLD);
+    put(buf, inner.x, inner.y, &chart.y.title, title, inner);
+    let x_title = width(&chart.x.title);
+    if let Some(readout) = &chart.readout {
+        // The cursor's reading takes the row above the plot after the y title.
+        let x = inner.x + width(&chart.y.title) + 2;
+        put(buf, x, inner.y, readout, theme.style(Role::Normal), inner);
+        if f.x_title_below {
+            let x = inner.right().saturating_sub(x_title);
+            put(buf, x, axis_y + 2, &chart.x.title, title, inner);
+        }
+        return;
+    }
+    if f.x_title_below {
+        let x = inner.right().saturating_sub(x_title);
+        put(buf, x, axis_y + 2, &chart.x.title, title, inner);
+    } else if width(&chart.y.title) + 3 + x_title <= inner.width {
+        // A blank column after it, so it never runs into a neighbouring chart's title.
+        let x = inner.right().saturating_sub(x_title + 1);
+        put(buf, x, inner.y, &chart.x.title, title, inner);
+    }
+}
+
+/// Labels of the rules beside their line on the plot's top row, notes under it.
+fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker: MarkerStyle) {
+    let plot = f.plot;
+    for rule in &chart.rules {
+        let [_, end] = rule.ends(chart);
+        let Some((col, row)) = cell_of(chart, plot, marker, end) else {
+            continue;
+        };
+        let w = width(&rule.label);
+        if rule.horizontal {
+            // At the right end, on the rule's row.
+            let x = plot.right().saturating_sub(w).max(plot.x);
+            put(buf, x, row, &rule.label, theme.ink(rule.ink), plot);
+            continue;
+        }
+        let x = if col + 1 + w <= plot.right() {
+            col + 1
+        } else if col >= plot.x + w {
+            col - w
+        } else {
+            continue;
+        };
+        put(buf, x, plot.y, &rule.label, theme.ink(rule.ink), plot);
+    }
+    for mark in &chart.marks {
+        let (Some(label), Some((col, row))) = (&mark.label, cell_of(chart, plot, marker, mark.at))
+        else {
+            continue;
+        };
+        let w = width(label);
+        let x = if col + 2 + w <= plot.right() {
+            col + 2
+        } else {
+            col.saturating_sub(w + 1)
+        };
+        put(buf, x, row, label, theme.ink(mark.ink), plot);
+    }
+    // Notes wrapped to the plot's width from its second row, where they leave two thirds of the
+    // plot to the curves; else one line naming what has no curve.
+    let lines: Vec<String> = chart
+        .notes
+        .iter()
+        .flat_map(|note| wrap(note, usize::from(plot.width.saturating_sub(2))))
+        .collect();
+    let lines = if lines.len() <= usize::from(plot.height / 3) {
+        lines
+    } else {
+        let names: Vec<&str> = chart
+            .notes
+            .iter()
+            .map(|n| n.trim_start_matches("✗ ").split(':').next().unwrap_or(n))
+            .collect();
+        wrap(
+            &format!("✗ no curve: {}", names.join(", ")),
+            usize::from(plot.width.saturating_sub(2)),
+        )
+    };
+    for (y, line) in (plot.y + 1..plot.bottom()).zip(lines) {
+        put(buf, plot.x + 1, y, &line, theme.style(Role::Error), plot);
+    }
+}
+
+/// Draws `chart` in `area` inside `block`.
+pub fn render(
+    frame: &mut Frame,
+    area: Rect,
+    block: Block,
+    chart: &Chart,
+    marker: MarkerStyle,
+    theme: Theme,
+) {
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let f = frame_of(inner, chart);
+    if f.plot.width < 4 || f.plot.height < 2 {
+        return;
+    }
+    let mut canvas = Canvas::new(f.plot, marker);
+    paint(&mut canvas, chart, theme, marker);
+    let buf = frame.buffer_mut();
+    blit(buf, &canvas, f.plot, theme, marker);
+    axes(buf, chart, inner, &f, theme, marker);
+    labels(buf, chart, &f, theme, marker);
+}
+
+/// [`render`] with the legend along the block's bottom edge on roomy screens (compact panes have
+/// no bottom border to carry it).
+pub fn render_with_legend(
+    frame: &mut Frame,
+    area: Rect,
+    block: Block,
+    chart: &Chart,
+    (marker, theme): (MarkerStyle, Theme),
+    roomy: bool,
+) {
+    let block = if roomy {
+        block.title_bottom(legend(
+            chart,
+            theme,
+            usize::from(area.width.saturating_sub(2)),
+        ))
+    } else {
+        block
+    };
+    render(frame, area, block, chart, marker, theme);
+}
+
+/// The legend of `chart`'s series in their inks (name and line sample with its glyph), as many as
+/// fit in `width` columns, then "+N more".
+pub fn legend(chart: &Chart, theme: Theme, width: usize) -> Line<'static> {
+    let items: Vec<(String, Style)> = chart
+        .series
+        .iter()
+        .map(|s| {
+            let mut style = theme.ink(s.ink);
+            if s.focused {
+                style = style.add_modifier(Modifier::BOLD);
+            }
+            (format!(" {} {} ", sample(s.glyph), s.name), style)
+        })
+        .collect();
+    let mut spans = Vec::new();
+    let mut used = 0;
+    for (i, (text, style)) in items.iter().enumerate() {
+        let left = items.len() - i - 1;
+        let more = if left > 0 {
+            format!(" +{left} more ")
+        } else {
+            String::new()
+        };
+        let w = text.chars().count();
+        let fits_with_more = used + w + more.chars().count() <= width;
+        if !(fits_with_more || left == 0 && used + w <= width) {
+            let rest = items.len() - i;
+            spans.push(Span::styled(
+                format!(" +{rest} more "),
+                theme.style(Role::Normal),
+            ));
+            break;
+        }
+        used += w;
+        spans.push(Span::styled(text.clone(), *style));
+    }
+    Line::from(spans)
+}
+
+/// The display value of every x tick label's centre as the buffer shows it, read back from the
+/// buffer row under the plot: (value, column). For tests that check labels against data.
+#[cfg(test)]
+pub fn read_x_labels(buf: &Buffer, f: &ChartFrame) -> Vec<(f64, u16)> {
+    read_numbers(
+        (f.plot.x.saturating_sub(f.y_labels + 1)..f.plot.right() + 6)
+            .map(|x| (x, f.plot.bottom() + 1)),
+        buf,
+    )
+    .into_iter()
+    .map(|(v, first, last)| (v, (first + last) / 2))
+    .collect()
+}
+
+/// Numbers in a run of cells: (value, first cell, last cell).
+#[cfg(test)]
+fn read_numbers(cells: impl Iterator<Item = (u16, u16)>, buf: &Buffer) -> Vec<(f64, u16, u16)> {
+    let mut out = Vec::new();
+    let mut text = String::new();
+    let mut first = 0;
+    let mut last = 0;
+    let area = buf.area;
+    let mut flush = |text: &mut String, first: u16, last: u16| {
+        if let Ok(v) = text.parse::<f64>() {
+            out.push((v, first, last));
+        }
+        text.clear();
+    };
+    for (x, y) in cells {
+        if x >= area.right() || y >= area.bottom() {
+            break;
+        }
+        let s = buf[(x, y)].symbol();
+        if s.chars()
+            .all(|c| c.is_ascii_digit() || c == '.' || c == '-' || c == 'e' || c == '+')
+            && s != " "
+        {
+            if text.is_empty() {
+                first = x;
+            }
+            text.push_str(s);
+            last = x;
+        } else {
+            flush(&mut text, first, last);
+        }
+    }
+    flush(&mut text, first, last);
+    out
+}
+
+/// The y tick labels as the buffer shows them: (value, row).
+#[cfg(test)]
+pub fn read_y_labels(buf: &Buffer, f: &ChartFrame) -> Vec<(f64, u16)> {
+    (f.plot.y..f.plot.bottom())
+        .filter_map(|y| {
+            let x0 = f.plot.x - 1 - f.y_labels;
+            read_numbers((x0..f.plot.x - 1).map(|x| (x, y)), buf)
+                .first()
+                .map(|&(v, _, _)| (v, y))
+        })
+        .collect()
+}
+
+/// Where the labels put display value `v` on an axis: linear interpolation between the two
+/// labelled cells around it (labels as read from the buffer, value → cell).
+#[cfg(test)]
+pub fn cell_by_labels(labels: &[(f64, u16)], v: f64) -> f64 {
+    let pair = labels
+        .windows(2)
+        .find(|w| (w[0].0 <= v && v <= w[1].0) || (w[1].0 <= v && v <= w[0].0))
+        .unwrap_or_else(|| panic!("{v} is not between the labels {labels:?}"));
+    let (a, b) = (pair[0], pair[1]);
+    f64::from(a.1) + (v - a.0) / (b.0 - a.0) * (f64::from(b.1) - f64::from(a.1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ratatui::Terminal;
+    use ratatui::backend::TestBackend;
+    use ratatui::widgets::Borders;
+
+    use crate::chart::{Axis, Mark, Rule, Series, Tick};
+
+    fn axis(title: &str, range: [f64; 2], ticks: &[f64]) -> Axis {
+        Axis {
+            title: title.into(),
+            range,
+            log: false,
+            ticks: ticks
+                .iter()
+                .map(|&at| Tick {
+                    at,
+                    label: format!("{at}"),
+                })
+                .collect(),
+        }
+    }
+
+    fn chart() -> Chart {
+        Chart {
+            title: "test".into(),
+            x: axis("x [µm]", [0.0, 10.0], &[0.0, 2.0, 4.0, 6.0, 8.0, 10.0]),
+            y: axis("F [N]", [0.0, 400.0], &[0.0, 100.0, 200.0, 300.0, 400.0]),
+            series: vec![Series {
+                name: "line".into(),
+                ink: Ink::Foreground,
+                glyph: '*',
+                runs: vec![vec![(0.0, 0.0), (7.575, 326.4), (10.0, 0.0)]],
+                focused: true,
+                peak: Some((7.575, 326.4)),
+                steps: false,
+            }],
+            marks: vec![Mark {
+                at: (2.0, 100.0),
+                ink: Ink::Warning,
+                glyph: '█',
+                label: Some("here".into()),
+            }],
+            rules: vec![Rule {
+                at: 5.0,
+                horizontal: false,
+                ink: Ink::Error,
+                label: "v_p".into(),
+            }],
+            notes: Vec::new(),
+            readout: None,
+        }
+    }
+
+    fn draw(chart: &Chart, w: u16, h: u16, marker: MarkerStyle) -> (Buffer, ChartFrame) {
+        let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+        let area = Rect::new(0, 0, w, h);
+        terminal
+            .draw(|frame| {
+                render(
+                    frame,
+                    area,
+                    Block::default().borders(Borders::ALL),
+                    chart,
+                    marker,
+                    Theme { color: false },
+                )
+            })
+            .unwrap();
+        let inner = Rect::new(1, 1, w - 2, h - 2);
+        (terminal.backend().buffer().clone(), frame_of(inner, chart))
+    }
+
+    /// The peak at (7.575 µm, 326.4 N) lies where the labels around it say, within a cell, and
+    /// its glyph is drawn there; titles are outside the plot.
+    #[test]
+    fn labels_sit_on_their_values() {
+        for (w, h) in [(40, 14), (61, 20), (100, 30)] {
+            for marker in [MarkerStyle::Braille, MarkerStyle::Dot] {
+                let c = chart();
+                let (buf, f) = draw(&c, w, h, marker);
+                let xs = read_x_labels(&buf, &f);
+                let ys = read_y_labels(&buf, &f);
+                assert!(xs.len() >= 3 && ys.len() >= 3, "{xs:?} {ys:?}");
+                let (col, row) = cell_of(&c, f.plot, marker, (7.575, 326.4)).unwrap();
+                assert_eq!(buf[(col, row)].symbol(), "*");
+                assert!((cell_by_labels(&xs, 7.575) - f64::from(col)).abs() <= 1.0);
+                assert!((cell_by_labels(&ys, 326.4) - f64::from(row)).abs() <= 1.0);
+                // Every label on its tick's column: "8" centred on the cell of 8.
+                for (v, x) in &xs {
+                    let (tick, _) = cell_of(&c, f.plot, marker, (*v, 0.0)).unwrap();
+                    assert_eq!(*x, tick, "{v}");
+                }
+                let title_row: String = (1..w - 1).map(|x| buf[(x, 1)].symbol()).collect();
+                assert!(title_row.starts_with("F [N]"), "{title_row}");
+                assert!(f.plot.y > 1);
+            }
+        }
+    }
+
+    #[test]
+    fn rules_and_marks_are_labelled_and_the_legend_says_what_is_left_out() {
+        let c = chart();
+        let (buf, f) = draw(&c, 61, 20, MarkerStyle::Braille);
+        let top: String = (f.plot.x..f.plot.right())
+            .map(|x| buf[(x, f.plot.y)].symbol())
+            .collect();
+        assert!(top.contains("v_p"), "{top}");
+        let (col, row) = cell_of(&c, f.plot, MarkerStyle::Braille, (2.0, 100.0)).unwrap();
+        assert_eq!(buf[(col, row)].symbol(), "█");
+        let label: String = (col + 2..col + 6).map(|x| buf[(x, row)].symbol()).collect();
+        assert_eq!(label, "here");
+        let mut many = chart();
+        for name in ["b", "c", "d"] {
+            let mut s = many.series[0].clone();
+            s.name = name.into();
+            many.series.push(s);
+        }
+        let theme = Theme { color: false };
+        assert_eq!(
+            legend(&many, theme, 80).to_string().matches("──").count(),
+            4
+        );
+        let short = legend(&many, theme, 30).to_string();
+        assert!(
+            short.contains("+3 more") || short.contains("+2 more"),
+            "{short}"
+        );
+    }
+
+    #[test]
+    fn values_off_the_axes_have_no_cell() {
+        let c = chart();
+        let plot = Rect::new(10, 0, 21, 5);
+        assert_eq!(
+            cell_of(&c, plot, MarkerStyle::Dot, (0.0, 0.0)),
+            Some((10, 4))
+        );
+        assert_eq!(
+            cell_of(&c, plot, MarkerStyle::Dot, (10.0, 400.0)),
+            Some((30, 0))
+        );
+        assert_eq!(cell_of(&c, plot, MarkerStyle::Dot, (10.5, 0.0)), None);
+        assert_eq!(cell_of(&c, plot, MarkerStyle::Dot, (f64::NAN, 0.0)), None);
+    }
+}

@@ -1,0 +1,46 @@
+//! The help overlay: every key binding and how numbers are typed.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Clear, Paragraph, Wrap};
+
+use crate::ui::app::App;
+use crate::ui::keymap::{BINDINGS, INPUT_HINTS};
+use crate::ui::style::Role;
+
+use super::common::{centered, pane};
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App) {
+    let theme = app.theme;
+    let key_width = BINDINGS
+        .iter()
+        .map(|(k, _)| k.chars().count())
+        .max()
+        .unwrap_or(0);
+    let mut lines: Vec<Line> = BINDINGS
+        .iter()
+        .map(|(keys, what)| {
+            Line::from(vec![
+                Span::styled(format!(" {keys:<key_width$}  "), theme.style(Role::Key)),
+                Span::styled(*what, theme.style(Role::Normal)),
+            ])
+        })
+        .collect();
+    lines.push(Line::default());
+    lines.extend(
+        INPUT_HINTS
+            .iter()
+            .map(|h| Line::from(Span::styled(format!(" {h}"), theme.style(Role::Muted)))),
+    );
+    let popup = centered(area, 96, lines.len() as u16 + 2);
+    frame.render_widget(Clear, popup);
+    frame.render_widget(
+        Paragraph::new(lines).wrap(Wrap { trim: false }).block(pane(
+            "Help · keys (Esc closes)",
+            theme,
+            true,
+        )),
+        popup,
+    );
+}

@@ -1,0 +1,203 @@
+//! The model checklist, which is also the legend of the charts: check box, line sample in the
+//! model's colour with its glyph, name, and whether the model fits the scene's regime. Laws are
+//! grouped by family under a heading; the list scrolls to keep the model under the cursor (or the
+//! focused one) in view.
+
+use ratatui::Frame;
+use ratatui::layout::{Position, Rect};
+use ratatui::style::Modifier;
+use ratatui::text::Line;
+use ratatui::widgets::Paragraph;
+
+use crate::chart::model_glyph;
+use crate::model::ForceModel;
+use crate::model::recommend::recommend;
+use crate::ui::app::{App, Cursor};
+use crate::ui::style::{Role, Theme, sample};
+
+use super::common::{model_name, pane, span};
+
+/// One row of the list: a family heading or a model.
+enum Row {
+    Heading(&'static str),
+    Model(ForceModel),
+}
+
+/// The laws of the table under their family headings, in table order.
+fn rows() -> Vec<Row> {
+    let mut rows = Vec::new();
+    let mut family = None;
+    for model in ForceModel::ALL {
+        let f = model.spec().family;
+        if family != Some(f) {
+            rows.push(Row::Heading(f.title()));
+            family = Some(f);
+        }
+        rows.push(Row::Model(model));
+    }
+    rows
+}
+
+/// The first row shown: the top of the list, unless row `anchor` would then fall below the
+/// `height` rows shown, in which case it is the last row shown.
+pub fn scroll_offset(anchor: usize, total: usize, height: usize) -> usize {
+    if total <= height || anchor < height {
+        return 0;
+    }
+    (anchor + 1 - height).min(total - height)
+}
+
+/// The first row shown in a list `height` rows high: the model under the cursor (else the focused
+/// one) stays in view.
+fn offset_for(app: &App, rows: &[Row], height: usize) -> usize {
+    let anchor_model = match app.cursor {
+        Cursor::Model(model) => model,
+        _ => app.focused,
+    };
+    let anchor = rows
+        .iter()
+        .position(|r| matches!(r, Row::Model(m) if *m == anchor_model))
+        .unwrap_or_default();
+    scroll_offset(anchor, rows.len(), height)
+}
+
+/// What a click at `position` of the checklist drawn in `area` hits: a model (not a family
+/// heading), and whether on its check box.
+pub fn model_at(
+    app: &App,
+    area: Rect,
+    roomy: bool,
+    position: Position,
+) -> Option<(ForceModel, bool)> {
+    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    if !inner.contains(position) {
+        return None;
+    }
+    let rows = rows();
+    let offset = offset_for(app, &rows, usize::from(inner.height));
+    match rows.get(offset + usize::from(position.y - inner.y))? {
+        // "▸[x]": the box is columns 1–3.
+        Row::Model(model) => Some((*model, (1..4).contains(&(position.x - inner.x)))),
+        Row::Heading(_) => None,
+    }
+}
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+    let theme = app.theme;
+    let fits: Vec<ForceModel> = app
+        .valid
+        .as_ref()
+        .map(|v| recommend(&v.scene, &v.quasistatic).fits)
+        .unwrap_or_default();
+    let rows = rows();
+    let title = if app.calibrate {
+        "Models · ✓ fits · calibrated to e"
+    } else {
+        "Models · ✓ fits the regime"
+    };
+    let block = pane(title, theme, roomy);
+    let inner = block.inner(area);
+    let height = usize::from(inner.height);
+    let offset = offset_for(app, &rows, height);
+    let block = if rows.len() > height {
+        let last = (offset + height).min(rows.len());
+        block.title_bottom(format!(" {}–{} of {} ", offset + 1, last, rows.len()))
+    } else {
+        block
+    };
+    frame.render_widget(block, area);
+    // "▸[x] ──── name …✓ ": 1 + 3 + 1 + 4 + 1 + name + 4, the last column left blank.
+    let name_width = (inner.width as usize).saturating_sub(14);
+    let lines: Vec<Line> = rows
+        .iter()
+        .skip(offset)
+        .take(height)
+        .map(|row| match row {
+            Row::Heading(title) => Line::from(span(format!("  {title}"), theme.style(Role::Label))),
+            Row::Model(model) => model_line(app, theme, *model, name_width, &fits),
+        })
+        .collect();
+    frame.render_widget(Paragraph::new(lines), inner);
+}
+
+fn model_line(
+    app: &App,
+    theme: Theme,
+    model: ForceModel,
+    name_width: usize,
+    fits: &[ForceModel],
+) -> Line<'static> {
+    let focus = if app.focused == model { "▸" } else { " " };
+    let check = if app.is_checked(model) { "[x]" } else { "[ ]" };
+    let name = model_name(model, name_width);
+    let mut name_style = theme.style(Role::Normal);
+    if app.focused == model {
+        name_style = name_style.add_modifier(Modifier::BOLD);
+    }
+    let busy = if app.solutions.is_pending(model) {
+        "…"
+    } else {
+        " "
+    };
+    let fit = if fits.contains(&model) { "✓" } else { " " };
+    let padded = format!("{name:<name_width$}");
+    let mut line = Line::from(vec![
+        span(focus, theme.style(Role::Key)),
+        span(check, theme.style(Role::Normal)),
+        span(" ", theme.style(Role::Normal)),
+        span(sample(model_glyph(model)), theme.model_style(model)),
+        span(" ", theme.style(Role::Normal)),
+        span(padded, name_style),
+        span(format!(" {busy}"), theme.style(Role::Warning)),
+        span(fit, theme.style(Role::Good)),
+    ]);
+    if app.cursor == Cursor::Model(model) {
+        line = line.patch_style(theme.style(Role::Cursor));
+    }
+    line
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_anchor_row_stays_in_view() {
+        let total = rows().len();
+        assert!(total > ForceModel::ALL.len(), "family headings are rows");
+        for height in 1..total + 2 {
+            for anchor in 0..total {
+                let offset = scroll_offset(anchor, total, height);
+                assert!(
+                    offset <= anchor && anchor < offset + height,
+                    "{anchor} {height}"
+                );
+                assert!(
+                    offset + height.min(total) <= total,
+                    "no blank rows below the list"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn every_law_is_listed_once_under_its_family() {
+        let rows = rows();
+        let models: Vec<ForceModel> = rows
+            .iter()
+            .filter_map(|r| match r {
+                Row::Model(m) => Some(*m),
+                Row::Heading(_) => None,
+            })
+            .collect();
+        assert_eq!(models, ForceModel::ALL.to_vec());
+        let headings = rows.iter().filter(|r| matches!(r, Row::Heading(_))).count();
+        let mut families: Vec<_> = ForceModel::ALL.iter().map(|m| m.spec().family).collect();
+        families.dedup();
+        assert_eq!(
+            headings,
+            families.len(),
+            "each family is one contiguous group"
+        );
+    }
+}

@@ -1,0 +1,51 @@
+//! The tab bar: the views with their keys, the shown one highlighted.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::Modifier;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
+
+use crate::ui::app::App;
+use crate::ui::style::Role;
+use crate::ui::tab::Tab;
+
+pub fn render(frame: &mut Frame, area: Rect, app: &App) {
+    let theme = app.theme;
+    let mut spans = Vec::new();
+    for tab in Tab::all() {
+        let shown = tab == app.tab;
+        let (key_style, title_style) = if shown {
+            let style = theme.style(Role::Title).add_modifier(Modifier::REVERSED);
+            (style, style)
+        } else {
+            (theme.style(Role::Key), theme.style(Role::Muted))
+        };
+        let [key, title, gap] = labels(tab);
+        spans.push(Span::styled(key, key_style));
+        spans.push(Span::styled(title, title_style));
+        spans.push(Span::raw(gap));
+    }
+    frame.render_widget(Paragraph::new(Line::from(spans)), area);
+}
+
+/// The key, title and gap of a tab's label on the bar.
+fn labels(tab: Tab) -> [String; 3] {
+    [
+        format!(" {}", tab.key()),
+        format!(" {} ", tab.title()),
+        " ".into(),
+    ]
+}
+
+/// The tab whose label covers `column` of the bar (for mouse clicks).
+pub fn tab_at(column: u16) -> Option<Tab> {
+    let mut start = 0;
+    Tab::all().find(|&tab| {
+        let width: usize = labels(tab).iter().map(|l| l.chars().count()).sum();
+        let end = start + width as u16;
+        let hit = (start..end).contains(&column);
+        start = end;
+        hit
+    })
+}
