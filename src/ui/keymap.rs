@@ -12,13 +12,24 @@ use super::app::{Confirm, Mode};
 use super::field::Nudge;
 use super::tab::Tab;
 
-/// The key bindings, as the help screen lists them: (keys, what they do); one line each at 80
+/// The key bindings, as the help screen lists them: (keys, what they do), the views and their
+/// digits first, the keys of every view, each view's own, then help and quit; one line each at 80
 /// columns, and all of them with the input hints within 24 rows.
-pub const BINDINGS: &[(&str, &str)] = &[
-    (
-        "1 2 3 4 5",
-        "views: explorer · work–precision · stability · sweep · e",
-    ),
+pub fn bindings() -> Vec<(String, String)> {
+    let digits: Vec<String> = Tab::all().map(|t| t.key().to_string()).collect();
+    let names: Vec<&str> = Tab::all().map(|t| t.view().short_title()).collect();
+    let views = (digits.join(" "), format!("views: {}", names.join(" · ")));
+    let own = Tab::all().filter_map(|t| Some((format!("in {}", t.key()), t.view().help()?)));
+    let fixed = |&(keys, what): &(&str, &str)| (keys.to_string(), what.to_string());
+    std::iter::once(views)
+        .chain(SHARED.iter().map(fixed))
+        .chain(own.map(|(keys, what)| (keys, what.to_string())))
+        .chain(CLOSING.iter().map(fixed))
+        .collect()
+}
+
+/// The keys every view shares, in the help.
+const SHARED: &[(&str, &str)] = &[
     ("↑ ↓ k j Tab S-Tab", "move between fields and models"),
     ("Home End g G", "first / last row"),
     ("PgUp PgDn", "previous / next section"),
@@ -53,11 +64,10 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "f < > , .",
         "this view's charts to <scene>-<view>.svg · data cursor",
     ),
-    (
-        "in 3",
-        "Enter types the step (auto: rk4 critical); ← → ½× 2×",
-    ),
-    ("in 4", "↑ ↓ rows; ← → change; Enter types or switches"),
+];
+
+/// Help and quit, last in the help.
+const CLOSING: &[(&str, &str)] = &[
     ("? Esc", "this help · close, cancel, clear the message"),
     (
         "q Ctrl-C",

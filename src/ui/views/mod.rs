@@ -1,16 +1,11 @@
 //! The views of the explorer, one folder each, and the one registry the rest iterates: the tab
 //! bar, the digit keys, the body drawn, the keys a view takes, its status hints, the studies it
-//! needs and the figure `f` writes all come from [`VIEWS`]. A new view is a folder implementing
-//! [`View`] plus one line in [`VIEWS`].
+//! needs, its lines in the help and the figure `f` writes all come from [`VIEWS`]. A new view is a
+//! folder implementing [`View`] plus one line in the `registry!` below.
 //!
-//! A view reads the app (`&App`) to draw and acts on it (`&mut App`) for its own keys; the app
-//! state never imports a view back.
-
-pub mod explorer;
-pub mod restitution;
-pub mod stability;
-pub mod sweep;
-pub mod work_precision;
+//! A view reads the app (`&App`) to draw and acts on it (`&mut App`) for its own keys. The app
+//! state holds the views' settings (their types live in the view folders, e.g. `sweep::settings`)
+//! and the shown [`Tab`], but never imports a view's drawing or keys.
 
 use ratatui::Frame;
 use ratatui::layout::Position;
@@ -37,6 +32,15 @@ pub trait View: Sync {
     fn id(&self) -> &'static str;
     /// The name on the tab bar.
     fn title(&self) -> &'static str;
+    /// The name in the help's list of views (all of them on one line at 80 columns).
+    fn short_title(&self) -> &'static str {
+        self.title()
+    }
+    /// The view's own keys in one line of the help, if it has keys of its own beyond the
+    /// explorer's.
+    fn help(&self) -> Option<&'static str> {
+        None
+    }
     /// Draws the view in the body of `screen`.
     fn render(&self, frame: &mut Frame, screen: &Screen, app: &App);
     /// The view's own key hints, after the shared ones (help, quit, views).
@@ -66,14 +70,24 @@ pub trait View: Sync {
     fn charts(&self, app: &App) -> Vec<Chart>;
 }
 
-/// Every view, in tab order: the first is where the explorer opens, the n-th opens with digit n.
-pub static VIEWS: &[&dyn View] = &[
-    &explorer::Explorer,
-    &work_precision::WorkPrecision,
-    &stability::Stability,
-    &sweep::Sweep,
-    &restitution::Restitution,
-];
+/// Declares each view's folder as a module and lists it in [`VIEWS`], from one line per view.
+macro_rules! registry {
+    ($($folder:ident::$view:ident),+ $(,)?) => {
+        $(pub mod $folder;)+
+
+        /// Every view, in tab order: the first is where the explorer opens, the n-th opens with
+        /// digit n.
+        pub static VIEWS: &[&dyn View] = &[$(&$folder::$view),+];
+    };
+}
+
+registry! {
+    explorer::Explorer,
+    work_precision::WorkPrecision,
+    stability::Stability,
+    sweep::Sweep,
+    restitution::Restitution,
+}
 
 // The digit keys 1–9 open the views.
 const _: () = assert!(!VIEWS.is_empty() && VIEWS.len() <= 9);

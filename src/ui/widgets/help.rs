@@ -6,24 +6,25 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph, Wrap};
 
 use crate::ui::app::App;
-use crate::ui::keymap::{BINDINGS, INPUT_HINTS};
+use crate::ui::keymap::{INPUT_HINTS, bindings};
 use crate::ui::style::Role;
 
 use super::common::{centered, pane};
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let theme = app.theme;
-    let key_width = BINDINGS
+    let bindings = bindings();
+    let key_width = bindings
         .iter()
         .map(|(k, _)| k.chars().count())
         .max()
         .unwrap_or(0);
-    let mut lines: Vec<Line> = BINDINGS
-        .iter()
+    let mut lines: Vec<Line> = bindings
+        .into_iter()
         .map(|(keys, what)| {
             Line::from(vec![
                 Span::styled(format!(" {keys:<key_width$}  "), theme.style(Role::Key)),
-                Span::styled(*what, theme.style(Role::Normal)),
+                Span::styled(what, theme.style(Role::Normal)),
             ])
         })
         .collect();

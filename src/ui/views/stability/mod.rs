@@ -29,6 +29,10 @@ impl View for Stability {
         "stability"
     }
 
+    fn help(&self) -> Option<&'static str> {
+        Some("Enter types the step (auto: rk4 critical); ← → ½× 2×")
+    }
+
     fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
         render::render(frame, screen.body, app, screen.roomy);
     }

@@ -30,6 +30,10 @@ impl View for Sweep {
         "sweep"
     }
 
+    fn help(&self) -> Option<&'static str> {
+        Some("↑ ↓ rows; ← → change; Enter types or switches")
+    }
+
     fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
         render::render(frame, screen, app);
     }
