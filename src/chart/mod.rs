@@ -174,7 +174,49 @@ pub struct Chart {
     /// Why something is missing ("proposed: step budget exhausted at t = …"), shown with the chart.
     pub notes: Vec<String>,
     /// The data cursor's reading (each curve's value where it stands), shown above the plot.
-    pub readout: Option<String>,
+    pub readout: Option<Readout>,
+}
+
+/// The data cursor's reading, in a long and a short form per curve, so that the renderer can fit
+/// it into its row without cutting a number.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Readout {
+    /// Where the cursor stands, e.g. `t = 59 µs`.
+    pub at: String,
+    /// Per curve: the long reading (`proposed F 291.7 N`) and the short one (the curve's glyph
+    /// and its values in the axis's unit, `* 291.7`).
+    pub curves: Vec<(String, String)>,
+}
+
+impl Readout {
+    /// The most explicit form that fits in `width` columns: every curve long; else every curve
+    /// short; else as many short readings as fit, then `+N` for the curves left out.
+    pub fn fit(&self, width: usize) -> String {
+        let join = |parts: Vec<&str>| {
+            std::iter::once(self.at.as_str())
+                .chain(parts)
+                .collect::<Vec<_>>()
+                .join(" · ")
+        };
+        let long = join(self.curves.iter().map(|c| c.0.as_str()).collect());
+        if long.chars().count() <= width {
+            return long;
+        }
+        let short = join(self.curves.iter().map(|c| c.1.as_str()).collect());
+        if short.chars().count() <= width {
+            return short;
+        }
+        for shown in (0..self.curves.len()).rev() {
+            let more = format!("+{}", self.curves.len() - shown);
+            let mut parts: Vec<&str> = self.curves[..shown].iter().map(|c| c.1.as_str()).collect();
+            parts.push(&more);
+            let text = join(parts);
+            if text.chars().count() <= width {
+                return text;
+            }
+        }
+        self.at.clone()
+    }
 }
 
 /// The paper's Fig. 5 models first (proposed, Hunt–Crossley, Lankarani–Nikravesh), then elastic
@@ -228,6 +270,31 @@ pub const REFERENCE_GLYPH: char = '=';
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_readout_shortens_whole_readings_and_never_cuts_one() {
+        let readout = Readout {
+            at: "t = 59 µs".into(),
+            curves: vec![
+                ("proposed F 171.8 N".into(), "*171.8".into()),
+                ("H–C F 181.2 N".into(), "x181.2".into()),
+                ("L–N F 201.6 N".into(), "#201.6".into()),
+            ],
+        };
+        let long = "t = 59 µs · proposed F 171.8 N · H–C F 181.2 N · L–N F 201.6 N";
+        assert_eq!(readout.fit(80), long);
+        assert_eq!(readout.fit(long.chars().count()), long);
+        let short = "t = 59 µs · *171.8 · x181.2 · #201.6";
+        assert_eq!(readout.fit(long.chars().count() - 1), short);
+        assert_eq!(readout.fit(short.chars().count()), short);
+        assert_eq!(
+            readout.fit(short.chars().count() - 1),
+            "t = 59 µs · *171.8 · x181.2 · +1"
+        );
+        assert_eq!(readout.fit(23), "t = 59 µs · *171.8 · +2");
+        assert_eq!(readout.fit(22), "t = 59 µs · +3");
+        assert_eq!(readout.fit(5), "t = 59 µs");
+    }
 
     #[test]
     fn glyphs_tell_every_model_and_method_apart() {

@@ -47,7 +47,7 @@ pub enum Action {
     ToggleModel,
     /// Moves the focus to the next / previous model without moving the cursor.
     FocusModel(Nudge),
-    /// Shows the next chart where only one fits.
+    /// Shows the next chart where not all fit.
     CycleChart,
     /// Switches between each law's own damping rule and damping calibrated to realise e.
     ToggleCalibration,

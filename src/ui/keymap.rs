@@ -51,7 +51,7 @@ const SHARED: &[(&str, &str)] = &[
     ),
     (
         "c / C",
-        "next chart (when only one fits) / calibrate to realise e",
+        "next chart (when not all fit) / calibrate to realise e",
     ),
     (
         "p",

@@ -750,3 +750,84 @@ fn a_click_on_a_chart_places_the_data_cursor_there() {
         "t = {t} µs, a column is {column} µs"
     );
 }
+
+/// The data cursor's readout never cuts a number: at every size each drawn model's reading on
+/// F(t) is whole, long (`proposed F 171.8 N`) or short (its glyph and the value in the axis's N),
+/// or counted in a closing `+N`, and each value is the model's force at that time.
+#[test]
+fn the_data_cursor_readout_fits_whole_readings_at_every_size() {
+    use hertz_tui::chart::model_glyph;
+    use hertz_tui::ui::units::{NEWTON, engineering, sig};
+    for (w, h) in [(80, 24), (120, 40), (160, 48), (200, 24)] {
+        let mut app = app();
+        update(&mut app, Action::Resize(w, h));
+        for _ in 0..10 {
+            press(&mut app, KeyCode::Char('>'));
+        }
+        let mut screen = text(render(&app, w, h).backend().buffer());
+        for _ in 0..3 {
+            if screen.contains("t = ") {
+                break;
+            }
+            press(&mut app, KeyCode::Char('c'));
+            screen = text(render(&app, w, h).backend().buffer());
+        }
+        let line = screen
+            .lines()
+            .find(|l| l.contains("t = "))
+            .unwrap_or_else(|| panic!("{w}×{h}: no F(t) readout:\n{screen}"));
+        let readout = line[line.find("t = ").unwrap()..]
+            .split('│')
+            .next()
+            .unwrap()
+            .trim_end();
+        let parts: Vec<&str> = readout.split(" · ").collect();
+        let t: f64 = parts[0][4..].split(' ').next().unwrap().parse().unwrap();
+        let t = t * 1e-6;
+        let drawn = app.checked_models();
+        assert!(drawn.len() >= 3, "{drawn:?}");
+        let more: usize = parts
+            .last()
+            .and_then(|p| p.strip_prefix('+'))
+            .map_or(0, |n| n.parse().unwrap());
+        let mut read = 0;
+        for &model in &drawn {
+            let f = app.solutions.solution(model).unwrap().trajectory.at(t).f;
+            let long = format!("F {}", engineering(f, NEWTON, 4));
+            let short = format!("{}{}", model_glyph(model), sig(f, 4));
+            if parts[1..]
+                .iter()
+                .any(|p| *p == short || (p.ends_with(&long) && p.contains(' ')))
+            {
+                read += 1;
+            }
+        }
+        assert_eq!(
+            read + more,
+            drawn.len(),
+            "{w}×{h}: every model read whole or counted: {readout}"
+        );
+        assert!(read >= 1, "{w}×{h}: {readout}");
+    }
+}
+
+/// Where a chart does not fit (one or two of three shown), the first chart's title names the key
+/// that shows it; where all three fit, no title says so.
+#[test]
+fn hidden_charts_are_announced_with_their_key() {
+    for (w, h, hidden) in [
+        (80, 24, true),
+        (120, 40, true),
+        (160, 48, false),
+        (200, 24, false),
+    ] {
+        let mut app = app();
+        update(&mut app, Action::Resize(w, h));
+        let screen = text(render(&app, w, h).backend().buffer());
+        assert_eq!(
+            screen.matches("c: next chart").count(),
+            usize::from(hidden),
+            "{w}×{h}:\n{screen}"
+        );
+    }
+}

@@ -381,7 +381,9 @@ fn axes(
     if let Some(readout) = &chart.readout {
         // The cursor's reading takes the row above the plot after the y title.
         let x = inner.x + width(&chart.y.title) + 2;
-        put(buf, x, inner.y, readout, theme.style(Role::Normal), inner);
+        let room = inner.right().saturating_sub(x);
+        let text = readout.fit(usize::from(room));
+        put(buf, x, inner.y, &text, theme.style(Role::Normal), inner);
         if f.x_title_below {
             let x = inner.right().saturating_sub(x_title);
             put(buf, x, axis_y + 2, &chart.x.title, title, inner);

@@ -7,7 +7,7 @@ use ratatui::layout::{Position, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Wrap};
 
-use crate::chart::{Chart, Ink, Mark, Rule, model_glyph};
+use crate::chart::{Chart, Ink, Mark, Readout, Rule, model_glyph};
 use crate::model::ForceModel;
 use crate::model::impact::Sample;
 use crate::ui::app::{App, ChartKind};
@@ -104,10 +104,8 @@ fn cursor(
     } else {
         "x"
     };
-    let mut parts = vec![format!(
-        "{x_name} = {}",
-        units::engineering(x_si, x_unit, 4)
-    )];
+    let at = format!("{x_name} = {}", units::engineering(x_si, x_unit, 4));
+    let mut curves = Vec::new();
     for &m in models {
         let (Some(solution), Some(samples)) = (app.solutions.solution(m), app.solutions.samples(m))
         else {
@@ -130,11 +128,14 @@ fn cursor(
             .iter()
             .map(|r| units::engineering(value(r), y_unit, 4))
             .collect();
+        let bare: Vec<String> = readings
+            .iter()
+            .map(|r| units::sig(value(r) / y_scale, 4))
+            .collect();
         if !values.is_empty() {
-            parts.push(format!(
-                "{} {y_name} {}",
-                model_name(m, 9),
-                values.join(" / ")
+            curves.push((
+                format!("{} {y_name} {}", model_name(m, 9), values.join(" / ")),
+                format!("{}{}", model_glyph(m), bare.join("/")),
             ));
         }
     }
@@ -144,25 +145,25 @@ fn cursor(
         ink: Ink::Foreground,
         label: String::new(),
     });
-    chart.readout = Some(parts.join(" · "));
+    chart.readout = Some(Readout { at, curves });
 }
 
-/// Draws the chart of `kind`; `single` where it is the only one shown, so the title says which
-/// key shows the others.
+/// Draws the chart of `kind`; `hint` where some charts do not fit, so the title says which key
+/// shows them.
 pub fn render(
     frame: &mut Frame,
     area: Rect,
     app: &App,
     kind: ChartKind,
     roomy: bool,
-    single: bool,
+    hint: bool,
 ) {
     let theme = app.theme;
     let mut title = kind.title().to_string();
     if app.scene_error.is_some() {
         title.push_str(" · last valid scene");
     }
-    if single {
+    if hint {
         title.push_str(" · c: next chart");
     }
     let block = pane(title, theme, roomy);

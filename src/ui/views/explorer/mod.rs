@@ -40,9 +40,10 @@ impl View for Explorer {
         regime::render(frame, areas.info, app, areas.roomy);
         form::render(frame, areas.form, app, areas.roomy);
         models::render(frame, areas.models, app, areas.roomy);
-        let single = areas.charts.len() == 1;
-        for (kind, rect) in &areas.charts {
-            chart::render(frame, *rect, app, *kind, areas.roomy, single);
+        // The first chart's title says which key shows the ones that do not fit.
+        let hidden = areas.charts.len() < ChartKind::ALL.len();
+        for (i, (kind, rect)) in areas.charts.iter().enumerate() {
+            chart::render(frame, *rect, app, *kind, areas.roomy, hidden && i == 0);
         }
         results::render(frame, areas.results, app, areas.roomy);
     }
