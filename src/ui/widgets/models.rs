@@ -38,6 +38,11 @@ fn rows() -> Vec<Row> {
     rows
 }
 
+/// Rows of the whole list (laws and family headings): more height than this is not used.
+pub fn row_count() -> u16 {
+    rows().len() as u16
+}
+
 /// The first row shown: the top of the list, unless row `anchor` would then fall below the
 /// `height` rows shown, in which case it is the last row shown.
 pub fn scroll_offset(anchor: usize, total: usize, height: usize) -> usize {

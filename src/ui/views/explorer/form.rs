@@ -69,6 +69,16 @@ fn rows(app: &App, section: Section, width: usize, describe: bool) -> Vec<Row> {
     rows
 }
 
+/// The height of the form's section panes of `width` columns with no field described: what the
+/// layout leaves the form before giving the rest to the models pane.
+pub fn resting_height(app: &App, width: u16) -> u16 {
+    let inner_width = width.saturating_sub(2) as usize;
+    Section::ALL
+        .iter()
+        .map(|&s| rows(app, s, inner_width, false).len() as u16 + 2)
+        .sum()
+}
+
 /// Where the rows go: one bordered pane per section when they fit, else one scrolling list with
 /// a header line per section, scrolled to keep the cursor in view.
 enum Placement {

@@ -4,7 +4,11 @@
 use ratatui::layout::{Constraint, Layout, Rect};
 
 use crate::ui::chart_kind::ChartKind;
+use crate::ui::widgets::models;
 use crate::ui::layout::{Screen, left_width, screen};
+
+/// The least height of the models pane on a roomy screen.
+pub const MODELS_HEIGHT: u16 = 7;
 
 /// The rectangles of the explorer's panes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -21,8 +25,10 @@ pub struct Areas {
     pub roomy: bool,
 }
 
-/// The panes of a screen of `area`, with `first` the chart shown where only one fits.
-pub fn layout(area: Rect, first: ChartKind) -> Option<Areas> {
+/// The panes of a screen of `area`, with `first` the chart shown where only one fits;
+/// `form_height(width)` is the height the form's panes need at rest at that width: on roomy
+/// screens the models pane takes what the form leaves (at least [`MODELS_HEIGHT`] rows).
+pub fn layout(area: Rect, first: ChartKind, form_height: impl Fn(u16) -> u16) -> Option<Areas> {
     let Screen {
         tabs,
         body,
@@ -34,7 +40,15 @@ pub fn layout(area: Rect, first: ChartKind) -> Option<Areas> {
         Layout::vertical([Constraint::Length(info_height), Constraint::Fill(1)]).areas(body);
     let [left, right] =
         Layout::horizontal([Constraint::Length(left_width(area)), Constraint::Fill(1)]).areas(body);
-    let models_height = if roomy { 7 } else { 8 };
+    let models_height = if roomy {
+        // Two spare rows for a field's description or error under the cursor.
+        let spare = left
+            .height
+            .saturating_sub(form_height(left.width).saturating_add(2));
+        spare.min(models::row_count() + 2).max(MODELS_HEIGHT)
+    } else {
+        8
+    };
     let [form, models] =
         Layout::vertical([Constraint::Fill(1), Constraint::Length(models_height)]).areas(left);
     let results_height = if roomy { 10 } else { 8 };
@@ -89,17 +103,29 @@ mod tests {
     use crate::ui::layout::tests::inside;
 
     #[test]
+    fn the_models_pane_takes_what_the_form_leaves_up_to_its_list() {
+        let area = Rect::new(0, 0, 160, 48);
+        let tall_form = layout(area, ChartKind::ForceTime, |_| 40).unwrap();
+        assert_eq!(tall_form.models.height, MODELS_HEIGHT);
+        let short_form = layout(area, ChartKind::ForceTime, |_| 26).unwrap();
+        assert_eq!(short_form.form.height, 26 + 2, "the form's rows and two spare");
+        assert_eq!(short_form.models.height, 40 - 28);
+        let tiny_form = layout(area, ChartKind::ForceTime, |_| 3).unwrap();
+        assert_eq!(tiny_form.models.height, models::row_count() + 2);
+    }
+
+    #[test]
     fn too_small_has_no_layout() {
-        assert!(layout(Rect::new(0, 0, 79, 24), ChartKind::ForceTime).is_none());
-        assert!(layout(Rect::new(0, 0, 80, 23), ChartKind::ForceTime).is_none());
-        assert!(layout(Rect::new(0, 0, 80, 24), ChartKind::ForceTime).is_some());
+        assert!(layout(Rect::new(0, 0, 79, 24), ChartKind::ForceTime, |_| 30).is_none());
+        assert!(layout(Rect::new(0, 0, 80, 23), ChartKind::ForceTime, |_| 30).is_none());
+        assert!(layout(Rect::new(0, 0, 80, 24), ChartKind::ForceTime, |_| 30).is_some());
     }
 
     #[test]
     fn panes_fit_and_do_not_overlap() {
         for (w, h) in [(80, 24), (100, 30), (120, 40), (160, 48), (250, 80)] {
             let area = Rect::new(0, 0, w, h);
-            let a = layout(area, ChartKind::ForceDisplacement).unwrap();
+            let a = layout(area, ChartKind::ForceDisplacement, |_| 30).unwrap();
             let mut rects = vec![a.tabs, a.info, a.form, a.models, a.results, a.status];
             rects.extend(a.charts.iter().map(|(_, r)| *r));
             for (i, r) in rects.iter().enumerate() {
@@ -114,11 +140,11 @@ mod tests {
 
     #[test]
     fn one_chart_on_small_screens_all_three_on_big_ones() {
-        let small = layout(Rect::new(0, 0, 80, 24), ChartKind::ForceTime).unwrap();
+        let small = layout(Rect::new(0, 0, 80, 24), ChartKind::ForceTime, |_| 30).unwrap();
         assert_eq!(small.charts.len(), 1);
         assert_eq!(small.charts[0].0, ChartKind::ForceTime, "the chosen chart");
         assert!(!small.roomy);
-        let big = layout(Rect::new(0, 0, 160, 48), ChartKind::ForceTime).unwrap();
+        let big = layout(Rect::new(0, 0, 160, 48), ChartKind::ForceTime, |_| 30).unwrap();
         let kinds: Vec<_> = big.charts.iter().map(|(k, _)| *k).collect();
         assert_eq!(
             kinds,

@@ -34,7 +34,7 @@ impl View for Explorer {
     }
 
     fn render(&self, frame: &mut Frame, _screen: &Screen, app: &App) {
-        let Some(areas) = layout::layout(frame.area(), app.chart) else {
+        let Some(areas) = layout::layout(frame.area(), app.chart, |w| form::resting_height(app, w)) else {
             return;
         };
         regime::render(frame, areas.info, app, areas.roomy);

@@ -25,7 +25,7 @@ enum Target {
 
 fn target(app: &App, position: Position) -> Option<Target> {
     let (width, height) = app.screen;
-    let areas = layout::layout(Rect::new(0, 0, width, height), app.chart)?;
+    let areas = layout::layout(Rect::new(0, 0, width, height), app.chart, |w| form::resting_height(app, w))?;
     if let Some(field) = form::field_at(app, areas.form, areas.roomy, position) {
         return Some(Target::Field(field));
     }

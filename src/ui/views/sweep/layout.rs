@@ -3,6 +3,7 @@
 
 use ratatui::layout::{Constraint, Layout, Rect};
 
+use crate::ui::widgets::models;
 use crate::ui::layout::{
     MIN_HEIGHT, MIN_WIDTH, Screen, Y_AXIS_ALLOWANCE, is_roomy, left_width, screen,
 };
@@ -17,6 +18,9 @@ pub struct SweepAreas {
     pub chart: Rect,
 }
 
+/// Rows under the models for the sweep's notes.
+const NOTES_ROWS: u16 = 6;
+
 /// Rows of the sweep form.
 pub const SWEEP_FORM_ROWS: u16 = 6;
 
@@ -27,10 +31,17 @@ pub fn sweep_areas(screen: &Screen) -> SweepAreas {
     ])
     .areas(screen.body);
     let frame = if screen.roomy { 2 } else { 1 };
-    // The form, a line describing the row under the cursor, then the model checklist.
+    // The form, a line describing the row under the cursor, the model checklist as long as the
+    // notes (v_y and v_p, the failures) allow, the notes.
+    let form_rows = SWEEP_FORM_ROWS + 1 + frame;
+    let models_rows = left
+        .height
+        .saturating_sub(form_rows + NOTES_ROWS)
+        .min(models::row_count() + frame)
+        .max(5 + frame);
     let [form, models, notes] = Layout::vertical([
-        Constraint::Length(SWEEP_FORM_ROWS + 1 + frame),
-        Constraint::Length(5 + frame),
+        Constraint::Length(form_rows),
+        Constraint::Length(models_rows),
         Constraint::Fill(1),
     ])
     .areas(left);
