@@ -2,4 +2,5 @@
 
 mod axes;
 mod e2e_tmux;
+mod models_pane;
 mod render;
