@@ -4,3 +4,4 @@ mod axes;
 mod e2e_tmux;
 mod models_pane;
 mod render;
+mod results_damping;
