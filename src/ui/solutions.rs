@@ -6,7 +6,7 @@
 use std::sync::Arc;
 use std::time::Duration;
 
-use crate::model::force::LAW_COUNT;
+use crate::model::force::{Damping, LAW_COUNT};
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
 
@@ -32,6 +32,9 @@ pub struct Outcome {
     pub generation: u64,
     pub model: ForceModel,
     pub result: SolveResult,
+    /// The damping parameter of the law solved (calibrated when the job asked), `None` for a law
+    /// without one or a law that could not be built.
+    pub damping: Option<Damping>,
     pub elapsed: Duration,
 }
 
@@ -45,6 +48,8 @@ struct Slot {
     pending: bool,
     /// The latest finished result (of the latest request once it is no longer pending).
     shown: Option<SolveResult>,
+    /// The damping its law used.
+    damping: Option<Damping>,
     /// Its curves sampled once, for every chart and frame until the next solve.
     sampled: Option<Arc<Series>>,
 }
@@ -111,7 +116,13 @@ impl Solutions {
             Err(_) => None,
         };
         slot.shown = Some(outcome.result);
+        slot.damping = outcome.damping;
         true
+    }
+
+    /// The damping parameter of the law of `model`'s latest finished result.
+    pub fn damping(&self, model: ForceModel) -> Option<Damping> {
+        self.slots[index(model)].damping
     }
 
     /// The latest finished result of `model` (the previous one while a new solve runs).
@@ -151,6 +162,7 @@ mod tests {
             generation: job.generation,
             model: job.model,
             result: Err(message.into()),
+            damping: None,
             elapsed: Duration::ZERO,
         }
     }

@@ -9,6 +9,7 @@ use std::thread;
 use std::time::Instant;
 
 use crate::model::calibrate::scene_or_calibrated;
+use crate::model::force::AnyLaw;
 use crate::model::impact::{ImpactError, ImpactSolution, solve_law};
 
 use super::solutions::{Job, Outcome};
@@ -16,23 +17,32 @@ use super::solutions::{Job, Outcome};
 /// Solves one job on the calling thread.
 pub fn solve(job: &Job) -> Outcome {
     let start = Instant::now();
-    let result = solve_job(job);
+    let (result, damping) = match law_of(job) {
+        Ok(law) => (solve_job(job, &law), law.damping()),
+        Err(message) => (Err(message), None),
+    };
     Outcome {
         generation: job.generation,
         model: job.model,
         result,
+        damping,
         elapsed: start.elapsed(),
     }
 }
 
-/// The job's law (calibrated when asked; a law that cannot be, says why) solved.
-fn solve_job(job: &Job) -> Result<Arc<ImpactSolution>, String> {
+/// The job's law (calibrated when asked; a law that cannot be, says why).
+fn law_of(job: &Job) -> Result<AnyLaw, String> {
     let (law, calibration) =
         scene_or_calibrated(job.model, &job.params, job.calibrate).map_err(|e| e.to_string())?;
-    if let Err(why) = calibration {
-        return Err(format!("not calibrated: {why}"));
+    match calibration {
+        Ok(_) => Ok(law),
+        Err(why) => Err(format!("not calibrated: {why}")),
     }
-    solve_law(&law, &job.options)
+}
+
+/// The job's law solved.
+fn solve_job(job: &Job, law: &AnyLaw) -> Result<Arc<ImpactSolution>, String> {
+    solve_law(law, &job.options)
         .map(Arc::new)
         .map_err(|e: ImpactError| e.to_string())
 }

@@ -2,4 +2,6 @@
 
 mod axes;
 mod e2e_tmux;
+mod models_pane;
 mod render;
+mod results_damping;

@@ -102,7 +102,7 @@ pub fn render(app: &App, width: u16, height: u16) -> Terminal<TestBackend> {
     terminal
 }
 
-fn text(buffer: &Buffer) -> String {
+pub fn text(buffer: &Buffer) -> String {
     let width = buffer.area.width as usize;
     buffer
         .content
@@ -437,7 +437,7 @@ fn app_with_speed(v0: &str) -> App {
 }
 
 /// Half a unit in the last digit shown of `text` (`2.7e10` → 5e8, `150.7` → 0.05).
-fn half_last_digit(text: &str) -> f64 {
+pub fn half_last_digit(text: &str) -> f64 {
     let (mantissa, exponent) = text.split_once('e').unwrap_or((text, "0"));
     let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
     0.5 * 10f64.powi(exponent.parse::<i32>().unwrap() - decimals)
@@ -448,15 +448,17 @@ fn half_last_digit(text: &str) -> f64 {
 /// never cut (v₀ = 1e6 gave x_max `150687` µm for 1.507 m, F_max `2.71e1` for 2.71e10 N).
 #[test]
 fn results_cells_are_never_cut_numbers() {
-    type Get = fn(&hertz_tui::model::impact::ImpactSummary) -> f64;
-    let columns: [(&str, Get); 7] = [
-        ("x_max", |s| s.x_max * 1e6),
-        ("F_max", |s| s.f_max),
-        ("t_c", |s| s.t_contact * 1e6),
-        ("v_out", |s| s.v_out),
-        ("e_out", |s| s.e_out),
-        ("x_res", |s| s.x_residual * 1e6),
-        ("ΔE", |s| s.energy_dissipated * 1e3),
+    // A cell's value from the summary and the damping value of the row's law.
+    type Get = fn(&hertz_tui::model::impact::ImpactSummary, Option<f64>) -> Option<f64>;
+    let columns: [(&str, Get); 8] = [
+        ("x_max", |s, _| Some(s.x_max * 1e6)),
+        ("F_max", |s, _| Some(s.f_max)),
+        ("t_c", |s, _| Some(s.t_contact * 1e6)),
+        ("damping", |_, d| d),
+        ("v_out", |s, _| Some(s.v_out)),
+        ("e_out", |s, _| Some(s.e_out)),
+        ("x_res", |s, _| Some(s.x_residual * 1e6)),
+        ("ΔE", |s, _| Some(s.energy_dissipated * 1e3)),
     ];
     for v0 in ["1e6", "1e-12", "0.3"] {
         let app = app_with_speed(v0);
@@ -478,18 +480,25 @@ fn results_cells_are_never_cut_numbers() {
                 .unwrap_or_else(|| panic!("no results header at {width}×{height}"));
             let line = rows[header].concat();
             // Column starts: each header word, located in cells.
-            let mut starts: Vec<(usize, Get)> = Vec::new();
+            let mut starts: Vec<(usize, &str, Get)> = Vec::new();
+            // Right of the table's "model": the models pane beside it has a "viscous damping"
+            // heading.
+            let table = rows[header]
+                .windows(5)
+                .position(|w| w.concat() == "model")
+                .unwrap_or(0);
             for (name, get) in columns {
                 let n = name.chars().count();
-                if let Some(at) = rows[header]
+                if let Some(at) = rows[header][table..]
                     .windows(n)
                     .position(|w| w.concat() == name && !line.is_empty())
                 {
-                    starts.push((at, get));
+                    starts.push((at + table, name, get));
                 }
             }
+            starts.sort_by_key(|(at, ..)| *at);
             assert!(starts.len() >= 3, "{width}×{height}: {line}");
-            let mut ends: Vec<usize> = starts.iter().skip(1).map(|(at, _)| *at).collect();
+            let mut ends: Vec<usize> = starts.iter().skip(1).map(|(at, ..)| *at).collect();
             // The last number column ends where "method" begins (or at the pane's edge).
             let next = rows[header]
                 .windows(6)
@@ -497,16 +506,26 @@ fn results_cells_are_never_cut_numbers() {
                 .unwrap_or(rows[header].len());
             ends.push(next);
             let mut checked = 0;
+            let mut dampings = 0;
             // One row per checked model, in order, under the header.
             for (i, model) in app.checked_models().into_iter().enumerate() {
                 let Some(solution) = app.solutions.solution(model) else {
                     continue;
                 };
                 let row = &rows[header + 1 + i];
-                for ((from, get), to) in starts.iter().zip(&ends) {
+                let damping = app.solutions.damping(model).map(|d| d.value);
+                for ((from, name, get), to) in starts.iter().zip(&ends) {
                     let cell = row_text(row, *from, *to);
                     let cell = cell.trim().trim_end_matches('│').trim();
-                    let value = get(&solution.summary);
+                    let Some(value) = get(&solution.summary, damping) else {
+                        assert_eq!(cell, "-", "{name} of {model:?}: a law without one");
+                        continue;
+                    };
+                    // `χ 0.6`, `b 1.872e5 N·s/m^n`: the number is the second word.
+                    let cell = match *name {
+                        "damping" => cell.split_whitespace().nth(1).unwrap_or(cell),
+                        _ => cell,
+                    };
                     if cell == "…" || cell.starts_with('✗') {
                         continue;
                     }
@@ -521,8 +540,13 @@ fn results_cells_are_never_cut_numbers() {
                         row.concat()
                     );
                     checked += 1;
+                    dampings += usize::from(*name == "damping");
                 }
             }
+            assert!(
+                dampings > 0,
+                "v₀ {v0} at {width}×{height}: no damping cell read\n{line}"
+            );
             assert!(
                 checked > 0,
                 "v₀ {v0} at {width}×{height}: no cell checked\n{}",

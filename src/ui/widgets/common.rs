@@ -18,16 +18,37 @@ pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: 
         .title_style(theme.style(Role::Title))
 }
 
+/// How a pane names models: the paper's label, the kebab id, or the abbreviation, longest first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NameForm {
+    Label,
+    Id,
+    Short,
+}
+
+impl NameForm {
+    /// `model`'s name in this form.
+    pub fn of(self, model: ForceModel) -> &'static str {
+        match self {
+            NameForm::Label => model.label(),
+            NameForm::Id => model.name(),
+            NameForm::Short => model.short(),
+        }
+    }
+
+    /// The longest form in which every one of `models` fits `width` columns, so that a list
+    /// names all its rows alike; the abbreviation when no longer form fits them all.
+    pub fn fitting(models: &[ForceModel], width: usize) -> NameForm {
+        [NameForm::Label, NameForm::Id]
+            .into_iter()
+            .find(|form| models.iter().all(|&m| form.of(m).chars().count() <= width))
+            .unwrap_or(NameForm::Short)
+    }
+}
+
 /// A model's name in `width` columns at most: the paper's label, the kebab name, or an abbreviation.
 pub fn model_name(model: ForceModel, width: usize) -> &'static str {
-    let label = model.label();
-    if label.chars().count() <= width {
-        return label;
-    }
-    if model.name().len() <= width {
-        return model.name();
-    }
-    model.short()
+    NameForm::fitting(&[model], width).of(model)
 }
 
 /// Word-wraps `text` to lines of at most `width` characters (long words are cut).
@@ -144,5 +165,26 @@ mod tests {
         );
         assert_eq!(model_name(ForceModel::HuntCrossley, 13), "hunt-crossley");
         assert_eq!(model_name(ForceModel::HuntCrossley, 8), "H–C");
+    }
+
+    #[test]
+    fn a_list_takes_the_longest_form_that_fits_all_its_names() {
+        let all = &ForceModel::ALL;
+        let longest = |form: NameForm| all.iter().map(|&m| form.of(m).chars().count()).max();
+        let (label, id) = (
+            longest(NameForm::Label).unwrap(),
+            longest(NameForm::Id).unwrap(),
+        );
+        assert_eq!(NameForm::fitting(all, label), NameForm::Label);
+        assert_eq!(NameForm::fitting(all, label - 1), NameForm::Id);
+        assert_eq!(NameForm::fitting(all, id), NameForm::Id);
+        assert_eq!(NameForm::fitting(all, id - 1), NameForm::Short);
+        // One long label is enough to rename the whole list.
+        let pair = [ForceModel::Quasistatic, ForceModel::LankaraniNikravesh];
+        assert_eq!(NameForm::fitting(&pair, 21), NameForm::Id);
+        assert_eq!(
+            model_name(ForceModel::Quasistatic, 21),
+            "Hertz, elastic (eq 1)"
+        );
     }
 }

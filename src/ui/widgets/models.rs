@@ -15,7 +15,7 @@ use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
 use crate::ui::style::{Role, Theme, sample};
 
-use super::common::{model_name, pane, span};
+use super::common::{NameForm, pane, span};
 
 /// One row of the list: a family heading or a model.
 enum Row {
@@ -113,13 +113,15 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     frame.render_widget(block, area);
     // "▸[x] ──── name …✓ ": 1 + 3 + 1 + 4 + 1 + name + 4, the last column left blank.
     let name_width = (inner.width as usize).saturating_sub(14);
+    // Every row named alike (all labels, all ids or all abbreviations), whatever is scrolled in.
+    let names = NameForm::fitting(&ForceModel::ALL, name_width);
     let lines: Vec<Line> = rows
         .iter()
         .skip(offset)
         .take(height)
         .map(|row| match row {
             Row::Heading(title) => Line::from(span(format!("  {title}"), theme.style(Role::Label))),
-            Row::Model(model) => model_line(app, theme, *model, name_width, &fits),
+            Row::Model(model) => model_line(app, theme, *model, (names, name_width), &fits),
         })
         .collect();
     frame.render_widget(Paragraph::new(lines), inner);
@@ -129,12 +131,12 @@ fn model_line(
     app: &App,
     theme: Theme,
     model: ForceModel,
-    name_width: usize,
+    (names, name_width): (NameForm, usize),
     fits: &[ForceModel],
 ) -> Line<'static> {
     let focus = if app.focused == model { "▸" } else { " " };
     let check = if app.is_checked(model) { "[x]" } else { "[ ]" };
-    let name = model_name(model, name_width);
+    let name = names.of(model);
     let mut name_style = theme.style(Role::Normal);
     if app.focused == model {
         name_style = name_style.add_modifier(Modifier::BOLD);

@@ -6,7 +6,9 @@ use ratatui::style::Modifier;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Cell, Paragraph, Row, Table};
 
+use crate::format::{Zeros, scientific};
 use crate::model::ForceModel;
+use crate::model::force::Damping;
 use crate::model::impact::ImpactSummary;
 use crate::model::quasistatic::ContactGeometry;
 use crate::ui::app::App;
@@ -14,25 +16,33 @@ use crate::ui::style::{Role, Theme};
 use crate::ui::units::{self, sig};
 use crate::ui::widgets::common::{flow, model_name, pane, span};
 
-/// A column: header, unit, width, and the value of a summary in that unit.
+/// A column: header, unit, width, and the value of a solved row in that unit.
 struct Column {
     header: &'static str,
     unit: &'static str,
     /// How the compact title names the unit of this column ("x µm"), empty for none.
     note: &'static str,
     width: u16,
-    value: fn(&ImpactSummary) -> Value,
+    value: fn(&Solved) -> Value,
 }
 
-/// A cell before it is fitted to its column: a number with its significant digits, or text.
+/// What a model's row shows: its impact's summary and the damping its law used.
+struct Solved<'a> {
+    summary: &'a ImpactSummary,
+    damping: Option<Damping>,
+}
+
+/// A cell before it is fitted to its column: a number with its significant digits, a damping
+/// parameter, or text.
 enum Value {
     Number(f64, usize),
+    Damping(Option<Damping>),
     Text(String),
 }
 
 impl Column {
     fn is_number(&self) -> bool {
-        !matches!(self.header, "method" | "steps")
+        !matches!(self.header, "method" | "steps" | "damping")
     }
 }
 
@@ -41,77 +51,126 @@ impl Value {
     fn text(&self, width: usize) -> String {
         match self {
             Value::Number(value, digits) => units::fit(*value, *digits, width),
+            Value::Damping(damping) => damping_text(*damping, width),
             Value::Text(text) => text.clone(),
         }
     }
 }
 
+/// A damping parameter in `width` columns, its number never cut: `γ 3.2e3 N·s/m^((n+1)/2)` with
+/// its unit where that fits, else `γ 3.2e3`; `-` for a law without one.
+fn damping_text(damping: Option<Damping>, width: usize) -> String {
+    let Some(Damping { param, value }) = damping else {
+        return "-".into();
+    };
+    let symbol = param.symbol.chars().count() + 1;
+    let unit = match param.unit {
+        "1" => String::new(),
+        unit => format!(" {unit}"),
+    };
+    // With the unit while its number keeps the digits it has without; else without.
+    let full = damping_number(value, width.saturating_sub(symbol));
+    let with_unit = damping_number(value, width.saturating_sub(symbol + unit.chars().count()));
+    if unit.is_empty() || with_unit != full || with_unit == "…" {
+        format!("{} {full}", param.symbol)
+    } else {
+        format!("{} {with_unit}{unit}", param.symbol)
+    }
+}
+
+/// A damping value in `width` columns, never cut: four significant digits or fewer, plain within
+/// 1e-3 … 1e4 and scientific outside it, as `solve` prints it (`b = 1.872e5`).
+fn damping_number(value: f64, width: usize) -> String {
+    if value == 0.0 || (1e-3..1e4).contains(&value.abs()) {
+        return units::fit(value, 4, width);
+    }
+    (1..=4)
+        .rev()
+        .map(|digits| scientific(value, digits, Zeros::Trim))
+        .find(|text| text.chars().count() <= width)
+        .unwrap_or_else(|| units::fit(value, 4, width))
+}
+
+/// The widest a damping cell of `damping` needs: symbol, four digits and unit.
+fn damping_width(damping: Option<Damping>) -> u16 {
+    damping_text(damping, 64).chars().count() as u16
+}
+
 /// The widest a number column grows to with spare room: `-1.234e-15`.
 const NUMBER_WIDTH: u16 = 10;
 
-const COLUMNS: [Column; 9] = [
+/// The columns in order of importance: as many as fit are shown. The damping used comes before
+/// the e_out it gives.
+const COLUMNS: [Column; 10] = [
     Column {
         header: "x_max",
         note: "x µm",
         unit: "µm",
         width: 6,
-        value: |s| Value::Number(s.x_max * 1e6, 4),
+        value: |r| Value::Number(r.summary.x_max * 1e6, 4),
     },
     Column {
         header: "F_max",
         note: "F N",
         unit: "N",
         width: 6,
-        value: |s| Value::Number(s.f_max, 4),
+        value: |r| Value::Number(r.summary.f_max, 4),
     },
     Column {
         header: "t_c",
         note: "t µs",
         unit: "µs",
         width: 6,
-        value: |s| Value::Number(s.t_contact * 1e6, 4),
+        value: |r| Value::Number(r.summary.t_contact * 1e6, 4),
     },
     Column {
-        header: "v_out",
-        note: "v m/s",
-        unit: "m/s",
-        width: 6,
-        value: |s| Value::Number(s.v_out, 4),
+        header: "damping",
+        note: "",
+        unit: "",
+        width: 10,
+        value: |r| Value::Damping(r.damping),
     },
     Column {
         header: "e_out",
         note: "",
         unit: "",
         width: 5,
-        value: |s| Value::Number(s.e_out, 3),
+        value: |r| Value::Number(r.summary.e_out, 3),
+    },
+    Column {
+        header: "v_out",
+        note: "v m/s",
+        unit: "m/s",
+        width: 6,
+        value: |r| Value::Number(r.summary.v_out, 4),
     },
     Column {
         header: "x_res",
         note: "x µm",
         unit: "µm",
         width: 6,
-        value: |s| Value::Number(s.x_residual * 1e6, 4),
+        value: |r| Value::Number(r.summary.x_residual * 1e6, 4),
     },
     Column {
         header: "ΔE",
         note: "ΔE mJ",
         unit: "mJ",
         width: 6,
-        value: |s| Value::Number(s.energy_dissipated * 1e3, 4),
+        value: |r| Value::Number(r.summary.energy_dissipated * 1e3, 4),
     },
     Column {
         header: "method",
         note: "",
         unit: "",
         width: 16,
-        value: |s| Value::Text(s.method.to_string()),
+        value: |r| Value::Text(r.summary.method.to_string()),
     },
     Column {
         header: "steps",
         note: "",
         unit: "",
         width: 6,
-        value: |s| Value::Text(s.steps.to_string()),
+        value: |r| Value::Text(r.summary.steps.to_string()),
     },
 ];
 
@@ -131,12 +190,21 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     frame.render_widget(block, area);
     let model_width: u16 = if roomy { 28 } else { 9 };
     let header_text = |c: &Column| {
-        if c.unit.is_empty() || !roomy {
+        if c.header == "damping" && app.calibrate {
+            // Every law's damping solved so that it realises the scene's e.
+            "calibrated".to_string()
+        } else if c.unit.is_empty() || !roomy {
             c.header.to_string()
         } else {
             format!("{} {}", c.header, c.unit)
         }
     };
+    // The damping column grows with spare room until its units show.
+    let damping_needed = checked
+        .iter()
+        .map(|&m| damping_width(app.solutions.damping(m)))
+        .max()
+        .unwrap_or(0);
     let width_of = |c: &Column| c.width.max(header_text(c).chars().count() as u16);
     // As many columns as fit, in order of importance.
     let mut used = model_width;
@@ -156,7 +224,12 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     'grow: while spare > 0 {
         let mut grew = false;
         for (c, w) in columns.iter().zip(widths.iter_mut()) {
-            if c.is_number() && *w < NUMBER_WIDTH && spare > 0 {
+            let widest = match c.header {
+                "damping" => damping_needed,
+                _ if c.is_number() => NUMBER_WIDTH,
+                _ => 0,
+            };
+            if *w < widest && spare > 0 {
                 *w += 1;
                 spare -= 1;
                 grew = true;
@@ -243,14 +316,20 @@ fn model_row<'a>(
     }
     let name_cell = Cell::from(span(name, name_style));
     match app.solutions.result(model) {
-        Some(Ok(solution)) => Row::new(
+        Some(Ok(solution)) => {
+            let solved = Solved {
+                summary: &solution.summary,
+                damping: app.solutions.damping(model),
+            };
+            Row::new(
             std::iter::once(name_cell).chain(
                 columns
                     .iter()
                     .zip(widths)
-                    .map(|(c, &w)| Cell::from((c.value)(&solution.summary).text(usize::from(w)))),
+                    .map(|(c, &w)| Cell::from((c.value)(&solved).text(usize::from(w)))),
             ),
-        ),
+            )
+        }
         // The reason is laid over the row after the table is drawn.
         Some(Err(_)) => Row::new(vec![name_cell]),
         None => Row::new(vec![
@@ -350,5 +429,27 @@ mod tests {
         assert_eq!(reason_first("contact did not end"), "contact did not end");
         assert_eq!(fit_reason("✗ abcdef", 5), "✗ ab…");
         assert_eq!(fit_reason("✗ ab", 5), "✗ ab");
+    }
+
+    #[test]
+    fn a_damping_cell_narrows_to_its_symbol_and_number_never_cutting_it() {
+        let of = |model: ForceModel, value: f64| {
+            Some(Damping {
+                param: model.spec().damping.unwrap(),
+                value,
+            })
+        };
+        let b = of(ForceModel::Proposed, 187_220.4);
+        assert_eq!(damping_text(b, 30), "b 1.872e5 N·s/m^n");
+        assert_eq!(damping_text(b, 16), "b 1.872e5");
+        assert_eq!(damping_text(b, 8), "b 1.87e5");
+        assert_eq!(damping_text(b, 4), "b …");
+        assert_eq!(damping_width(b), 17);
+        // A pure number has no unit.
+        let chi = of(ForceModel::HuntCrossley, 0.6);
+        assert_eq!(damping_text(chi, 30), "χ 0.6");
+        let p = of(ForceModel::DryFriction, 2.5e-4);
+        assert_eq!(damping_text(p, 9), "P 2.5e-4");
+        assert_eq!(damping_text(None, 10), "-");
     }
 }

@@ -1,0 +1,75 @@
+//! The models pane names every row in one form: the longest of label, id and abbreviation that
+//! fits all of them, at the sizes the explorer is used at.
+
+use hertz_tui::model::ForceModel;
+use hertz_tui::ui::action::Action;
+use hertz_tui::ui::update::update;
+
+use super::render::{app, render};
+
+/// The model a pane row names and the forms its name is in (0 label, 1 id, 2 abbreviation: some
+/// names are two forms at once, such as `proposed`).
+fn forms_of(name: &str) -> Option<(ForceModel, Vec<usize>)> {
+    ForceModel::ALL.into_iter().find_map(|m| {
+        let forms: Vec<usize> = [m.label(), m.name(), m.short()]
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| **n == name)
+            .map(|(form, _)| form)
+            .collect();
+        (!forms.is_empty()).then_some((m, forms))
+    })
+}
+
+/// The names in the checklist rows (`▸[x] ─●── name …✓`) of the screen, in order.
+fn pane_names(rows: &[String]) -> Vec<String> {
+    rows.iter()
+        .filter_map(|row| {
+            let at = row.find("[x]").or_else(|| row.find("[ ]"))?;
+            // The check box, a blank, the 4-cell sample, a blank, then the name padded to its
+            // column, then the busy and fit marks.
+            let rest: String = row[at..].chars().skip(3 + 1 + 4 + 1).collect();
+            let name = rest.split("  ").next()?.trim_end_matches(['✓', '…']).trim();
+            Some(name.to_string())
+        })
+        .collect()
+}
+
+#[test]
+fn every_row_of_the_models_pane_is_named_in_one_form() {
+    // (size, the form expected: 0 label, 1 id, 2 abbreviation).
+    for ((width, height), expected) in [((80, 24), 2), ((120, 40), 0), ((160, 48), 0)] {
+        let mut app = app();
+        update(&mut app, Action::Resize(width, height));
+        // Walk the cursor down the whole list so that every row is drawn once.
+        let mut seen: Vec<(ForceModel, Vec<usize>)> = Vec::new();
+        for _ in 0..120 {
+            let terminal = render(&app, width, height);
+            let buffer = terminal.backend().buffer();
+            let rows: Vec<String> = buffer
+                .content
+                .chunks(usize::from(width))
+                .map(|row| row.iter().map(|c| c.symbol()).collect())
+                .collect();
+            for name in pane_names(&rows) {
+                let found = forms_of(&name)
+                    .unwrap_or_else(|| panic!("{width}×{height}: {name:?} is no model's name"));
+                if !seen.iter().any(|(m, _)| *m == found.0) {
+                    seen.push(found);
+                }
+            }
+            update(&mut app, Action::Down);
+        }
+        assert_eq!(
+            seen.len(),
+            ForceModel::ALL.len(),
+            "{width}×{height}: every model was shown"
+        );
+        for (model, forms) in &seen {
+            assert!(
+                forms.contains(&expected),
+                "{width}×{height}: {model:?} named in form {forms:?}, the pane in {expected}"
+            );
+        }
+    }
+}
