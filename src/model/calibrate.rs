@@ -133,9 +133,8 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
         });
     }
     if let Kind::Thornton = model.spec().kind {
-        // Thornton's e(V) is closed-form (spheres, the only contact the law is built for): the
-        // v_y it inverts to is the law's own default.
-        let v_yield = Thornton::default_v_yield(params);
+        // Thornton's e(V) is closed-form (spheres, the only contact the law is built for).
+        let v_yield = Thornton::v_yield_for_restitution(target, params.v0);
         let law = build(v_yield)?;
         return Ok(Calibrated {
             law,

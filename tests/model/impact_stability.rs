@@ -22,6 +22,7 @@ fn sphere(restitution: f64) -> ImpactParams {
         v0: 0.3,
         restitution,
         plastic_indentation: 2.3e-6,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 

@@ -1,7 +1,7 @@
 //! Fixtures of the contact-law tests: the Fig. 5 sphere at any v₀ and e, and a tight DOP853 solve.
 
 use hertz_tui::model::PowerLaw;
-use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::force::{Contact, ForceModel, ImpactParams};
 use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_law};
 use hertz_tui::model::ode::Method;
 
@@ -16,6 +16,7 @@ pub fn sphere(v0: f64, restitution: f64) -> ImpactParams {
         v0,
         restitution,
         plastic_indentation: 0.0,
+        contact: Contact::Unspecified,
     }
 }
 

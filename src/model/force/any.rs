@@ -219,7 +219,10 @@ impl AnyLaw {
             Kind::Thornton => AnyLaw::Thornton(Thornton::new(
                 model,
                 params,
-                damping.unwrap_or_else(|| Thornton::default_v_yield(params)),
+                match damping {
+                    Some(v_yield) => v_yield,
+                    None => Thornton::default_v_yield(params)?,
+                },
             )?),
             Kind::KelvinVoigt => AnyLaw::KelvinVoigt(KelvinVoigt::new(
                 model,

@@ -3,7 +3,8 @@
 use super::dry_friction::{DryFriction, EQ17_CONSTANT};
 use super::*;
 
-/// Fig. 5 of the paper: n = 1.5, m = 0.033 kg, k = 1.465e10, v₀ = 0.3 m/s, x_pl = 2.3 µm, e = 0.6.
+/// Fig. 5 of the paper: n = 1.5, m = 0.033 kg, k = 1.465e10, v₀ = 0.3 m/s, x_pl = 2.3 µm, e = 0.6;
+/// steel on steel (η = 9.1e-12 m²/N, σ_y = 780 MPa, Table 1), R = 10 mm.
 fn fig5() -> ImpactParams {
     ImpactParams {
         mass: 0.033,
@@ -14,6 +15,11 @@ fn fig5() -> ImpactParams {
         v0: 0.3,
         restitution: 0.6,
         plastic_indentation: 2.3e-6,
+        contact: Contact::Point(PointContact {
+            yield_pressure: 1.1 * 780e6,
+            modulus: 1.0 / 9.1e-12,
+            radius: 0.01,
+        }),
     }
 }
 
