@@ -5,7 +5,7 @@
 use std::f64::consts::PI;
 
 use hertz_tui::model::force::thornton::{Thornton, thornton_restitution};
-use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::force::{Contact, ForceModel, ImpactParams};
 use hertz_tui::model::impact::{SolveOptions, solve_impact, solve_law};
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::pressure::YIELD_FACTOR;
@@ -164,7 +164,11 @@ fn cylinders_and_sceneless_parameters_are_refused_by_name() {
             "{err}"
         );
     }
-    let err = THORNTON.law(&sphere(0.3, 0.6)).unwrap_err().to_string();
+    let sceneless = ImpactParams {
+        contact: Contact::Unspecified,
+        ..sphere(0.3, 0.6)
+    };
+    let err = THORNTON.law(&sceneless).unwrap_err().to_string();
     assert!(
         err.contains("yield stress") && err.contains("v_y explicitly"),
         "{err}"
