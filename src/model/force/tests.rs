@@ -272,9 +272,11 @@ fn every_hunt_crossley_chi_damps_more_as_e_falls_and_vanishes_at_e_1() {
     // A χ(e) must be 0 at e = 1 and grow as e falls; read as a power of e, Zhiying–Qishao's
     // e^{2(1−e)} would fall back to 0 as e → 0 (docs/physics.md §6.1).
     for spec in LAWS {
-        let table::Kind::HuntCrossley(chi) = spec.kind else {
+        let Some(chi) = spec.chi else {
+            assert_ne!(spec.family, Family::HuntCrossley, "{} has no χ(e)", spec.id);
             continue;
         };
+        assert_eq!(spec.family, Family::HuntCrossley, "{}", spec.id);
         assert_eq!(chi(1.0), 0.0, "{}", spec.id);
         let mut last = 0.0;
         for i in (1..100).rev() {

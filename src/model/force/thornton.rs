@@ -102,6 +102,19 @@ impl Thornton {
         })
     }
 
+    /// The table's builder: v_y given, or from the material ([`Thornton::default_v_yield`]).
+    pub fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        v_yield: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        let v_yield = match v_yield {
+            Some(v_yield) => v_yield,
+            None => Self::default_v_yield(params)?,
+        };
+        Self::new(model, params, v_yield)
+    }
+
     /// Thornton's V_y from the material: the impact speed at which the Hertz pressure p₀ first
     /// reaches p_y, i.e. x_y = R·(π·p_y/(2E*))² (p₀ = (2E*/π)·√(x/R)) and ½mV_y² = k·x_y^{5/2}/(5/2)
     /// (Thornton 1997; his V_y = 1.56·(p_y⁵/(E*⁴ρ))^{1/2} for a sphere on a plane), docs/physics.md
