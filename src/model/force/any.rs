@@ -16,19 +16,20 @@ pub trait LawVisitor {
     fn visit<L: ForceLaw>(self, law: &L) -> Self::Output;
 }
 
-/// The law table: rows `Variant: Type = builder, LawSpec { … };`. Each row becomes an entry of
-/// `LAWS` and a variant `AnyLaw::Variant(Type)`; its builder, a
+/// The law table: rows `Variant = file::Type::builder, LawSpec { … };`, `file` a module of
+/// `force`. Each row becomes an entry of `LAWS` and a variant `AnyLaw::Variant(file::Type)`; its
+/// builder, a
 /// `fn(ForceModel, &ImpactParams, Option<f64>) -> Result<Type, ModelError>`, makes the law from a
 /// scene with its damping given or, for `None`, from the law's own rule.
 macro_rules! law_table {
-    ($($(#[$doc:meta])* $variant:ident: $ty:ty = $build:path, $spec:expr;)*) => {
+    ($($(#[$doc:meta])* $variant:ident = $file:ident::$ty:ident::$build:ident, $spec:expr;)*) => {
         /// Every law, in table order: what `--model`, scene files, sweeps and the explorer list.
         pub const LAWS: &[$crate::model::force::table::LawSpec] = &[$($spec),*];
 
         /// Any law of the table: one variant per row, holding the law type of its file.
         #[derive(Debug, Clone, Copy, PartialEq)]
         pub enum AnyLaw {
-            $($(#[$doc])* $variant($ty)),*
+            $($(#[$doc])* $variant($crate::model::force::$file::$ty)),*
         }
 
         impl AnyLaw {
@@ -44,7 +45,9 @@ macro_rules! law_table {
                 }
                 $(
                     if model.index() == Row::$variant as usize {
-                        return Ok(AnyLaw::$variant($build(model, params, damping)?));
+                        return Ok(AnyLaw::$variant(
+                            $crate::model::force::$file::$ty::$build(model, params, damping)?,
+                        ));
                     }
                 )*
                 Err($crate::model::error::ModelError::OutOfDomain {

@@ -3,18 +3,11 @@
 //! Everything that lists laws — `--model`, scene files, sweeps, the explorer's panes and arrays —
 //! iterates [`LAWS`] through [`super::ForceModel`]. The one [`law_table!`] invocation below is
 //! both [`LAWS`] and the generator of [`AnyLaw`]: each row names its variant, the law type of its
-//! file and that type's builder, then its table data. A Hunt–Crossley-type law is one row with its
+//! file and that type's builder (`Variant = file::Type::builder`), then its table data. A Hunt–Crossley-type law is one row with its
 //! χ(e); a law with its own equations is one file (a `ForceLaw` type and its builder, declared by
 //! its `mod` line in `force/mod.rs`) plus one row.
 
 use super::any::law_table;
-use super::dry_friction::DryFriction;
-use super::elastic::Elastic;
-use super::hertz_viscous::HertzViscous;
-use super::hysteresis::Hysteresis;
-use super::kelvin_voigt::KelvinVoigt;
-use super::proposed::Proposed;
-use super::thornton::Thornton;
 
 /// Which kind of dissipation a law models; the Models pane groups laws by it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -116,7 +109,7 @@ const KV_C: DampingParam = DampingParam {
 
 // Every law, grouped by family; the paper's five keep their ids and their relative order.
 law_table! {
-    Elastic: Elastic = Elastic::build,
+    Elastic = elastic::Elastic::build,
     LawSpec {
         id: "quasistatic",
         label: "Hertz, elastic (eq 1)",
@@ -127,7 +120,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: None,
     };
-    DryFriction: DryFriction = DryFriction::build,
+    DryFriction = dry_friction::DryFriction::build,
     LawSpec {
         id: "dry-friction",
         label: "dry friction (eq 15)",
@@ -142,7 +135,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: None,
     };
-    Proposed: Proposed = Proposed::build,
+    Proposed = proposed::Proposed::build,
     LawSpec {
         id: "proposed",
         label: "proposed viscous (eq 18)",
@@ -157,7 +150,7 @@ law_table! {
         contact: ContactRule::ForceZero,
         chi: None,
     };
-    HertzViscous: HertzViscous = HertzViscous::build,
+    HertzViscous = hertz_viscous::HertzViscous::build,
     LawSpec {
         id: "hertz-viscous",
         label: "Hertz–viscous F≥0",
@@ -168,7 +161,7 @@ law_table! {
         contact: ContactRule::ForceZero,
         chi: None,
     };
-    HertzViscousTension: HertzViscous = HertzViscous::build,
+    HertzViscousTension = hertz_viscous::HertzViscous::build,
     LawSpec {
         id: "hertz-viscous-tension",
         label: "Hertz–visc. tension",
@@ -179,7 +172,7 @@ law_table! {
         contact: ContactRule::TensionAllowed,
         chi: None,
     };
-    KelvinVoigt: KelvinVoigt = KelvinVoigt::build,
+    KelvinVoigt = kelvin_voigt::KelvinVoigt::build,
     LawSpec {
         id: "kelvin-voigt",
         label: "Kelvin–Voigt F≥0",
@@ -190,7 +183,7 @@ law_table! {
         contact: ContactRule::ForceZero,
         chi: None,
     };
-    KelvinVoigtTension: KelvinVoigt = KelvinVoigt::build,
+    KelvinVoigtTension = kelvin_voigt::KelvinVoigt::build,
     LawSpec {
         id: "kelvin-voigt-tension",
         label: "Kelvin–Voigt tension",
@@ -201,7 +194,7 @@ law_table! {
         contact: ContactRule::TensionAllowed,
         chi: None,
     };
-    KuwabaraKono: Proposed = Proposed::build_kuwabara_kono,
+    KuwabaraKono = proposed::Proposed::build_kuwabara_kono,
     LawSpec {
         id: "kuwabara-kono",
         label: "Kuwabara–Kono",
@@ -216,7 +209,7 @@ law_table! {
         contact: ContactRule::ForceZero,
         chi: None,
     };
-    Thornton: Thornton = Thornton::build,
+    Thornton = thornton::Thornton::build,
     LawSpec {
         id: "thornton",
         label: "Thornton 1997",
@@ -231,7 +224,7 @@ law_table! {
         contact: ContactRule::ForceZero,
         chi: None,
     };
-    HuntCrossley: Hysteresis = Hysteresis::build,
+    HuntCrossley = hysteresis::Hysteresis::build,
     LawSpec {
         id: "hunt-crossley",
         label: "Hunt–Crossley (eq 19)",
@@ -242,7 +235,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 1.5 * (1.0 - e)),
     };
-    LankaraniNikravesh: Hysteresis = Hysteresis::build,
+    LankaraniNikravesh = hysteresis::Hysteresis::build,
     LawSpec {
         id: "lankarani-nikravesh",
         label: "Lankarani–Nikravesh (eq 20)",
@@ -253,7 +246,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 0.75 * (1.0 - e * e)),
     };
-    HerbertMcWhannell: Hysteresis = Hysteresis::build,
+    HerbertMcWhannell = hysteresis::Hysteresis::build,
     LawSpec {
         id: "herbert-mcwhannell",
         label: "Herbert–McWhannell",
@@ -264,7 +257,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
     };
-    LeeWang: Hysteresis = Hysteresis::build,
+    LeeWang = hysteresis::Hysteresis::build,
     LawSpec {
         id: "lee-wang",
         label: "Lee–Wang",
@@ -275,7 +268,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 0.75 * (1.0 - e)),
     };
-    Gonthier: Hysteresis = Hysteresis::build,
+    Gonthier = hysteresis::Hysteresis::build,
     LawSpec {
         id: "gonthier",
         label: "Gonthier et al.",
@@ -286,7 +279,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| (1.0 - e * e) / e),
     };
-    ZhiyingQishao: Hysteresis = Hysteresis::build,
+    ZhiyingQishao = hysteresis::Hysteresis::build,
     LawSpec {
         id: "zhiying-qishao",
         label: "Zhiying–Qishao",
@@ -297,7 +290,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
     };
-    Flores: Hysteresis = Hysteresis::build,
+    Flores = hysteresis::Hysteresis::build,
     LawSpec {
         id: "flores",
         label: "Flores et al.",
@@ -308,7 +301,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 1.6 * (1.0 - e) / e),
     };
-    HuGuo: Hysteresis = Hysteresis::build,
+    HuGuo = hysteresis::Hysteresis::build,
     LawSpec {
         id: "hu-guo",
         label: "Hu–Guo",
@@ -319,7 +312,7 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: Some(|e| 1.5 * (1.0 - e) / e),
     };
-    GharibHurmuzlu: Hysteresis = Hysteresis::build,
+    GharibHurmuzlu = hysteresis::Hysteresis::build,
     LawSpec {
         id: "gharib-hurmuzlu",
         label: "Gharib–Hurmuzlu",
