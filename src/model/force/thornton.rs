@@ -38,19 +38,24 @@ pub fn thornton_restitution(q: f64) -> f64 {
         * (q / (q + 2.0 * root)).powf(0.25)
 }
 
+/// The refusal of a line contact, naming the cylinder body (docs/physics.md §6.6).
+fn line_contact_refused(bodies: &str) -> ModelError {
+    ModelError::OutOfDomain {
+        formula: "Thornton (1997) elastic–perfectly-plastic law",
+        detail: format!(
+            "{bodies}: the law's limiting pressure and enlarged unloading radius are Hertz's \
+             sphere geometry, and no line-contact counterpart is derived here; use a viscous law \
+             (proposed, hertz-viscous) for cylinders"
+        ),
+    }
+}
+
 impl Thornton {
     /// The law with yield velocity `v_yield`, m/s. Spheres only (n = 3/2): the enlarged unloading
     /// radius is Hertz's sphere geometry; a line contact is refused naming its cylinder.
     pub fn new(model: ForceModel, params: &ImpactParams, v_yield: f64) -> Result<Self, ModelError> {
         if let Contact::Line { bodies, .. } = params.contact {
-            return Err(ModelError::OutOfDomain {
-                formula: "Thornton (1997) elastic–perfectly-plastic law",
-                detail: format!(
-                    "{bodies}: the law's limiting pressure and enlarged unloading radius are \
-                     Hertz's sphere geometry, and no line-contact counterpart is derived here; \
-                     use a viscous law (proposed, hertz-viscous) for cylinders"
-                ),
-            });
+            return Err(line_contact_refused(bodies));
         }
         if params.law.n != 1.5 {
             return Err(ModelError::OutOfDomain {
@@ -122,12 +127,7 @@ impl Thornton {
     pub fn default_v_yield(params: &ImpactParams) -> Result<f64, ModelError> {
         let point = match params.contact {
             Contact::Point(point) => point,
-            Contact::Line { bodies, .. } => {
-                return Err(ModelError::OutOfDomain {
-                    formula: "Thornton (1997) elastic–perfectly-plastic law",
-                    detail: format!("{bodies}: the law is for spheres"),
-                });
-            }
+            Contact::Line { bodies, .. } => return Err(line_contact_refused(bodies)),
             Contact::Unspecified => {
                 return Err(ModelError::OutOfDomain {
                     formula: "Thornton (1997) elastic–perfectly-plastic law",
