@@ -13,6 +13,7 @@ pub mod any;
 pub mod contact;
 pub mod dry_friction;
 pub mod elastic;
+pub mod hertz_line_exact;
 pub mod hertz_viscous;
 pub mod hysteresis;
 pub mod kelvin_voigt;

@@ -120,6 +120,17 @@ law_table! {
         contact: ContactRule::ApproachZero,
         chi: None,
     };
+    HertzLineExact = hertz_line_exact::HertzLineExact::build,
+    LawSpec {
+        id: "hertz-line-exact",
+        label: "Hertz exact line (eq 13/14)",
+        short: "Hz line",
+        source: "eqs 13–14 inverted for F(x) (eq 1 on spheres); docs/physics.md §6.7",
+        family: Family::Elastic,
+        damping: None,
+        contact: ContactRule::ApproachZero,
+        chi: None,
+    };
     DryFriction = dry_friction::DryFriction::build,
     LawSpec {
         id: "dry-friction",
