@@ -22,6 +22,7 @@ fn fig5() -> ImpactParams {
         v0: 0.3,
         restitution: 0.6,
         plastic_indentation: 2.3e-6,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 

@@ -9,11 +9,14 @@
 use thiserror::Error;
 
 use super::exact::special::{unloading_root, y_minus_log1p};
-use super::force::table::Kind;
+use super::force::table::Family;
 use super::force::thornton::{Thornton, thornton_restitution};
 use super::force::{AnyLaw, Damping, DampingParam, ForceModel, ImpactParams};
 use super::impact::{ImpactError, MethodChoice, SolveOptions, solve_law};
 use super::numeric::roots::brent;
+
+/// Thornton's law, calibrated through his closed-form e(V).
+const THORNTON: ForceModel = ForceModel::with_id("thornton");
 
 /// The tolerance of the solves inside a bracketed calibration: two digits below the 1e-10 the
 /// calibration aims at.
@@ -117,7 +120,7 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
                 source: ImpactError::InvalidInput(e),
             })
     };
-    if let Kind::HuntCrossley(_) = model.spec().kind {
+    if model.spec().family == Family::HuntCrossley {
         let chi = hunt_crossley_chi(target).ok_or(CalibrationError::Unreachable {
             model,
             target,
@@ -132,10 +135,9 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
             e_out: hunt_crossley_restitution(chi),
         });
     }
-    if let Kind::Thornton = model.spec().kind {
-        // Thornton's e(V) is closed-form (spheres, the only contact the law is built for): the
-        // v_y it inverts to is the law's own default.
-        let v_yield = Thornton::default_v_yield(params);
+    if model == THORNTON {
+        // Thornton's e(V) is closed-form (spheres, the only contact the law is built for).
+        let v_yield = Thornton::v_yield_for_restitution(target, params.v0);
         let law = build(v_yield)?;
         return Ok(Calibrated {
             law,
@@ -166,7 +168,7 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
             }),
         }
     };
-    if let Kind::Thornton = model.spec().kind {
+    if model == THORNTON {
         // e_out rises with v_y, to 1 at v_y = v₀.
         return bracketed(
             model,

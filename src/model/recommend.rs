@@ -13,7 +13,6 @@
 
 use crate::model::calibrate::{hunt_crossley_chi, hunt_crossley_restitution};
 use crate::model::force::ForceModel;
-use crate::model::force::table::Kind;
 use crate::model::pressure::Regime;
 use crate::model::quasistatic::Quasistatic;
 use crate::model::scene::Scene;
@@ -32,9 +31,9 @@ pub fn faithful_hysteresis_laws(e: f64) -> Vec<(ForceModel, f64)> {
     paper
         .into_iter()
         .chain(rest)
-        .filter_map(|model| match model.spec().kind {
-            Kind::HuntCrossley(chi) => Some((model, hunt_crossley_restitution(chi(e)))),
-            _ => None,
+        .filter_map(|model| {
+            let chi = model.spec().chi?;
+            Some((model, hunt_crossley_restitution(chi(e))))
         })
         .filter(|&(_, realised)| (realised / e - 1.0).abs() <= RESTITUTION_TOLERANCE)
         .collect()

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::error::ModelError;
-use super::force::table::Kind;
+use super::force::table::Family;
 use super::force::{AnyLaw, ForceModel, ImpactParams};
 use super::impact::{ImpactError, SolveOptions, solve_impact, solve_law};
 
@@ -99,9 +99,10 @@ pub fn fixed_coefficient_law(
     match model.law(params)?.damping() {
         None => model.law(&at_v0),
         Some(d) => {
-            let value = match model.spec().kind {
-                Kind::HuntCrossley(_) => d.value * v0 / params.v0,
-                _ => d.value,
+            let value = if model.spec().family == Family::HuntCrossley {
+                d.value * v0 / params.v0
+            } else {
+                d.value
             };
             model.law_with_damping(&at_v0, value)
         }

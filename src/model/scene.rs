@@ -4,7 +4,7 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
-use super::force::ImpactParams;
+use super::force::{Contact, ImpactParams};
 use super::pair::ContactPair;
 use super::quasistatic::{self, Quasistatic};
 
@@ -66,7 +66,8 @@ impl Scene {
         Ok(q)
     }
 
-    /// Inputs of the impact solver: the quasistatic law F = k·xⁿ, the reduced mass and the impact conditions.
+    /// Inputs of the impact solver: the quasistatic law F = k·xⁿ, the reduced mass, the impact
+    /// conditions and the bodies' contact (for the laws that need it).
     pub fn impact_params(&self, quasistatic: &Quasistatic) -> ImpactParams {
         ImpactParams {
             mass: quasistatic.reduced_mass,
@@ -74,6 +75,9 @@ impl Scene {
             v0: self.impact.v0,
             restitution: self.impact.restitution,
             plastic_indentation: self.impact.plastic_indentation,
+            contact: self
+                .pair()
+                .map_or(Contact::Unspecified, |pair| Contact::of(&pair)),
         }
     }
 }

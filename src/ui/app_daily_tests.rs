@@ -351,7 +351,16 @@ fn mouse_clicks_tabs_fields_and_model_boxes_and_the_wheel_nudges() {
     assert_eq!(a.draft.scene.impact.v0, 0.31);
     mouse(&mut a, MouseEventKind::ScrollDown, x + 2, y);
     assert_eq!(a.draft.scene.impact.v0, 0.3);
-    let (x, y) = find("[ ]").unwrap();
+    // The box on dry friction's own row (other unchecked laws may come first).
+    let (x, y) = lines
+        .iter()
+        .enumerate()
+        .find_map(|(y, line)| {
+            line.find("dry friction")?;
+            let byte = line.find("[ ]")?;
+            Some((line[..byte].chars().count() as u16, y as u16))
+        })
+        .unwrap();
     assert!(!a.is_checked(ForceModel::DryFriction));
     mouse(&mut a, MouseEventKind::Down(MouseButton::Left), x + 1, y);
     assert!(

@@ -25,5 +25,6 @@ pub fn fig5_params(v0: f64) -> ImpactParams {
         v0,
         restitution: 0.6,
         plastic_indentation: 2.3e-6,
+        contact: crate::model::force::Contact::Unspecified,
     }
 }

@@ -18,6 +18,7 @@ fn fig4(restitution: f64) -> ImpactParams {
         v0: 0.03,
         restitution,
         plastic_indentation: 0.0,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 

@@ -136,6 +136,7 @@ fn scenes() -> Vec<ImpactParams> {
         v0: 0.3,
         restitution: 0.6,
         plastic_indentation: 2.3e-6,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     };
     vec![
         fig5,
@@ -154,6 +155,7 @@ fn scenes() -> Vec<ImpactParams> {
             v0: 0.5,
             restitution: 0.7,
             plastic_indentation: 3e-6,
+            contact: hertz_tui::model::force::Contact::Unspecified,
         },
     ]
 }

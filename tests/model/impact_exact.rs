@@ -21,6 +21,7 @@ fn sphere(restitution: f64) -> ImpactParams {
         v0: 0.3,
         restitution,
         plastic_indentation: 2.3e-6,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 
@@ -35,6 +36,7 @@ pub(crate) fn cylinder(restitution: f64) -> ImpactParams {
         v0: 0.5,
         restitution,
         plastic_indentation: 1e-6,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 

@@ -22,6 +22,7 @@ fn sphere(restitution: f64) -> ImpactParams {
         v0: 0.3,
         restitution,
         plastic_indentation: 2.3e-6,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 
@@ -407,7 +408,7 @@ fn no_separation_within_the_time_limit_is_an_error() {
     // bodies within a few percent of the contact and lets them coast out at 2e-5 m/s: exactly,
     // contact lasts 139 elastic contact times, beyond the solver's limit of 100.
     let p = sphere(0.05);
-    let law = AnyLaw::Hysteresis(Hysteresis::hunt_crossley_calibrated(&p, 3e-5).unwrap());
+    let law = AnyLaw::HuntCrossley(Hysteresis::hunt_crossley_calibrated(&p, 3e-5).unwrap());
     let t_c = p.law.contact_time(p.mass, p.v0);
     let ex = law.exact(1e-12).unwrap();
     assert!(
@@ -432,7 +433,7 @@ fn strong_hunt_crossley_damping_exits_on_the_invariant_line() {
     // compressive-only rule ends contact there, and the solver reports the cutoff — with the
     // exit speed still right, since the bodies were already coasting.
     let p = sphere(0.05);
-    let law = AnyLaw::Hysteresis(Hysteresis::hunt_crossley_calibrated(&p, 3e-3).unwrap());
+    let law = AnyLaw::HuntCrossley(Hysteresis::hunt_crossley_calibrated(&p, 3e-3).unwrap());
     let ex = law.exact(1e-12).unwrap();
     let alpha = 1.5 * 0.95 / 3e-3;
     assert!(rel(ex.v_out, 1.0 / alpha) < 1e-15);

@@ -16,6 +16,7 @@ fn fig5(restitution: f64) -> ImpactParams {
         v0: 0.3,
         restitution,
         plastic_indentation: 2.3e-6,
+        contact: crate::laws_common::fig5_contact(),
     }
 }
 

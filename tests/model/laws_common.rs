@@ -1,9 +1,19 @@
 //! Fixtures of the contact-law tests: the Fig. 5 sphere at any v₀ and e, and a tight DOP853 solve.
 
 use hertz_tui::model::PowerLaw;
-use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::force::{Contact, ForceModel, ImpactParams, PointContact};
 use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_law};
 use hertz_tui::model::ode::Method;
+
+/// Fig. 5's steel sphere (R = 10 mm) on a steel plate as the laws that need the bodies see it:
+/// p_y = 1.1·σ_y with σ_y = 780 MPa, E* = 1/η with η = 9.1e-12 m²/N (Table 1).
+pub fn fig5_contact() -> Contact {
+    Contact::Point(PointContact {
+        yield_pressure: 1.1 * 780e6,
+        modulus: 1.0 / 9.1e-12,
+        radius: 0.01,
+    })
+}
 
 /// Fig. 5's steel sphere on a plate (m = 0.033 kg, k = 1.465e10 N/m^1.5) at `v0` and `restitution`.
 pub fn sphere(v0: f64, restitution: f64) -> ImpactParams {
@@ -16,6 +26,7 @@ pub fn sphere(v0: f64, restitution: f64) -> ImpactParams {
         v0,
         restitution,
         plastic_indentation: 0.0,
+        contact: fig5_contact(),
     }
 }
 

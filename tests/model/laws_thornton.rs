@@ -1,11 +1,17 @@
 //! Thornton's elastic–perfectly-plastic sphere (docs/physics.md §6.6) against his closed-form
-//! restitution e(V), integrated at tight tolerance; e = 1 below the yield velocity.
+//! restitution e(V), integrated at tight tolerance; e = 1 below the yield velocity, which comes
+//! from the material's yield stress and is the paper's v₀y.
 
-use hertz_tui::model::force::thornton::thornton_restitution;
-use hertz_tui::model::force::{ForceModel, ImpactParams};
-use hertz_tui::model::impact::{SolveOptions, solve_law};
+use std::f64::consts::PI;
 
-use crate::laws_common::{e_out_with, sphere};
+use hertz_tui::model::force::thornton::{Thornton, thornton_restitution};
+use hertz_tui::model::force::{Contact, ForceModel, ImpactParams};
+use hertz_tui::model::impact::{SolveOptions, solve_impact, solve_law};
+use hertz_tui::model::presets::Registry;
+use hertz_tui::model::pressure::YIELD_FACTOR;
+use hertz_tui::model::{Scene, Shape};
+
+use crate::laws_common::{dop853, e_out_with, sphere};
 
 const THORNTON: ForceModel = ForceModel::with_id("thornton");
 
@@ -50,12 +56,121 @@ fn above_it_a_dent_stays_and_e_tends_to_1_185_q_to_the_quarter() {
 }
 
 #[test]
-fn the_default_yield_velocity_realises_the_requested_e() {
+fn the_yield_velocity_inverted_from_e_realises_it() {
+    // What calibration uses: v_y from Thornton's e(V) at the scene's v₀.
     for e in [0.2, 0.6, 0.95] {
         let p = sphere(0.3, e);
-        let law = THORNTON.law(&p).unwrap();
-        let v_yield = law.damping().unwrap().value;
+        let v_yield = Thornton::v_yield_for_restitution(e, p.v0);
         assert!(v_yield < p.v0);
         assert!((e_out(&p, v_yield) / e - 1.0).abs() < 1e-8, "{e}");
     }
+}
+
+fn preset(name: &str) -> Scene {
+    Registry::builtin()
+        .and_then(|r| r.scene(name))
+        .unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+fn params_at(scene: &Scene, v0: f64) -> ImpactParams {
+    let mut scene = scene.clone();
+    scene.impact.v0 = v0;
+    scene.impact_params(&scene.quasistatic().unwrap())
+}
+
+#[test]
+fn the_yield_velocity_comes_from_the_material_and_is_the_papers_v_y() {
+    for name in ["fig5-steel-sphere-r10-plate", "steel-sphere-r5-plate"] {
+        let scene = preset(name);
+        let q = scene.quasistatic().unwrap();
+        let p = scene.impact_params(&q);
+        let v_yield = THORNTON.law(&p).unwrap().damping().unwrap().value;
+        // p_y = 1.1·σ_y on the maximum pressure: Thornton's V_y is the paper's yield onset v₀y.
+        assert!(
+            (v_yield / q.onset.v_yield - 1.0).abs() < 1e-12,
+            "{name}: {v_yield} vs {:?}",
+            q.onset
+        );
+        // And Thornton's closed form for a sphere on a rigid-massed plate, m = (4/3)πR³ρ:
+        // V_y = (π²/√40)·(p_y⁵/(E*⁴ρ))^{1/2} (= 1.56·… as he prints it).
+        let Shape::Sphere { radius } = scene.body1.shape else {
+            panic!("{name}: body1 is the sphere");
+        };
+        let rho = scene.body1.material.density;
+        assert!((p.mass / (4.0 / 3.0 * PI * radius.powi(3) * rho) - 1.0).abs() < 1e-12);
+        let sigma_y = scene
+            .body1
+            .material
+            .yield_stress
+            .min(scene.body2.material.yield_stress);
+        let p_y = YIELD_FACTOR * sigma_y;
+        let e_star = 1.0
+            / ((1.0 - scene.body1.material.poisson_ratio.powi(2))
+                / scene.body1.material.youngs_modulus
+                + (1.0 - scene.body2.material.poisson_ratio.powi(2))
+                    / scene.body2.material.youngs_modulus);
+        let thornton = PI * PI / 40f64.sqrt() * (p_y.powi(5) / (e_star.powi(4) * rho)).sqrt();
+        assert!(
+            (v_yield / thornton - 1.0).abs() < 1e-12,
+            "{name}: {v_yield} vs {thornton}"
+        );
+        assert!((PI * PI / 40f64.sqrt() - 1.56).abs() < 1e-3);
+    }
+}
+
+#[test]
+fn restitution_from_the_material_follows_the_closed_form_over_two_decades_of_v_over_v_y() {
+    // V/V_y ∈ [1, 100] on the Fig. 5 sphere, the law built from the scene alone (its e unused),
+    // integrated by DOP853 at rtol 1e-12 against Thornton's e(V) to 1e-8.
+    let scene = preset("fig5-steel-sphere-r10-plate");
+    let p = params_at(&scene, 0.3);
+    let v_yield = THORNTON.law(&p).unwrap().damping().unwrap().value;
+    for ratio in [1.0, 1.001, 1.5, 3.0, 10.0, 30.0, 100.0] {
+        let p = params_at(&scene, ratio * v_yield);
+        let s = solve_impact(THORNTON, &p, &dop853(1e-12)).unwrap().summary;
+        let closed = thornton_restitution(1.0 / ratio);
+        assert!(
+            (s.e_out / closed - 1.0).abs() < 1e-8,
+            "V/V_y {ratio}: {} vs {closed}",
+            s.e_out
+        );
+        // The energy balance of the integrated plastic cycle closes.
+        assert!(s.energy_residual.abs() < 1e-8, "V/V_y {ratio}: {s:?}");
+    }
+    // The scene's e does not enter: the material decides.
+    let other_e = ImpactParams {
+        restitution: 0.2,
+        ..params_at(&scene, 10.0 * v_yield)
+    };
+    let s = solve_impact(THORNTON, &other_e, &dop853(1e-12))
+        .unwrap()
+        .summary;
+    assert!((s.e_out / thornton_restitution(0.1) - 1.0).abs() < 1e-8);
+}
+
+#[test]
+fn cylinders_and_sceneless_parameters_are_refused_by_name() {
+    let cylinder = preset("steel-cylinder-r20-l100-plate");
+    let p = params_at(&cylinder, cylinder.impact.v0);
+    for err in [
+        THORNTON.law(&p).unwrap_err().to_string(),
+        THORNTON.law_with_damping(&p, 0.03).unwrap_err().to_string(),
+        solve_impact(THORNTON, &p, &SolveOptions::default())
+            .unwrap_err()
+            .to_string(),
+    ] {
+        assert!(
+            err.contains("body1 is a cylinder") && err.contains("sphere"),
+            "{err}"
+        );
+    }
+    let sceneless = ImpactParams {
+        contact: Contact::Unspecified,
+        ..sphere(0.3, 0.6)
+    };
+    let err = THORNTON.law(&sceneless).unwrap_err().to_string();
+    assert!(
+        err.contains("yield stress") && err.contains("v_y explicitly"),
+        "{err}"
+    );
 }

@@ -16,6 +16,7 @@ mod impact_stability;
 mod impact_trajectory;
 mod laws_common;
 mod laws_kuwabara_kono;
+mod laws_line_exact;
 mod laws_thornton;
 mod laws_viscous;
 mod ode_convergence;

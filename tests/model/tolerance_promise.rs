@@ -74,6 +74,7 @@ fn scene(u: &mut Uniform) -> ImpactParams {
         v0,
         restitution: u.between(0.2, 0.99),
         plastic_indentation: plastic,
+        contact: hertz_tui::model::force::Contact::Unspecified,
     }
 }
 

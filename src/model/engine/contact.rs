@@ -134,6 +134,7 @@ fn exact(law: &ContactLaw, mass: f64, v0: f64) -> Result<Option<EngineImpact>, E
             v0,
             restitution: 1.0,
             plastic_indentation: 0.0,
+            contact: crate::model::force::Contact::Unspecified,
         };
         params.validate()?;
         return Ok(hysteresis(&params, alpha, RTOL)

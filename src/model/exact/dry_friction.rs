@@ -104,6 +104,7 @@ mod tests {
             v0: 0.03,
             restitution: 0.9,
             plastic_indentation: 0.0,
+            contact: crate::model::force::Contact::Unspecified,
         }
     }
 
@@ -194,6 +195,7 @@ mod tests {
             v0: 0.5,
             restitution: 0.8,
             plastic_indentation: 0.0,
+            contact: crate::model::force::Contact::Unspecified,
         };
         let p = 2e6;
         let ex = dry_friction(&params, p, 0.0, 1e-14).unwrap();

@@ -37,6 +37,7 @@ mod tests {
             v0: 0.5,
             restitution: 1.0,
             plastic_indentation: 0.0,
+            contact: crate::model::force::Contact::Unspecified,
         };
         let ex = elastic(&params);
         let w = (8e6f64 / 2.0).sqrt();

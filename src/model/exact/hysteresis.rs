@@ -213,6 +213,7 @@ mod tests {
             v0: 0.3,
             restitution: 0.6,
             plastic_indentation: 2.3e-6,
+            contact: crate::model::force::Contact::Unspecified,
         }
     }
 

@@ -1,18 +1,14 @@
 //! One value for any law of the table, dispatching statically (no boxing in the solver's hot loop),
 //! and the damping-parameter API: each law's damping from the scene's e, or an explicit value.
+//!
+//! [`law_table!`] is invoked once, in `table.rs`: that invocation is at the same time the table
+//! [`super::LAWS`] and the generator of [`AnyLaw`], one variant per row.
 
-use super::dry_friction::DryFriction;
-use super::elastic::Elastic;
-use super::hertz_viscous::HertzViscous;
-use super::hysteresis::Hysteresis;
-use super::kelvin_voigt::KelvinVoigt;
-use super::law::{ContactEnd, ForceLaw, Phase};
-use super::proposed::Proposed;
-use super::table::{ContactRule, DampingParam, Kind};
-use super::thornton::Thornton;
+use super::law::ForceLaw;
+pub use super::table::AnyLaw;
+use super::table::DampingParam;
 use super::{ForceModel, ImpactParams};
 use crate::model::error::{ModelError, require};
-use crate::model::exact::ExactImpact;
 
 /// Something done with a law of a concrete type (the solver monomorphises on it).
 pub trait LawVisitor {
@@ -20,57 +16,86 @@ pub trait LawVisitor {
     fn visit<L: ForceLaw>(self, law: &L) -> Self::Output;
 }
 
-/// The law files behind the table's [`Kind`]s: adding a law with its own equations adds one line
-/// here (and one file, and one row of [`super::table::LAWS`]).
-macro_rules! any_law {
-    ($($variant:ident($ty:ty)),* $(,)?) => {
-        /// Any law of the table.
+/// The law table: rows `Variant = file::Type::builder, LawSpec { … };`, `file` a module of
+/// `force`. Each row becomes an entry of `LAWS` and a variant `AnyLaw::Variant(file::Type)`; its
+/// builder, a
+/// `fn(ForceModel, &ImpactParams, Option<f64>) -> Result<Type, ModelError>`, makes the law from a
+/// scene with its damping given or, for `None`, from the law's own rule.
+macro_rules! law_table {
+    ($($(#[$doc:meta])* $variant:ident = $file:ident::$ty:ident::$build:ident, $spec:expr;)*) => {
+        /// Every law, in table order: what `--model`, scene files, sweeps and the explorer list.
+        pub const LAWS: &[$crate::model::force::table::LawSpec] = &[$($spec),*];
+
+        /// Any law of the table: one variant per row, holding the law type of its file.
         #[derive(Debug, Clone, Copy, PartialEq)]
         pub enum AnyLaw {
-            $($variant($ty)),*
+            $($(#[$doc])* $variant($crate::model::force::$file::$ty)),*
         }
 
         impl AnyLaw {
+            /// The law of `model`'s row from `params`, by the row's builder.
+            pub(super) fn build_row(
+                model: $crate::model::force::ForceModel,
+                params: &$crate::model::force::ImpactParams,
+                damping: Option<f64>,
+            ) -> Result<Self, $crate::model::error::ModelError> {
+                /// Row indices, in declaration order.
+                enum Row {
+                    $($variant),*
+                }
+                $(
+                    if model.index() == Row::$variant as usize {
+                        return Ok(AnyLaw::$variant(
+                            $crate::model::force::$file::$ty::$build(model, params, damping)?,
+                        ));
+                    }
+                )*
+                Err($crate::model::error::ModelError::OutOfDomain {
+                    formula: "law table",
+                    detail: format!("no row for model index {}", model.index()),
+                })
+            }
+
             /// Calls `visitor` with the concrete law.
-            pub fn visit<V: LawVisitor>(&self, visitor: V) -> V::Output {
+            pub fn visit<V: $crate::model::force::any::LawVisitor>(&self, visitor: V) -> V::Output {
                 match self {
                     $(AnyLaw::$variant(law) => visitor.visit(law)),*
                 }
             }
         }
 
-        impl ForceLaw for AnyLaw {
-            fn model(&self) -> ForceModel {
+        impl $crate::model::force::law::ForceLaw for AnyLaw {
+            fn model(&self) -> $crate::model::force::ForceModel {
                 match self {
                     $(AnyLaw::$variant(l) => l.model()),*
                 }
             }
 
-            fn params(&self) -> &ImpactParams {
+            fn params(&self) -> &$crate::model::force::ImpactParams {
                 match self {
                     $(AnyLaw::$variant(l) => l.params()),*
                 }
             }
 
-            fn phase_force(&self, x: f64, v: f64, phase: Phase) -> f64 {
+            fn phase_force(&self, x: f64, v: f64, phase: $crate::model::force::law::Phase) -> f64 {
                 match self {
                     $(AnyLaw::$variant(l) => l.phase_force(x, v, phase)),*
                 }
             }
 
-            fn dissipative_force(&self, x: f64, v: f64, phase: Phase) -> f64 {
+            fn dissipative_force(&self, x: f64, v: f64, phase: $crate::model::force::law::Phase) -> f64 {
                 match self {
                     $(AnyLaw::$variant(l) => l.dissipative_force(x, v, phase)),*
                 }
             }
 
-            fn partials(&self, x: f64, v: f64, phase: Phase) -> (f64, f64) {
+            fn partials(&self, x: f64, v: f64, phase: $crate::model::force::law::Phase) -> (f64, f64) {
                 match self {
                     $(AnyLaw::$variant(l) => l.partials(x, v, phase)),*
                 }
             }
 
-            fn contact_end(&self) -> ContactEnd {
+            fn contact_end(&self) -> $crate::model::force::law::ContactEnd {
                 match self {
                     $(AnyLaw::$variant(l) => l.contact_end()),*
                 }
@@ -94,7 +119,7 @@ macro_rules! any_law {
                 }
             }
 
-            fn exact(&self, rtol: f64) -> Option<ExactImpact> {
+            fn exact(&self, rtol: f64) -> Option<$crate::model::exact::ExactImpact> {
                 match self {
                     $(AnyLaw::$variant(l) => l.exact(rtol)),*
                 }
@@ -112,7 +137,7 @@ macro_rules! any_law {
                 }
             }
 
-            fn stored_energy(&self, x: f64, phase: Phase) -> f64 {
+            fn stored_energy(&self, x: f64, phase: $crate::model::force::law::Phase) -> f64 {
                 match self {
                     $(AnyLaw::$variant(l) => l.stored_energy(x, phase)),*
                 }
@@ -127,15 +152,7 @@ macro_rules! any_law {
     };
 }
 
-any_law! {
-    Elastic(Elastic),
-    DryFriction(DryFriction),
-    Proposed(Proposed),
-    Hysteresis(Hysteresis),
-    HertzViscous(HertzViscous),
-    KelvinVoigt(KelvinVoigt),
-    Thornton(Thornton),
-}
+pub(super) use law_table;
 
 /// C₁ of the Kuwabara–Kono restitution series e = 1 − C₁·ε + C₂·ε² − …, ε = A·(k/m)^{2/5}·v₀^{1/5}:
 /// 2·(2/5)·B(3/5, 3/2)·(5/4)^{3/5} = 1.1534489 (docs/physics.md §6.5; published as 1.15344).
@@ -161,7 +178,7 @@ impl AnyLaw {
     /// own rule, after validating them.
     pub fn new(model: ForceModel, params: &ImpactParams) -> Result<Self, ModelError> {
         params.validate()?;
-        Self::build(model, params, None)
+        Self::build_row(model, params, None)
     }
 
     /// The law `model` with its damping parameter set to `value` (χ, P, b, γ or c, SI) instead of
@@ -180,54 +197,7 @@ impl AnyLaw {
             });
         };
         require(param.symbol, value, "a finite number ≥ 0", |d| d >= 0.0)?;
-        Self::build(model, params, Some(value))
-    }
-
-    fn build(
-        model: ForceModel,
-        params: &ImpactParams,
-        damping: Option<f64>,
-    ) -> Result<Self, ModelError> {
-        let spec = model.spec();
-        let tension_allowed = spec.contact == ContactRule::TensionAllowed;
-        Ok(match spec.kind {
-            Kind::Elastic => AnyLaw::Elastic(Elastic::new(params)),
-            Kind::DryFriction => AnyLaw::DryFriction(match damping {
-                Some(p) => DryFriction::with_p(params, p),
-                None => DryFriction::new(params),
-            }),
-            Kind::Proposed => AnyLaw::Proposed(match damping {
-                Some(b) => Proposed::with_b(params, b),
-                None => Proposed::new(params),
-            }),
-            Kind::HuntCrossley(chi) => AnyLaw::Hysteresis(Hysteresis::with_chi(
-                model,
-                params,
-                damping.unwrap_or_else(|| chi(params.restitution)),
-            )),
-            Kind::HertzViscous => AnyLaw::HertzViscous(HertzViscous::new(
-                model,
-                params,
-                damping.unwrap_or_else(|| HertzViscous::default_gamma(params)),
-                tension_allowed,
-            )),
-            Kind::KuwabaraKono => AnyLaw::Proposed(Proposed::kuwabara_kono(
-                model,
-                params,
-                damping.unwrap_or_else(|| kuwabara_kono_a(params)),
-            )),
-            Kind::Thornton => AnyLaw::Thornton(Thornton::new(
-                model,
-                params,
-                damping.unwrap_or_else(|| Thornton::default_v_yield(params)),
-            )?),
-            Kind::KelvinVoigt => AnyLaw::KelvinVoigt(KelvinVoigt::new(
-                model,
-                params,
-                damping.unwrap_or_else(|| KelvinVoigt::default_c(params)),
-                tension_allowed,
-            )),
-        })
+        Self::build_row(model, params, Some(value))
     }
 
     /// The damping parameter in use, `None` for a law without one.

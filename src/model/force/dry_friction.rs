@@ -2,6 +2,7 @@
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{ForceModel, ImpactParams};
+use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, dry_friction::dry_friction};
 
 /// ½·(4/5)^{4/5} = 0.418256…, the constant eq 17 rounds to 0.418 (docs/physics.md §2).
@@ -30,6 +31,18 @@ impl DryFriction {
             Self::eq16(params)
         };
         Self::with_p(params, p)
+    }
+
+    /// The table's builder: P given, or from e by eq 16/17.
+    pub fn build(
+        _model: ForceModel,
+        params: &ImpactParams,
+        p: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        Ok(match p {
+            Some(p) => Self::with_p(params, p),
+            None => Self::new(params),
+        })
     }
 
     /// The law with an explicit friction coefficient P, N/m; x* = (P/k)^{1/(n−1)}.

@@ -2,6 +2,7 @@
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{ForceModel, ImpactParams};
+use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
 /// F = k·xⁿ (eq 1).
@@ -14,6 +15,15 @@ impl Elastic {
     /// The elastic law of validated `params`.
     pub fn new(params: &ImpactParams) -> Self {
         Elastic { params: *params }
+    }
+
+    /// The table's builder: no damping parameter to set.
+    pub fn build(
+        _model: ForceModel,
+        params: &ImpactParams,
+        _damping: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        Ok(Self::new(params))
     }
 }
 

@@ -2,7 +2,9 @@
 //! law of Chrono's SMC Hertz model, LIGGGHTS and LAMMPS), docs/physics.md §6.2.
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
+use super::table::ContactRule;
 use super::{ForceModel, ImpactParams};
+use crate::model::error::ModelError;
 use crate::model::exact::ExactImpact;
 
 /// F = k·xⁿ + γ·x^{(n−1)/2}·ẋ (x^{1/4} for spheres). Its damping ratio γ/(2√(n·m·k)) is the same at
@@ -30,6 +32,21 @@ impl HertzViscous {
             gamma,
             tension_allowed,
         }
+    }
+
+    /// The table's builder: γ given, or from e by the β-map; the row's contact rule says whether
+    /// tension is allowed.
+    pub fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        gamma: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        Ok(Self::new(
+            model,
+            params,
+            gamma.unwrap_or_else(|| Self::default_gamma(params)),
+            model.spec().contact == ContactRule::TensionAllowed,
+        ))
     }
 
     /// γ = −2√(5/6)·β·√(n·m·k), β = ln e/√(ln²e + π²): Tsuji's map as Chrono writes it

@@ -47,6 +47,25 @@ impl Hysteresis {
         }
     }
 
+    /// The table's builder: χ given, or from e by the row's χ(e).
+    pub fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        chi: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        let chi = match (chi, model.spec().chi) {
+            (Some(chi), _) => chi,
+            (None, Some(rule)) => rule(params.restitution),
+            (None, None) => {
+                return Err(ModelError::OutOfDomain {
+                    formula: "law table",
+                    detail: format!("{model} is built as a Hunt–Crossley law but has no χ(e)"),
+                });
+            }
+        };
+        Ok(Self::with_chi(model, params, chi))
+    }
+
     /// Lankarani–Nikravesh: α = 3(1 − e²)/(4·v₀) (eq 20).
     pub fn lankarani_nikravesh(params: &ImpactParams) -> Self {
         let e = params.restitution;

@@ -3,7 +3,9 @@
 use std::f64::consts::PI;
 
 use super::law::{ContactEnd, ForceLaw, Phase, signed_pow_n};
+use super::table::ContactRule;
 use super::{ForceModel, ImpactParams};
+use crate::model::error::ModelError;
 use crate::model::exact::ExactImpact;
 
 /// F = K·x + c·ẋ with K = m·(π/t_c)², t_c the Hertz contact time of the scene (eq 7), so that the
@@ -35,6 +37,21 @@ impl KelvinVoigt {
             c,
             tension_allowed,
         }
+    }
+
+    /// The table's builder: c given, or from e through ζ; the row's contact rule says whether
+    /// tension is allowed.
+    pub fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        c: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        Ok(Self::new(
+            model,
+            params,
+            c.unwrap_or_else(|| Self::default_c(params)),
+            model.spec().contact == ContactRule::TensionAllowed,
+        ))
     }
 
     /// K = m·(π/t_c)², t_c of eq 7 (docs/physics.md §6.3), N/m.

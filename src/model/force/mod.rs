@@ -10,8 +10,10 @@ use super::error::{ModelError, require, require_positive};
 use super::power_law::PowerLaw;
 
 pub mod any;
+pub mod contact;
 pub mod dry_friction;
 pub mod elastic;
+pub mod hertz_line_exact;
 pub mod hertz_viscous;
 pub mod hysteresis;
 pub mod kelvin_voigt;
@@ -21,6 +23,7 @@ pub mod table;
 pub mod thornton;
 
 pub use any::{AnyLaw, Damping, LawVisitor};
+pub use contact::{Contact, PointContact};
 pub use law::{ContactEnd, ForceLaw, Phase};
 pub use table::{ContactRule, DampingParam, Family, LAW_COUNT, LAWS, LawSpec};
 
@@ -39,6 +42,10 @@ pub struct ImpactParams {
     pub restitution: f64,
     /// Plastic indentation x_pl ≥ 0, m (eq 18); 0 makes the proposed model elastic.
     pub plastic_indentation: f64,
+    /// The bodies, for the laws that need more than k, n and m (Thornton's yield pressure, the
+    /// exact line-contact law's eq 13/14); [`Contact::Unspecified`] without a scene.
+    #[serde(skip)]
+    pub contact: Contact,
 }
 
 impl ImpactParams {
@@ -58,6 +65,7 @@ impl ImpactParams {
             "a finite number ≥ 0",
             |x| x >= 0.0,
         )?;
+        self.contact.validate()?;
         let x_max = self.law.max_approach(self.mass, self.v0);
         let t_ref = x_max / self.v0;
         let f_max = self.law.force(x_max);

@@ -1,9 +1,10 @@
 //! The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18), b = k·x_pl/(v₀·e). The same law with
 //! b = k·A is the Kuwabara–Kono / Brilliantov viscoelastic sphere (docs/physics.md §6.5).
 
+use super::any::kuwabara_kono_a;
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
-use super::table::Kind;
 use super::{ForceModel, ImpactParams};
+use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
 /// F = xⁿ⁻¹·(k·x + b·ẋ) (eq 18). Contact ends where F returns to 0, i.e. at ẋ = −k·x/b, leaving a
@@ -13,6 +14,8 @@ pub struct Proposed {
     params: ImpactParams,
     model: ForceModel,
     b: f64,
+    /// b per unit of the row's damping parameter: 1 when it is b, k when it is Kuwabara–Kono's A.
+    per_unit: f64,
 }
 
 impl Proposed {
@@ -22,6 +25,7 @@ impl Proposed {
             params: *params,
             model: ForceModel::Proposed,
             b: params.law.k * params.plastic_indentation / (params.v0 * params.restitution),
+            per_unit: 1.0,
         }
     }
 
@@ -31,6 +35,7 @@ impl Proposed {
             params: *params,
             model: ForceModel::Proposed,
             b,
+            per_unit: 1.0,
         }
     }
 
@@ -41,7 +46,31 @@ impl Proposed {
             params: *params,
             model,
             b: params.law.k * a,
+            per_unit: params.law.k,
         }
+    }
+
+    /// The table's builder of the paper's row: b given, or from x_pl and e (eq 18).
+    pub fn build(
+        _model: ForceModel,
+        params: &ImpactParams,
+        b: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        Ok(match b {
+            Some(b) => Self::with_b(params, b),
+            None => Self::new(params),
+        })
+    }
+
+    /// The table's builder of the Kuwabara–Kono row: A given, or from e by the series' first term
+    /// at the scene's v₀ (docs/physics.md §6.5).
+    pub fn build_kuwabara_kono(
+        model: ForceModel,
+        params: &ImpactParams,
+        a: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        let a = a.unwrap_or_else(|| kuwabara_kono_a(params));
+        Ok(Self::kuwabara_kono(model, params, a))
     }
 
     /// The damping factor b, N·s/mⁿ.
@@ -104,10 +133,7 @@ impl ForceLaw for Proposed {
 
     /// b, or A = b/k for the Kuwabara–Kono row.
     fn damping_value(&self) -> Option<f64> {
-        Some(match self.model.spec().kind {
-            Kind::KuwabaraKono => self.b / self.params.law.k,
-            _ => self.b,
-        })
+        Some(self.b / self.per_unit)
     }
 
     /// Only the elastic limit b = 0 has a closed form.

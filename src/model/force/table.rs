@@ -1,9 +1,13 @@
 //! The table of contact-force laws: the one place a law is declared (docs/physics.md §6).
 //!
 //! Everything that lists laws — `--model`, scene files, sweeps, the explorer's panes and arrays —
-//! iterates [`LAWS`] through [`super::ForceModel`]. A Hunt–Crossley-type law is one row with its
-//! χ(e); a law with its own equations is one file implementing `ForceLaw`, one row, one [`Kind`]
-//! variant built in `AnyLaw::build` and one line of `any_law!` (both in `any.rs`).
+//! iterates [`LAWS`] through [`super::ForceModel`]. The one [`law_table!`] invocation below is
+//! both [`LAWS`] and the generator of [`AnyLaw`]: each row names its variant, the law type of its
+//! file and that type's builder (`Variant = file::Type::builder`), then its table data. A Hunt–Crossley-type law is one row with its
+//! χ(e); a law with its own equations is one file (a `ForceLaw` type and its builder, declared by
+//! its `mod` line in `force/mod.rs`) plus one row.
+
+use super::any::law_table;
 
 /// Which kind of dissipation a law models; the Models pane groups laws by it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -66,21 +70,6 @@ impl ContactRule {
     }
 }
 
-/// The equations behind a row: which law file builds it.
-#[derive(Debug, Clone, Copy)]
-pub enum Kind {
-    Elastic,
-    DryFriction,
-    Proposed,
-    /// F = k·xⁿ·(1 + χ(e)·ẋ/v₀) with this χ(e).
-    HuntCrossley(fn(f64) -> f64),
-    HertzViscous,
-    KelvinVoigt,
-    /// F = k·(xⁿ + A·xⁿ⁻¹·ẋ): the proposed model's equations with b = k·A.
-    KuwabaraKono,
-    Thornton,
-}
-
 /// One law of the table.
 #[derive(Debug, Clone, Copy)]
 pub struct LawSpec {
@@ -96,7 +85,8 @@ pub struct LawSpec {
     /// The damping parameter, `None` for a law without one.
     pub damping: Option<DampingParam>,
     pub contact: ContactRule,
-    pub kind: Kind,
+    /// χ(e) of a Hunt–Crossley-family row, F = k·xⁿ·(1 + χ(e)·ẋ/v₀); `None` for other laws.
+    pub chi: Option<fn(f64) -> f64>,
 }
 
 const CHI: DampingParam = DampingParam {
@@ -117,8 +107,9 @@ const KV_C: DampingParam = DampingParam {
     unit: "N·s/m",
 };
 
-/// Every law, grouped by family; the paper's five keep their ids and their relative order.
-pub const LAWS: &[LawSpec] = &[
+// Every law, grouped by family; the paper's five keep their ids and their relative order.
+law_table! {
+    Elastic = elastic::Elastic::build,
     LawSpec {
         id: "quasistatic",
         label: "Hertz, elastic (eq 1)",
@@ -127,8 +118,20 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::Elastic,
         damping: None,
         contact: ContactRule::ApproachZero,
-        kind: Kind::Elastic,
-    },
+        chi: None,
+    };
+    HertzLineExact = hertz_line_exact::HertzLineExact::build,
+    LawSpec {
+        id: "hertz-line-exact",
+        label: "Hertz exact line (eq 13/14)",
+        short: "Hz line",
+        source: "eqs 13–14 inverted for F(x) (eq 1 on spheres); docs/physics.md §6.7",
+        family: Family::Elastic,
+        damping: None,
+        contact: ContactRule::ApproachZero,
+        chi: None,
+    };
+    DryFriction = dry_friction::DryFriction::build,
     LawSpec {
         id: "dry-friction",
         label: "dry friction (eq 15)",
@@ -141,8 +144,9 @@ pub const LAWS: &[LawSpec] = &[
             unit: "N/m",
         }),
         contact: ContactRule::ApproachZero,
-        kind: Kind::DryFriction,
-    },
+        chi: None,
+    };
+    Proposed = proposed::Proposed::build,
     LawSpec {
         id: "proposed",
         label: "proposed viscous (eq 18)",
@@ -155,8 +159,9 @@ pub const LAWS: &[LawSpec] = &[
             unit: "N·s/m^n",
         }),
         contact: ContactRule::ForceZero,
-        kind: Kind::Proposed,
-    },
+        chi: None,
+    };
+    HertzViscous = hertz_viscous::HertzViscous::build,
     LawSpec {
         id: "hertz-viscous",
         label: "Hertz–viscous F≥0",
@@ -165,8 +170,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::Viscous,
         damping: Some(GAMMA),
         contact: ContactRule::ForceZero,
-        kind: Kind::HertzViscous,
-    },
+        chi: None,
+    };
+    HertzViscousTension = hertz_viscous::HertzViscous::build,
     LawSpec {
         id: "hertz-viscous-tension",
         label: "Hertz–visc. tension",
@@ -175,8 +181,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::Viscous,
         damping: Some(GAMMA),
         contact: ContactRule::TensionAllowed,
-        kind: Kind::HertzViscous,
-    },
+        chi: None,
+    };
+    KelvinVoigt = kelvin_voigt::KelvinVoigt::build,
     LawSpec {
         id: "kelvin-voigt",
         label: "Kelvin–Voigt F≥0",
@@ -185,8 +192,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::Viscous,
         damping: Some(KV_C),
         contact: ContactRule::ForceZero,
-        kind: Kind::KelvinVoigt,
-    },
+        chi: None,
+    };
+    KelvinVoigtTension = kelvin_voigt::KelvinVoigt::build,
     LawSpec {
         id: "kelvin-voigt-tension",
         label: "Kelvin–Voigt tension",
@@ -195,8 +203,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::Viscous,
         damping: Some(KV_C),
         contact: ContactRule::TensionAllowed,
-        kind: Kind::KelvinVoigt,
-    },
+        chi: None,
+    };
+    KuwabaraKono = proposed::Proposed::build_kuwabara_kono,
     LawSpec {
         id: "kuwabara-kono",
         label: "Kuwabara–Kono",
@@ -209,8 +218,9 @@ pub const LAWS: &[LawSpec] = &[
             unit: "s",
         }),
         contact: ContactRule::ForceZero,
-        kind: Kind::KuwabaraKono,
-    },
+        chi: None,
+    };
+    Thornton = thornton::Thornton::build,
     LawSpec {
         id: "thornton",
         label: "Thornton 1997",
@@ -223,8 +233,9 @@ pub const LAWS: &[LawSpec] = &[
             unit: "m/s",
         }),
         contact: ContactRule::ForceZero,
-        kind: Kind::Thornton,
-    },
+        chi: None,
+    };
+    HuntCrossley = hysteresis::Hysteresis::build,
     LawSpec {
         id: "hunt-crossley",
         label: "Hunt–Crossley (eq 19)",
@@ -233,8 +244,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 1.5 * (1.0 - e)),
-    },
+        chi: Some(|e| 1.5 * (1.0 - e)),
+    };
+    LankaraniNikravesh = hysteresis::Hysteresis::build,
     LawSpec {
         id: "lankarani-nikravesh",
         label: "Lankarani–Nikravesh (eq 20)",
@@ -243,8 +255,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e)),
-    },
+        chi: Some(|e| 0.75 * (1.0 - e * e)),
+    };
+    HerbertMcWhannell = hysteresis::Hysteresis::build,
     LawSpec {
         id: "herbert-mcwhannell",
         label: "Herbert–McWhannell",
@@ -253,8 +266,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
-    },
+        chi: Some(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
+    };
+    LeeWang = hysteresis::Hysteresis::build,
     LawSpec {
         id: "lee-wang",
         label: "Lee–Wang",
@@ -263,8 +277,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e)),
-    },
+        chi: Some(|e| 0.75 * (1.0 - e)),
+    };
+    Gonthier = hysteresis::Hysteresis::build,
     LawSpec {
         id: "gonthier",
         label: "Gonthier et al.",
@@ -273,8 +288,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| (1.0 - e * e) / e),
-    },
+        chi: Some(|e| (1.0 - e * e) / e),
+    };
+    ZhiyingQishao = hysteresis::Hysteresis::build,
     LawSpec {
         id: "zhiying-qishao",
         label: "Zhiying–Qishao",
@@ -283,8 +299,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
-    },
+        chi: Some(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
+    };
+    Flores = hysteresis::Hysteresis::build,
     LawSpec {
         id: "flores",
         label: "Flores et al.",
@@ -293,8 +310,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 1.6 * (1.0 - e) / e),
-    },
+        chi: Some(|e| 1.6 * (1.0 - e) / e),
+    };
+    HuGuo = hysteresis::Hysteresis::build,
     LawSpec {
         id: "hu-guo",
         label: "Hu–Guo",
@@ -303,8 +321,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 1.5 * (1.0 - e) / e),
-    },
+        chi: Some(|e| 1.5 * (1.0 - e) / e),
+    };
+    GharibHurmuzlu = hysteresis::Hysteresis::build,
     LawSpec {
         id: "gharib-hurmuzlu",
         label: "Gharib–Hurmuzlu",
@@ -313,9 +332,9 @@ pub const LAWS: &[LawSpec] = &[
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
-        kind: Kind::HuntCrossley(|e| 1.0 / e - 1.0),
-    },
-];
+        chi: Some(|e| 1.0 / e - 1.0),
+    };
+}
 
 /// The number of laws: the size of every per-law array.
 pub const LAW_COUNT: usize = LAWS.len();

@@ -3,7 +3,7 @@
 //! radius, down to a residual indentation.
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
-use super::{ForceModel, ImpactParams};
+use super::{Contact, ForceModel, ImpactParams};
 use crate::model::error::ModelError;
 use crate::model::exact::ExactImpact;
 use crate::model::numeric::roots::brent;
@@ -38,10 +38,25 @@ pub fn thornton_restitution(q: f64) -> f64 {
         * (q / (q + 2.0 * root)).powf(0.25)
 }
 
+/// The refusal of a line contact, naming the cylinder body (docs/physics.md §6.6).
+fn line_contact_refused(bodies: &str) -> ModelError {
+    ModelError::OutOfDomain {
+        formula: "Thornton (1997) elastic–perfectly-plastic law",
+        detail: format!(
+            "{bodies}: the law's limiting pressure and enlarged unloading radius are Hertz's \
+             sphere geometry, and no line-contact counterpart is derived here; use a viscous law \
+             (proposed, hertz-viscous) for cylinders"
+        ),
+    }
+}
+
 impl Thornton {
     /// The law with yield velocity `v_yield`, m/s. Spheres only (n = 3/2): the enlarged unloading
-    /// radius is Hertz's sphere geometry, and no cylinder counterpart is published.
+    /// radius is Hertz's sphere geometry; a line contact is refused naming its cylinder.
     pub fn new(model: ForceModel, params: &ImpactParams, v_yield: f64) -> Result<Self, ModelError> {
+        if let Contact::Line { bodies, .. } = params.contact {
+            return Err(line_contact_refused(bodies));
+        }
         if params.law.n != 1.5 {
             return Err(ModelError::OutOfDomain {
                 formula: "Thornton (1997) elastic–perfectly-plastic law",
@@ -92,13 +107,50 @@ impl Thornton {
         })
     }
 
-    /// v_y such that Thornton's e(V) at the scene's v₀ is the scene's e (docs/physics.md §6.6).
-    pub fn default_v_yield(params: &ImpactParams) -> f64 {
-        let e = params.restitution;
+    /// The table's builder: v_y given, or from the material ([`Thornton::default_v_yield`]).
+    pub fn build(
+        model: ForceModel,
+        params: &ImpactParams,
+        v_yield: Option<f64>,
+    ) -> Result<Self, ModelError> {
+        let v_yield = match v_yield {
+            Some(v_yield) => v_yield,
+            None => Self::default_v_yield(params)?,
+        };
+        Self::new(model, params, v_yield)
+    }
+
+    /// Thornton's V_y from the material: the impact speed at which the Hertz pressure p₀ first
+    /// reaches p_y, i.e. x_y = R·(π·p_y/(2E*))² (p₀ = (2E*/π)·√(x/R)) and ½mV_y² = k·x_y^{5/2}/(5/2)
+    /// (Thornton 1997; his V_y = 1.56·(p_y⁵/(E*⁴ρ))^{1/2} for a sphere on a plane), docs/physics.md
+    /// §6.6. With p_y = 1.1·σ_y it is the paper's yield-onset speed v₀y.
+    pub fn default_v_yield(params: &ImpactParams) -> Result<f64, ModelError> {
+        let point = match params.contact {
+            Contact::Point(point) => point,
+            Contact::Line { bodies, .. } => return Err(line_contact_refused(bodies)),
+            Contact::Unspecified => {
+                return Err(ModelError::OutOfDomain {
+                    formula: "Thornton (1997) elastic–perfectly-plastic law",
+                    detail: "its yield velocity comes from the yield stress and elastic constants \
+                             of the bodies, and these parameters carry none (built without a \
+                             scene); give v_y explicitly"
+                        .into(),
+                });
+            }
+        };
+        let x_yield = point.radius
+            * (std::f64::consts::PI * point.yield_pressure / (2.0 * point.modulus)).powi(2);
+        Ok(params
+            .law
+            .velocity_for_force(params.mass, params.law.force(x_yield)))
+    }
+
+    /// The v_y at which Thornton's e(V) at `v0` is `e` (calibration, docs/physics.md §6.4).
+    pub fn v_yield_for_restitution(e: f64, v0: f64) -> f64 {
         if e >= 1.0 {
-            return params.v0;
+            return v0;
         }
-        brent(|q| thornton_restitution(q) - e, 1e-12, 1.0).unwrap_or(1.0) * params.v0
+        brent(|q| thornton_restitution(q) - e, 1e-12, 1.0).unwrap_or(1.0) * v0
     }
 
     /// The yield velocity v_y, m/s.

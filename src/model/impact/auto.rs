@@ -217,6 +217,7 @@ mod tests {
             v0: 1.0,
             restitution: 1.0,
             plastic_indentation: 0.0,
+            contact: crate::model::force::Contact::Unspecified,
         };
         let sc = Scales::new(&params);
         // Scaled: X'' + ĉ·X' + X = −ĉ·v̂_s with ĉ = c·v₀/(k·x_e), v̂_s = v_s/v₀.

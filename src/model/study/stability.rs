@@ -402,6 +402,7 @@ mod tests {
             v0: 0.5,
             restitution: 1.0,
             plastic_indentation: 0.0,
+            contact: crate::model::force::Contact::Unspecified,
         };
         let dt = critical_step(Method::Verlet, &params).unwrap();
         assert!((dt - 2.0 * (2.0f64 / 8e6).sqrt()).abs() < 1e-15);
