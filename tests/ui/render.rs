@@ -855,3 +855,37 @@ fn hidden_charts_are_announced_with_their_key() {
         );
     }
 }
+
+/// At 80 columns the stability view's step line and the sweep form shorten their wording rather
+/// than cut a number or a word at the pane's edge.
+#[test]
+fn narrow_study_headers_shorten_instead_of_cutting() {
+    let mut app = app_on(Tab::named("stability").unwrap());
+    update(&mut app, Action::Resize(80, 24));
+    let screen = text(render(&app, 80, 24).backend().buffer());
+    let line = screen
+        .lines()
+        .find(|l| l.contains("h·ω_max ="))
+        .unwrap_or_else(|| panic!("no step line:\n{screen}"));
+    let after = line.split("h·ω_max = ").nth(1).unwrap().trim_end();
+    let ratio = after.split_whitespace().next().unwrap();
+    assert!(ratio.parse::<f64>().is_ok(), "{line}");
+    if after.contains("ω_max") {
+        assert!(
+            after.contains("rad/s"),
+            "ω_max is whole with its unit: {line}"
+        );
+    }
+    update(&mut app, Action::Tab(Tab::named("sweep").unwrap()));
+    app.sweep.output = hertz_tui::ui::views::sweep::settings::SweepOutput::EOut;
+    let screen = text(render(&app, 80, 24).backend().buffer());
+    let output = screen
+        .lines()
+        .find(|l| l.contains(" output "))
+        .unwrap_or_else(|| panic!("no output row:\n{screen}"));
+    let value = output.split(" output ").nth(1).unwrap().trim_start();
+    assert!(
+        value.starts_with("e_out realized restitution ") || value.starts_with("e_out  "),
+        "the output whole or its symbol alone: {output}"
+    );
+}

@@ -118,14 +118,19 @@ fn header(frame: &mut Frame, area: Rect, app: &App, data: Option<&StabilityData>
         theme,
     );
     if let Some(d) = data.filter(|_| editor.is_none()) {
-        first.spans.push(span(
-            format!(
-                "  ·  h·ω_max = {}  with ω_max = {} rad/s at x_max",
-                sig(d.step_ratio, 3),
-                sig(d.omega_max, 3)
-            ),
-            theme.style(Role::Normal),
-        ));
+        // The longest wording that fits the row: a number is never cut.
+        let ratio = sig(d.step_ratio, 3);
+        let omega = sig(d.omega_max, 3);
+        let room = usize::from(area.width).saturating_sub(first.width());
+        let text = [
+            format!("  ·  h·ω_max = {ratio}  with ω_max = {omega} rad/s at x_max"),
+            format!("  ·  h·ω_max = {ratio}  (ω_max {omega} rad/s)"),
+            format!("  ·  h·ω_max = {ratio}"),
+        ]
+        .into_iter()
+        .find(|t| t.chars().count() <= room)
+        .unwrap_or_default();
+        first.spans.push(span(text, theme.style(Role::Normal)));
     }
     let second = match editor.and_then(|e| e.error.as_ref()) {
         Some(error) => Line::from(span(format!("  ✗ {error}"), theme.style(Role::Error))),

@@ -60,7 +60,12 @@ fn form(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, roomy: bool) {
                 width: inner.width,
                 label: field.label(),
                 label_width: LABEL_WIDTH,
-                value: app.sweep.display(field, scene, max_points),
+                value: app.sweep.display_within(
+                    field,
+                    scene,
+                    max_points,
+                    usize::from(inner.width).saturating_sub(LABEL_WIDTH + 1),
+                ),
                 editor: editor.filter(|e| e.target == EditTarget::Sweep(field)),
                 under_cursor: app.sweep_cursor == field && editor.is_none(),
             },

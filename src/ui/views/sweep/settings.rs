@@ -302,6 +302,26 @@ impl SweepSettings {
         }
     }
 
+    /// [`Self::display`], or where it is wider than `width` columns a shorter form that keeps
+    /// the value whole: the output's symbol alone, the count of points alone.
+    pub fn display_within(
+        &self,
+        field: SweepField,
+        scene: &Scene,
+        max_points: usize,
+        width: usize,
+    ) -> String {
+        let full = self.display(field, scene, max_points);
+        if full.chars().count() <= width {
+            return full;
+        }
+        match field {
+            SweepField::Output => self.output.symbol().to_string(),
+            SweepField::Points => self.effective_points(max_points).to_string(),
+            _ => full,
+        }
+    }
+
     /// The text an edit starts from.
     pub fn edit_text(&self, field: SweepField, scene: &Scene) -> String {
         let unit = key_unit(self.key);
@@ -512,6 +532,14 @@ mod tests {
         assert_eq!(s.points, Some(150));
         s.apply(SweepField::Points, "auto", &scene).unwrap();
         assert_eq!(s.display(SweepField::Points, &scene, 300), "auto (300)");
+        assert_eq!(s.display_within(SweepField::Points, &scene, 300, 10), "auto (300)");
+        assert_eq!(s.display_within(SweepField::Points, &scene, 300, 9), "300");
+        s.output = SweepOutput::EOut;
+        assert_eq!(
+            s.display_within(SweepField::Output, &scene, 300, 26),
+            "e_out realized restitution"
+        );
+        assert_eq!(s.display_within(SweepField::Output, &scene, 300, 25), "e_out");
         assert!(s.nudge(SweepField::Scale, Nudge::Up, &scene, 300));
         assert_eq!(s.display(SweepField::Scale, &scene, 300), "linear");
     }
