@@ -1,4 +1,4 @@
-//! Everything that can happen to the app: the vocabulary of [`update`](super::app::update).
+//! Everything that can happen to the app: the vocabulary of [`update`](super::update::update).
 
 use tui_input::InputRequest;
 

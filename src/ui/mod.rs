@@ -5,7 +5,7 @@
 //! and the status line. Each tab is a folder of [`views`] (its keys, panes and charts) registered
 //! in [`views::VIEWS`]; the panes they share are in [`widgets`], the looks in [`style`].
 //! [`worker`] solves off the UI thread and [`study_worker`] computes the [`studies`] of the study
-//! views on a thread of its own; [`runtime`] ties them to the terminal. The UI holds no physics:
+//! views on a thread of its own; `runtime` ties them to the terminal. The UI holds no physics:
 //! every number comes from `crate::model`.
 
 pub mod action;

@@ -73,3 +73,30 @@ fn every_row_of_the_models_pane_is_named_in_one_form() {
         }
     }
 }
+
+/// With calibration on, the pane's title at 80 columns still leaves a rule cell before the
+/// results pane's title, and says that the laws are calibrated.
+#[test]
+fn the_calibrated_title_does_not_run_into_the_results_title() {
+    let mut app = app();
+    update(&mut app, Action::ToggleCalibration);
+    for width in [80, 120, 160] {
+        let height = if width == 80 { 24 } else { 40 };
+        let terminal = render(&app, width, height);
+        let rows: Vec<String> = terminal
+            .backend()
+            .buffer()
+            .content
+            .chunks(usize::from(width))
+            .map(|row| row.iter().map(|c| c.symbol()).collect())
+            .collect();
+        let title = rows
+            .iter()
+            .find(|r| r.contains("Models · ✓ fits"))
+            .unwrap_or_else(|| panic!("no models title at {width}"));
+        assert!(title.contains("calibrated"), "{width}: {title}");
+        if width == 80 {
+            assert!(title.contains("─Results"), "{width}: {title}");
+        }
+    }
+}

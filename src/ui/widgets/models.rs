@@ -95,10 +95,11 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .map(|v| recommend(&v.scene, &v.quasistatic).fits)
         .unwrap_or_default();
     let rows = rows();
-    let title = if app.calibrate {
-        "Models · ✓ fits · calibrated to e"
-    } else {
-        "Models · ✓ fits the regime"
+    // The title keeps a rule cell before the next pane's title at 80 columns.
+    let title = match (app.calibrate, area.width > 34) {
+        (true, true) => "Models · ✓ fits · calibrated to e",
+        (true, false) => "Models · ✓ fits · calibrated",
+        (false, _) => "Models · ✓ fits the regime",
     };
     let block = pane(title, theme, roomy);
     let inner = block.inner(area);
