@@ -56,8 +56,11 @@ fn any_method() -> impl Strategy<Value = MethodChoice> {
 fn energy_tolerance(method: MethodUsed, rtol: f64) -> Option<f64> {
     match method {
         MethodUsed::Exact => Some(0.0),
-        MethodUsed::Integrator(Method::Dopri5 | Method::Dop853) => Some(1000.0 * rtol),
-        MethodUsed::Integrator(Method::Radau5) => Some(3000.0 * rtol),
+        // A quadrature on the dense output, an order below the steps: up to ~1.1e3·rtol measured
+        // on long DOP853 steps (see a_long_step_residual_is_the_dense_outputs_not_the_solutions).
+        MethodUsed::Integrator(Method::Dopri5 | Method::Dop853 | Method::Radau5) => {
+            Some(3000.0 * rtol)
+        }
         MethodUsed::Integrator(_) => None,
     }
 }
@@ -264,4 +267,38 @@ fn extreme_but_valid_scenes_do_not_break_the_solver() {
             }
         }
     }
+}
+
+/// A scene proptest found: Kelvin–Voigt with tension on DOP853 at rtol 1.3e-11 takes 17 long
+/// steps, and the residual — a quadrature of the dissipated power on the dense output, whose
+/// interpolant is an order below the steps — reads 1.05e3·rtol while e_out itself is within
+/// 0.1·rtol. The residual's bound is 3000·rtol on every adaptive method for that reason.
+#[test]
+fn a_long_step_residual_is_the_dense_outputs_not_the_solutions() {
+    let p = ImpactParams {
+        mass: 1.0,
+        law: PowerLaw { k: 1e8, n: 1.5 },
+        v0: 1.0,
+        restitution: 0.9115671791864951,
+        plastic_indentation: 0.0,
+        contact: hertz_tui::model::force::Contact::Unspecified,
+    };
+    let rtol = 10f64.powf(-10.877883245213095);
+    let opts = SolveOptions {
+        method: MethodChoice::Integrator(Method::Dop853),
+        rtol,
+        atol: Some(rtol),
+        ..SolveOptions::default()
+    };
+    let model = ForceModel::with_id("kelvin-voigt-tension");
+    let s = solve_impact(model, &p, &opts).unwrap().summary;
+    assert!(
+        (s.e_out / p.restitution - 1.0).abs() < 100.0 * rtol,
+        "{s:?}"
+    );
+    assert!(
+        s.energy_residual > 1000.0 * rtol,
+        "the case still shows it: {s:?}"
+    );
+    check(model, &p, &opts, solve_impact(model, &p, &opts));
 }
