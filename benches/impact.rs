@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use hertz_tui::model::PowerLaw;
-use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::force::{Contact, ForceModel, ImpactParams, PointContact};
 use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_impact};
 use hertz_tui::model::ode::Method;
 
@@ -22,7 +22,12 @@ fn fig5() -> ImpactParams {
         v0: 0.3,
         restitution: 0.6,
         plastic_indentation: 2.3e-6,
-        contact: hertz_tui::model::force::Contact::Unspecified,
+        // Steel on steel (Table 1): what Thornton's yield velocity and the exact contact law need.
+        contact: Contact::Point(PointContact {
+            yield_pressure: 1.1 * 780e6,
+            modulus: 1.0 / 9.1e-12,
+            radius: 0.01,
+        }),
     }
 }
 

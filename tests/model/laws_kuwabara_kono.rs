@@ -1,5 +1,6 @@
 //! Kuwabara–Kono (docs/physics.md §6.5): the small-A restitution series of Schwager & Pöschel
-//! (C₁ = 1.15344, C₂ = 0.79826) against the solver at tight tolerance, and e falling with v₀.
+//! (C₁ = 1.15344, C₂ = 0.79826) against the solver at tight tolerance, for both contact-end rules,
+//! and e falling with v₀.
 
 use hertz_tui::model::force::any::KUWABARA_KONO_C1;
 use hertz_tui::model::force::{ForceModel, ImpactParams};
@@ -65,4 +66,37 @@ fn with_a_fixed_a_restitution_falls_as_v0_grows() {
     // The default A comes from the series' first term, so at the scene's v₀ e lands near 0.6
     // (the higher terms raise it), and calibration makes it exact.
     assert!(es[2] > 0.6 && es[2] < 0.75, "{}", es[2]);
+}
+
+#[test]
+fn with_tension_allowed_the_series_holds_to_third_order() {
+    // Ending contact at x = 0, the rule the series is derived for, leaves no O(ε^{5/2}) end
+    // effect: the remainder beyond two terms is a clean third-order term, −0.52·ε³ (measured),
+    // so halving ε divides it by 8 — which C₁ = 1.1534489 and C₂ = 0.79826 must both be right
+    // for (an error δ in C₂ would leave δ·ε², which halving divides by 4). It is also far below
+    // the clamped row's remainder, the same at every v₀ for the same ε.
+    let kk_tension = ForceModel::with_id("kuwabara-kono-tension");
+    let remainder = |model: ForceModel, p: &ImpactParams, eps: f64| {
+        let e = e_out_with(model, p, eps / epsilon(p, 1.0), 1e-13);
+        e - (1.0 - KUWABARA_KONO_C1 * eps + C2 * eps * eps)
+    };
+    for v0 in [0.01, 0.3, 3.0] {
+        let p = sphere(v0);
+        let r: Vec<f64> = [0.0025, 0.005, 0.01, 0.02]
+            .iter()
+            .map(|&eps| remainder(kk_tension, &p, eps))
+            .collect();
+        for w in r.windows(2) {
+            let ratio = w[1] / w[0];
+            assert!((ratio - 8.0).abs() < 0.2, "v₀ {v0}: {r:?}");
+        }
+        let c3 = r[2] / 0.01f64.powi(3);
+        assert!((c3 + 0.52).abs() < 0.01, "v₀ {v0}: {c3}");
+        let clamped = remainder(KK, &p, 0.01);
+        assert!(
+            clamped.abs() > 3.0 * r[2].abs(),
+            "v₀ {v0}: {clamped} vs {}",
+            r[2]
+        );
+    }
 }

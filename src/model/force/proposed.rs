@@ -3,12 +3,14 @@
 
 use super::any::kuwabara_kono_a;
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
+use super::table::ContactRule;
 use super::{ForceModel, ImpactParams};
 use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
 /// F = xⁿ⁻¹·(k·x + b·ẋ) (eq 18). Contact ends where F returns to 0, i.e. at ẋ = −k·x/b, leaving a
-/// residual indentation; x_pl = 0 makes b = 0, the elastic law.
+/// residual indentation; x_pl = 0 makes b = 0, the elastic law. A Kuwabara–Kono row may instead
+/// let the force pull until x = 0 (the rule its restitution series assumes).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Proposed {
     params: ImpactParams,
@@ -16,6 +18,8 @@ pub struct Proposed {
     b: f64,
     /// b per unit of the row's damping parameter: 1 when it is b, k when it is Kuwabara–Kono's A.
     per_unit: f64,
+    /// Contact ends at x = 0 with the force allowed to pull, not where F returns to 0.
+    tension_allowed: bool,
 }
 
 impl Proposed {
@@ -26,6 +30,7 @@ impl Proposed {
             model: ForceModel::Proposed,
             b: params.law.k * params.plastic_indentation / (params.v0 * params.restitution),
             per_unit: 1.0,
+            tension_allowed: false,
         }
     }
 
@@ -36,6 +41,7 @@ impl Proposed {
             model: ForceModel::Proposed,
             b,
             per_unit: 1.0,
+            tension_allowed: false,
         }
     }
 
@@ -47,6 +53,7 @@ impl Proposed {
             model,
             b: params.law.k * a,
             per_unit: params.law.k,
+            tension_allowed: false,
         }
     }
 
@@ -62,15 +69,19 @@ impl Proposed {
         })
     }
 
-    /// The table's builder of the Kuwabara–Kono row: A given, or from e by the series' first term
-    /// at the scene's v₀ (docs/physics.md §6.5).
+    /// The table's builder of the Kuwabara–Kono rows: A given, or from e by the series' first term
+    /// at the scene's v₀ (docs/physics.md §6.5); the row's contact rule says whether tension is
+    /// allowed.
     pub fn build_kuwabara_kono(
         model: ForceModel,
         params: &ImpactParams,
         a: Option<f64>,
     ) -> Result<Self, ModelError> {
         let a = a.unwrap_or_else(|| kuwabara_kono_a(params));
-        Ok(Self::kuwabara_kono(model, params, a))
+        Ok(Proposed {
+            tension_allowed: model.spec().contact == ContactRule::TensionAllowed,
+            ..Self::kuwabara_kono(model, params, a)
+        })
     }
 
     /// The damping factor b, N·s/mⁿ.
@@ -110,7 +121,7 @@ impl ForceLaw for Proposed {
     }
 
     fn contact_end(&self) -> ContactEnd {
-        if self.b > 0.0 {
+        if self.b > 0.0 && !self.tension_allowed {
             ContactEnd::ForceZero
         } else {
             ContactEnd::ApproachZero
@@ -118,7 +129,7 @@ impl ForceLaw for Proposed {
     }
 
     fn may_turn_tensile(&self) -> bool {
-        self.b > 0.0
+        self.b > 0.0 && !self.tension_allowed
     }
 
     /// F/xⁿ⁻¹ = k·x + b·ẋ.

@@ -101,6 +101,12 @@ const GAMMA: DampingParam = DampingParam {
     unit: "N·s/m^((n+1)/2)",
 };
 
+const KK_A: DampingParam = DampingParam {
+    symbol: "A",
+    key: "a",
+    unit: "s",
+};
+
 const KV_C: DampingParam = DampingParam {
     symbol: "c",
     key: "c",
@@ -212,12 +218,19 @@ law_table! {
         short: "K–K",
         source: "Kuwabara & Kono, Jpn. J. Appl. Phys. 26 (1987); Brilliantov et al., Phys. Rev. E 53 (1996); docs/physics.md §6.5",
         family: Family::Viscous,
-        damping: Some(DampingParam {
-            symbol: "A",
-            key: "a",
-            unit: "s",
-        }),
+        damping: Some(KK_A),
         contact: ContactRule::ForceZero,
+        chi: None,
+    };
+    KuwabaraKonoTension = proposed::Proposed::build_kuwabara_kono,
+    LawSpec {
+        id: "kuwabara-kono-tension",
+        label: "Kuwabara–Kono tension",
+        short: "K–K±",
+        source: "Kuwabara & Kono, Jpn. J. Appl. Phys. 26 (1987); Brilliantov et al., Phys. Rev. E 53 (1996); docs/physics.md §6.5",
+        family: Family::Viscous,
+        damping: Some(KK_A),
+        contact: ContactRule::TensionAllowed,
         chi: None,
     };
     Thornton = thornton::Thornton::build,
