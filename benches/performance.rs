@@ -11,6 +11,7 @@ use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_impact};
 use hertz_tui::model::ode::Method;
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
 use hertz_tui::model::scene::Scene;
+use hertz_tui::model::scene_file::PAPER_MODELS;
 use hertz_tui::model::scene_key::SceneKey;
 use hertz_tui::model::study::sweep::{SweepSpec, sweep};
 use hertz_tui::ui::MarkerStyle;
@@ -60,12 +61,12 @@ fn sweeps(c: &mut Criterion) {
         to: 1.0,
         points: 1000,
         log: true,
-        models: ForceModel::ALL.to_vec(),
+        models: PAPER_MODELS.to_vec(),
         options: SolveOptions::default(),
     };
     let mut group = c.benchmark_group("sweep");
     group.sample_size(10);
-    group.bench_function("v0/1000-points/5-models", |b| {
+    group.bench_function("v0/1000-points/paper-models", |b| {
         b.iter(|| sweep(black_box(&scene), &spec))
     });
     group.finish();
@@ -81,32 +82,43 @@ fn solve_queued(app: &mut App) -> usize {
     solved
 }
 
-/// One full edit cycle of the explorer: v₀ nudged (by →/← on the v₀ field, alternately, so every
-/// edit changes the inputs), the five models recomputed, and every pane rendered into a 160×48
-/// TestBackend, all on this thread.
-fn edit_cycle(c: &mut Criterion) {
+/// The explorer on the default scene with the paper's five models checked (and no other),
+/// their first solves done.
+fn paper_models_app() -> App {
     let registry = Registry::builtin().expect("built-in presets load");
     let scene = registry
         .scene(DEFAULT_SCENE)
         .expect("default scene resolves");
     let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
     for model in ForceModel::ALL {
-        if !app.is_checked(model) {
+        if app.is_checked(model) != PAPER_MODELS.contains(&model) {
             app.focused = model;
             update(&mut app, Action::ToggleModel);
         }
     }
     app.focused = ForceModel::Proposed;
     solve_queued(&mut app);
+    app
+}
+
+/// One full edit cycle of the explorer: v₀ nudged (by →/← on the v₀ field, alternately, so every
+/// edit changes the inputs), the paper's five models recomputed, and every pane rendered into a
+/// 160×48 TestBackend, all on this thread.
+fn edit_cycle(c: &mut Criterion) {
+    let mut app = paper_models_app();
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).expect("a test backend");
     let mut up = true;
-    c.bench_function("edit/cycle/5-models/160x48", |b| {
+    c.bench_function("edit/cycle/paper-models/160x48", |b| {
         b.iter(|| {
             let direction = if up { Nudge::Up } else { Nudge::Down };
             up = !up;
             update(&mut app, Action::Nudge(direction));
             let solved = solve_queued(&mut app);
-            assert_eq!(solved, ForceModel::ALL.len(), "every model is recomputed");
+            assert_eq!(
+                solved,
+                PAPER_MODELS.len(),
+                "every checked model is recomputed"
+            );
             terminal
                 .draw(|frame| draw(frame, black_box(&app)))
                 .expect("drawing into a test backend");
@@ -116,21 +128,9 @@ fn edit_cycle(c: &mut Criterion) {
 
 /// The two halves of the edit cycle apart: the recompute alone, and the drawing alone.
 fn edit_parts(c: &mut Criterion) {
-    let registry = Registry::builtin().expect("built-in presets load");
-    let scene = registry
-        .scene(DEFAULT_SCENE)
-        .expect("default scene resolves");
-    let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
-    for model in ForceModel::ALL {
-        if !app.is_checked(model) {
-            app.focused = model;
-            update(&mut app, Action::ToggleModel);
-        }
-    }
-    app.focused = ForceModel::Proposed;
-    solve_queued(&mut app);
+    let mut app = paper_models_app();
     let mut up = true;
-    c.bench_function("edit/recompute/5-models", |b| {
+    c.bench_function("edit/recompute/paper-models", |b| {
         b.iter(|| {
             let direction = if up { Nudge::Up } else { Nudge::Down };
             up = !up;

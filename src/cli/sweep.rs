@@ -8,14 +8,13 @@ use super::json;
 use super::layout::columns;
 use super::solve::{load_scene, models_or_all};
 use super::units::engineering;
-use crate::format::csv;
+use crate::format::{csv, push_shortest_exp};
 use crate::model::ForceModel;
 use crate::model::Scene;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
 use crate::model::study::sweep::{SweepRow, SweepSpec, check, sweep, sweep_point};
 use rayon::prelude::*;
-use std::fmt::Write as _;
 use std::io::Write;
 
 /// The JSON document of a sweep.
@@ -151,8 +150,7 @@ fn csv_header(param: &str, models: &[ForceModel]) -> String {
 /// `value,` in Rust's `{:e}` (shortest round-trip), or just `,` for a missing number.
 fn push_number(out: &mut String, value: Option<f64>) {
     if let Some(v) = value {
-        // Writing into a String cannot fail.
-        let _ = write!(out, "{v:e}");
+        push_shortest_exp(out, v);
     }
     out.push(',');
 }

@@ -64,13 +64,20 @@ impl Rule {
     }
 }
 
-/// Nodes per rule for a relative accuracy `rtol` of the exact impacts' times: their smooth
-/// remainders converge geometrically, at ≥ 1.1 digits per node (tests
-/// `node_count_meets_the_tolerance` of `exact::hysteresis` and `exact::dry_friction`), so one
-/// node per digit plus three: 9 nodes at 1e-6, 15 at 1e-12.
-pub fn nodes_for(rtol: f64) -> usize {
-    let digits = -rtol.clamp(1e-16, 1e-2).log10();
-    digits.ceil() as usize + 3
+/// Nodes per rule for a relative accuracy `rtol` when the integrand's smooth part (what is left
+/// once the rule's weight is divided out) is analytic up to a singularity `gap` beyond one end of
+/// an interval of `length`: the error of an N-node Gauss rule falls like ρ^{−2N}, ρ = z + √(z² − 1)
+/// the Bernstein ellipse through z = 1 + 2·gap/length (Trefethen, *Approximation Theory and
+/// Approximation Practice*, ch. 19), plus one node of margin for the constant. At least 3, at
+/// most 40.
+pub fn nodes_for_gap(rtol: f64, gap: f64, length: f64) -> usize {
+    let z = 1.0 + 2.0 * gap / length;
+    let nodes = (rtol.clamp(1e-16, 1e-2).ln() / (-2.0 * (z + (z * z - 1.0).sqrt()).ln())).ceil();
+    if nodes.is_finite() {
+        (nodes as usize + 1).clamp(3, 40)
+    } else {
+        40
+    }
 }
 
 thread_local! {

@@ -10,12 +10,11 @@
 //! starting at u = 1 + a > 0 exits at x = 0 with α·v_out = 1 + W₀(−e^{−(1+C)}) < 1. Only an
 //! integrator's error can carry the state across it (the solver then ends contact there and says so).
 
-use super::gauss_jacobi::{nodes_for, singular_at_end, singular_at_start};
+use super::gauss_jacobi::{nodes_for_gap, singular_at_end, singular_at_start};
 use super::quadrature::tanh_sinh;
 use super::special::{unloading_root, y_minus_log1p};
 use super::{ExactImpact, elastic::elastic};
 use crate::model::force::ImpactParams;
-use crate::model::numeric::roots::brent;
 
 /// Below this exit value of w = 1 + αẋ the unloading time is integrated in x rather than in V:
 /// the force has then decayed by the factor w before the bodies reach x = 0, and they coast the
@@ -35,6 +34,10 @@ struct Integral {
     s: f64,
     /// w = 1 − s = 1 + a·V at the exit, kept separately: it is tiny for strong damping.
     w: f64,
+    /// 2/a², so that X^{n+1} = (2/a²)·D.
+    scale: f64,
+    /// −n/(n+1), the exponent of X^{n+1} in 1/Xⁿ.
+    exponent: f64,
 }
 
 impl Integral {
@@ -89,9 +92,32 @@ impl Integral {
         (2.0 * d / (self.a * self.a)).powf(self.n / (self.n + 1.0)) * u
     }
 
-    /// |dT/dV| = 2/((n+1)·f): the integrand of the contact time in V.
+    /// |dT/dV| = 2/((n+1)·f): the integrand of the contact time in V. Its power 1/Xⁿ is taken as
+    /// exp(−(n/(n+1))·ln X^{n+1}): a logarithm and an exponential cost half a `powf`, the dearest
+    /// step of a quadrature node, and lose no digit that matters (the exponent's rounding,
+    /// ≤ 1e-15 of a logarithm below 40, is the result's relative error).
     fn dt_dv(&self, d: f64, u: f64) -> f64 {
-        2.0 / ((self.n + 1.0) * self.force(d, u))
+        2.0 / (self.n + 1.0) * (self.exponent * (self.scale * d).ln()).exp() / u
+    }
+
+    /// The loading velocity V* of the force peak, the root of h(V) = (n+1)·D(V) − n·a·V. h falls
+    /// from (n+1)·C at V = 0 to −n·a at V = 1 and is concave (D'' = −a²/(1 + aV)²), so Newton
+    /// started right of the root stays right of it and descends monotonically onto it. The start,
+    /// min(1, (n+1)·C/(n·a)), is Newton's step from V = 0, which a concave h sends past the root.
+    fn peak_velocity(&self) -> Option<f64> {
+        let (n, a) = (self.n, self.a);
+        let h = |v: f64| (n + 1.0) * self.d_loading(v, 1.0 - v) - n * a * v;
+        let mut v = ((n + 1.0) * self.c / (n * a)).min(1.0);
+        for _ in 0..100 {
+            let slope = -(n + 1.0) * a * a * v / (1.0 + a * v) - n * a;
+            let step = -h(v) / slope;
+            // Rounding ends the descent: a step that would climb, or one below the last ulps.
+            if step >= 0.0 || -step <= 4.0 * f64::EPSILON * v {
+                break;
+            }
+            v += step;
+        }
+        (v.is_finite() && (0.0..=1.0).contains(&v)).then_some(v)
     }
 }
 
@@ -100,8 +126,12 @@ impl Integral {
 /// dt = m·dv/F to `rtol` (tanh-sinh in x when the damping nearly stops the bodies). α = 0 is the
 /// elastic impact. `None` if a number comes out non-finite.
 pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactImpact> {
-    let gauss = alpha * params.v0 <= GAUSS_JACOBI_MAX_DAMPING;
-    hysteresis_with(params, alpha, rtol, gauss.then(|| nodes_for(rtol)))
+    hysteresis_with(
+        params,
+        alpha,
+        rtol,
+        alpha * params.v0 <= GAUSS_JACOBI_MAX_DAMPING,
+    )
 }
 
 /// Above this a = α·v₀ the times go to tanh-sinh: 1 + aV vanishes at V = −1/a, so close to the
@@ -109,12 +139,15 @@ pub fn hysteresis(params: &ImpactParams, alpha: f64, rtol: f64) -> Option<ExactI
 /// a ≈ 5). The paper's laws have a ≤ 1.5 (Hunt–Crossley) and ≤ 0.75 (Lankarani–Nikravesh).
 const GAUSS_JACOBI_MAX_DAMPING: f64 = 4.0;
 
-/// [`hysteresis`] with `size` Gauss–Jacobi nodes per integral, or tanh-sinh when `None`.
+/// [`hysteresis`] by Gauss–Jacobi rules when `gauss`, else by tanh-sinh. Each rule gets the nodes
+/// its integrand needs for `rtol` ([`nodes_for_gap`]): its smooth part is analytic up to the
+/// nearest of V = 1 (first contact), V = −V_out (the exit, where D = 0) and V = −1/a (where
+/// 1 + aV = 0), less those the rule's weight absorbs.
 pub(crate) fn hysteresis_with(
     params: &ImpactParams,
     alpha: f64,
     rtol: f64,
-    size: Option<usize>,
+    gauss: bool,
 ) -> Option<ExactImpact> {
     let a = alpha * params.v0;
     if a <= 0.0 {
@@ -127,16 +160,19 @@ pub(crate) fn hysteresis_with(
     let f_ref = law.force(x_e);
     let c = y_minus_log1p(a);
     let (s, w) = unloading_root(c);
-    let hc = Integral { n, a, c, s, w };
+    let hc = Integral {
+        n,
+        a,
+        c,
+        s,
+        w,
+        scale: 2.0 / (a * a),
+        exponent: -n / (n + 1.0),
+    };
     let v_out = s / a;
 
-    // Peak force: dF/dV = 0 ⇔ h(V) = (n+1)·D(V) − n·a·V = 0; h(0) = (n+1)C > 0, h(1) = −na < 0,
-    // and h is decreasing, so the root is unique and lies on loading.
-    let v_peak = brent(
-        |v| (n + 1.0) * hc.d_loading(v, 1.0 - v) - n * a * v,
-        0.0,
-        1.0,
-    )?;
+    // Peak force: dF/dV = 0 ⇔ h(V) = (n+1)·D(V) − n·a·V = 0, a unique root on loading.
+    let v_peak = hc.peak_velocity()?;
     let d_peak = hc.d_loading(v_peak, 1.0 - v_peak);
 
     // Times, in T: [V*, 1] (start to peak), [0, V*] (peak to x_max), [−V_out, 0] (unloading).
@@ -147,40 +183,46 @@ pub(crate) fn hysteresis_with(
         let (d, u) = hc.d_unloading(v, from_exit);
         hc.dt_dv(d, u)
     };
-    let (to_peak, peak_to_x_max) = match size {
-        Some(size) => (
+    let (to_peak, peak_to_x_max) = if gauss {
+        (
             singular_at_end(
                 |v, _, top| loading_rate(v, top),
                 v_peak,
                 1.0,
                 singular,
-                size,
+                nodes_for_gap(rtol, v_peak + v_out, 1.0 - v_peak),
             ),
-            singular_at_end(|v, _, _| loading_rate(v, 1.0 - v), 0.0, v_peak, 0.0, size),
-        ),
-        None => (
+            singular_at_end(
+                |v, _, _| loading_rate(v, 1.0 - v),
+                0.0,
+                v_peak,
+                0.0,
+                nodes_for_gap(rtol, (1.0 - v_peak).min(v_out), v_peak),
+            ),
+        )
+    } else {
+        (
             tanh_sinh(|v, _, top| loading_rate(v, top), v_peak, 1.0, rtol),
             tanh_sinh(|v, _, _| loading_rate(v, 1.0 - v), 0.0, v_peak, rtol),
-        ),
+        )
     };
-    let unloading = if w >= STRONG_DAMPING {
-        match size {
-            Some(size) => singular_at_start(
-                |v, from_exit, _| unloading_rate(v, from_exit),
-                -v_out,
-                0.0,
-                singular,
-                size,
-            ),
-            None => tanh_sinh(
-                |v, from_exit, _| unloading_rate(v, from_exit),
-                -v_out,
-                0.0,
-                rtol,
-            ),
-        }
-    } else {
+    let unloading = if w < STRONG_DAMPING {
         hc.unloading_time_in_x(rtol)
+    } else if gauss {
+        singular_at_start(
+            |v, from_exit, _| unloading_rate(v, from_exit),
+            -v_out,
+            0.0,
+            singular,
+            nodes_for_gap(rtol, (w / a).min(1.0), v_out),
+        )
+    } else {
+        tanh_sinh(
+            |v, from_exit, _| unloading_rate(v, from_exit),
+            -v_out,
+            0.0,
+            rtol,
+        )
     };
 
     let exact = ExactImpact {
@@ -223,7 +265,7 @@ mod tests {
 
     #[test]
     fn node_count_meets_the_tolerance() {
-        // Gauss–Jacobi with nodes_for(rtol) nodes against tanh-sinh at 1e-15 (itself checked
+        // Gauss–Jacobi with the nodes nodes_for_gap gives against tanh-sinh at 1e-15 (itself checked
         // against mpmath above), over damping from e = 0.02 to 0.999 and n from 1 to 3/2.
         // Measured: ≥ 1.1 digits per node (the slowest, e = 0.1: 8e-10 at 8 nodes, 4e-14 at 12).
         for &(n, e) in &[
@@ -243,7 +285,7 @@ mod tests {
             // a = 1.5·(1 − e), and a = 4, the largest damping given to Gauss–Jacobi.
             for a in [1.5 * (1.0 - e), GAUSS_JACOBI_MAX_DAMPING] {
                 let alpha = a / p.v0;
-                let r = hysteresis_with(&p, alpha, 1e-15, None).unwrap();
+                let r = hysteresis_with(&p, alpha, 1e-15, false).unwrap();
                 for rtol in [1e-3, 1e-6, 1e-9, 1e-12, 1e-15] {
                     let g = hysteresis(&p, alpha, rtol).unwrap();
                     let err = rel(g.t_contact, r.t_contact)

@@ -1,8 +1,9 @@
 //! Exact solutions of the impact ODE where mathematics allows (docs/physics.md §3).
 //!
 //! Elastic Hertz in closed form; the Hunt–Crossley family through its separable energy integral and
-//! Lambert W; dry friction through its energy identity. Contact times come from tanh-sinh quadrature
-//! of dt = dx/v (or dt = m·dv/F), whose integrands are singular at the ends of contact.
+//! Lambert W; dry friction through its energy identity. Contact times come from Gauss–Jacobi
+//! quadrature of dt = dx/v (or dt = m·dv/F), whose weights absorb the integrands' singularities at
+//! the ends of contact (tanh-sinh where the damping nearly stops the bodies).
 
 pub mod dry_friction;
 pub mod elastic;

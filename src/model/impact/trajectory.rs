@@ -44,9 +44,25 @@ pub struct Trajectory {
     pending: Option<RunOptions>,
     /// End of contact, s.
     t_end: f64,
+    /// The summary's extrema, turned into marks when first asked for: a solve whose curves
+    /// nobody samples (a sweep's) pays for neither the forces at them nor their allocation.
+    extrema: Extrema,
     /// Extrema in time order: force peak, maximum compression (two samples where the force jumps
     /// there), end of contact.
-    marks: Vec<Sample>,
+    marks: OnceLock<Vec<Sample>>,
+}
+
+/// What the marks are made of: the summary's extrema and the state (x, ẋ) at the force peak.
+#[derive(Debug, Clone, Copy)]
+struct Extrema {
+    t_f_max: f64,
+    f_max: f64,
+    peak: (f64, f64),
+    t_x_max: f64,
+    x_max: f64,
+    t_contact: f64,
+    x_residual: f64,
+    v_out: f64,
 }
 
 impl Trajectory {
@@ -57,10 +73,12 @@ impl Trajectory {
         run: Run,
         summary: &ImpactSummary,
     ) -> Self {
-        let mut traj = Self::bare(law, scales, summary);
+        let mut traj = Self::bare(law, scales, summary, (0.0, 0.0));
         traj.curves = OnceLock::from(Curves::from(run));
-        let peak = traj.at(summary.t_f_max);
-        traj.mark(summary, (peak.x, peak.v));
+        // From the curves directly: `at` would fall back on the marks, not made yet.
+        if let Some((y, _)) = traj.state_at(summary.t_f_max.clamp(0.0, traj.t_end)) {
+            traj.extrema.peak = (y[0] * scales.x, y[1] * scales.v);
+        }
         traj
     }
 
@@ -73,26 +91,41 @@ impl Trajectory {
         summary: &ImpactSummary,
         peak: (f64, f64),
     ) -> Self {
-        let mut traj = Self::bare(law, scales, summary);
+        let mut traj = Self::bare(law, scales, summary, peak);
         traj.pending = Some(curve);
-        traj.mark(summary, peak);
         traj
     }
 
-    fn bare(law: AnyLaw, scales: Scales, summary: &ImpactSummary) -> Self {
+    fn bare(law: AnyLaw, scales: Scales, summary: &ImpactSummary, peak: (f64, f64)) -> Self {
         Trajectory {
             law,
             scales,
             curves: OnceLock::new(),
             pending: None,
             t_end: summary.t_contact,
-            marks: Vec::with_capacity(4),
+            extrema: Extrema {
+                t_f_max: summary.t_f_max,
+                f_max: summary.f_max,
+                peak,
+                t_x_max: summary.t_x_max,
+                x_max: summary.x_max,
+                t_contact: summary.t_contact,
+                x_residual: summary.x_residual,
+                v_out: summary.v_out,
+            },
+            marks: OnceLock::new(),
         }
     }
 
-    /// The extrema of `summary` as samples, in time order; `peak` is the state at the force peak.
-    fn mark(&mut self, summary: &ImpactSummary, (x_peak, v_peak): (f64, f64)) {
+    /// The extrema as samples, in time order, made on first use.
+    fn marks(&self) -> &[Sample] {
+        self.marks.get_or_init(|| self.make_marks())
+    }
+
+    fn make_marks(&self) -> Vec<Sample> {
         let law = self.law;
+        let summary = &self.extrema;
+        let (x_peak, v_peak) = summary.peak;
         let at_rest = |phase| Sample {
             t: summary.t_x_max,
             x: summary.x_max,
@@ -125,7 +158,7 @@ impl Trajectory {
             f: law.force(summary.x_residual, -summary.v_out),
         });
         marks.sort_by(|a, b| a.t.total_cmp(&b.t));
-        self.marks = marks;
+        marks
     }
 
     /// First contact: x = 0, ẋ = v₀.
@@ -199,7 +232,7 @@ impl Trajectory {
     /// Without curves: linear between first contact and the extrema.
     fn between_marks(&self, t: f64) -> Sample {
         let mut prev = self.start();
-        for mark in &self.marks {
+        for mark in self.marks() {
             if mark.t >= t {
                 return lerp(&prev, mark, t);
             }
@@ -211,8 +244,8 @@ impl Trajectory {
     /// `n` samples evenly spaced in t over the contact, with the exact extrema
     /// (x_max, F_max, contact end) inserted in time order.
     pub fn samples(&self, n: usize) -> Vec<Sample> {
-        let mut out = Vec::with_capacity(n + self.marks.len());
-        let mut marks = self.marks.iter().peekable();
+        let mut out = Vec::with_capacity(n + self.marks().len());
+        let mut marks = self.marks().iter().peekable();
         for i in 0..n {
             // The last sample is t_end itself, not a rounded multiple of it.
             let t = if i + 1 == n && n > 1 {
@@ -237,7 +270,7 @@ impl Trajectory {
 
     /// The extrema inserted by [`Trajectory::samples`], in time order.
     pub fn extrema(&self) -> &[Sample] {
-        &self.marks
+        self.marks()
     }
 }
 
