@@ -4,6 +4,7 @@ use serde::Serialize;
 
 use super::cylinder::{self, PowerFit};
 use super::error::{ModelError, require_positive};
+use super::force::Contact;
 use super::pair::ContactPair;
 use super::power_law::PowerLaw;
 use super::pressure::{Regime, YieldOnset};
@@ -37,6 +38,9 @@ pub struct Quasistatic {
     pub onset: YieldOnset,
     #[serde(flatten)]
     pub geometry: ContactGeometry,
+    /// The bodies as the laws that need more than k and n see them (force::Contact).
+    #[serde(skip)]
+    pub contact: Contact,
 }
 
 impl Quasistatic {
@@ -122,6 +126,7 @@ pub fn evaluate(pair: &ContactPair, v0: f64) -> Result<Quasistatic, ModelError> 
                 fit,
             },
         },
+        contact: Contact::of(pair),
     })
 }
 

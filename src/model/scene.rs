@@ -4,7 +4,7 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
-use super::force::{Contact, ImpactParams};
+use super::force::ImpactParams;
 use super::pair::ContactPair;
 use super::quasistatic::{self, Quasistatic};
 
@@ -75,9 +75,7 @@ impl Scene {
             v0: self.impact.v0,
             restitution: self.impact.restitution,
             plastic_indentation: self.impact.plastic_indentation,
-            contact: self
-                .pair()
-                .map_or(Contact::Unspecified, |pair| Contact::of(&pair)),
+            contact: quasistatic.contact,
         }
     }
 }

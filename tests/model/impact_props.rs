@@ -3,7 +3,7 @@
 //! residual below its tolerance, or with a typed error — never a panic, a hang or a NaN.
 
 use hertz_tui::model::PowerLaw;
-use hertz_tui::model::force::{ForceModel, ImpactParams};
+use hertz_tui::model::force::{ContactRule, ForceModel, ImpactParams};
 use hertz_tui::model::impact::{
     ImpactError, ImpactSolution, MethodChoice, MethodUsed, SolveOptions, solve_impact,
 };
@@ -204,6 +204,13 @@ proptest! {
         prop_assume!(!["thornton", "hertz-line-exact"].contains(&model.name()));
         let opts = SolveOptions::default();
         let result = solve_impact(model, &p, &opts);
+        // A law allowed to pull and damped beyond critical never lets go (docs/physics.md §6.4):
+        // Kuwabara–Kono's A from a low e by the series' first term can be that far outside the
+        // series (its clamped row ends at F = 0 instead and always separates).
+        let bilateral = model.spec().contact == ContactRule::TensionAllowed;
+        if bilateral && matches!(result, Err(ImpactError::NoSeparation { .. })) {
+            return Ok(());
+        }
         prop_assert!(result.is_ok(), "{model}: {:?}", result.as_ref().err());
         check(model, &p, &opts, result);
     }
