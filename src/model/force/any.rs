@@ -1,7 +1,7 @@
 //! One value for any law of the table, dispatching statically (no boxing in the solver's hot loop),
 //! and the damping-parameter API: each law's damping from the scene's e, or an explicit value.
 //!
-//! [`law_table!`] is invoked once, in `table.rs`: that invocation is at the same time the table
+//! `law_table!` is invoked once, in `table.rs`: that invocation is at the same time the table
 //! [`super::LAWS`] and the generator of [`AnyLaw`], one variant per row.
 
 use super::law::ForceLaw;
@@ -17,10 +17,9 @@ pub trait LawVisitor {
 }
 
 /// The law table: rows `Variant = file::Type::builder, LawSpec { … };`, `file` a module of
-/// `force`. Each row becomes an entry of `LAWS` and a variant `AnyLaw::Variant(file::Type)`; its
-/// builder, a
-/// `fn(ForceModel, &ImpactParams, Option<f64>) -> Result<Type, ModelError>`, makes the law from a
-/// scene with its damping given or, for `None`, from the law's own rule.
+/// `force`. Each row becomes an entry of `LAWS` and a variant `AnyLaw::Variant(file::Type)`. The
+/// builder, `fn(ForceModel, &ImpactParams, Option<f64>) -> Result<Type, ModelError>`, makes the law
+/// from a scene, with its damping given or, for `None`, from the law's own rule.
 macro_rules! law_table {
     ($($(#[$doc:meta])* $variant:ident = $file:ident::$ty:ident::$build:ident, $spec:expr;)*) => {
         /// Every law, in table order: what `--model`, scene files, sweeps and the explorer list.

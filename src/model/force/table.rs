@@ -1,11 +1,12 @@
 //! The table of contact-force laws: the one place a law is declared (docs/physics.md §6).
 //!
 //! Everything that lists laws — `--model`, scene files, sweeps, the explorer's panes and arrays —
-//! iterates [`LAWS`] through [`super::ForceModel`]. The one [`law_table!`] invocation below is
-//! both [`LAWS`] and the generator of [`AnyLaw`]: each row names its variant, the law type of its
-//! file and that type's builder (`Variant = file::Type::builder`), then its table data. A Hunt–Crossley-type law is one row with its
-//! χ(e); a law with its own equations is one file (a `ForceLaw` type and its builder, declared by
-//! its `mod` line in `force/mod.rs`) plus one row.
+//! iterates [`LAWS`] through [`super::ForceModel`]. The one `law_table!` invocation below (the
+//! macro is in `any.rs`) is both [`LAWS`] and the generator of [`AnyLaw`]: each row names its
+//! variant, the law type of its file and that type's builder (`Variant = file::Type::builder`),
+//! then its table data. A Hunt–Crossley-type law is one row with its χ(e); a law with its own
+//! equations is one file (a `ForceLaw` type and its builder, declared by its `mod` line in
+//! `force/mod.rs`) plus one row.
 
 use super::any::law_table;
 
