@@ -126,17 +126,20 @@ fn check(
             s.energy_residual
         ),
         None if resolved(model, p) && s.energy_residual > 1e-7 => {
-            // A fixed step: the residual must shrink when the step halves (above 1e-7, where
-            // the first step's O(h^(n+1)) error and the quadrature no longer blur its trend).
+            // A fixed step: the residual must shrink when the step is quartered (above 1e-7,
+            // where the first step's O(h^(n+1)) error and the quadrature no longer blur its
+            // trend). Two halvings, not one: a damping term in a fractional power of x (Hertz
+            // with viscous damping, tension allowed) converges at order ~1.25 only after a
+            // first halving that gains 1.16 (2.8e-5 → 2.4e-5 → 7.1e-6 on a case proptest found).
             let dt = opts.dt.unwrap_or(p.law.contact_time(p.mass, p.v0) / 1000.0);
-            let half = SolveOptions {
-                dt: Some(0.5 * dt),
+            let quarter = SolveOptions {
+                dt: Some(0.25 * dt),
                 ..*opts
             };
-            if let Ok(finer) = solve_impact(model, p, &half) {
+            if let Ok(finer) = solve_impact(model, p, &quarter) {
                 assert!(
-                    finer.summary.energy_residual < s.energy_residual / 1.5,
-                    "{model} {}: residual {:e} at dt, {:e} at dt/2",
+                    finer.summary.energy_residual < s.energy_residual / 2.25,
+                    "{model} {}: residual {:e} at dt, {:e} at dt/4",
                     s.method,
                     s.energy_residual,
                     finer.summary.energy_residual
