@@ -100,3 +100,49 @@ fn the_calibrated_title_does_not_run_into_the_results_title() {
         }
     }
 }
+
+/// The regime box's "use: … · also fit: …" names its models in one form too (it mixed
+/// "Thornton 1997" with "lankarani-nikravesh").
+#[test]
+fn the_regime_advice_names_its_models_in_one_form() {
+    for (width, height) in [(80, 24), (120, 40), (160, 48), (200, 24)] {
+        let mut app = app();
+        update(&mut app, Action::Resize(width, height));
+        let terminal = render(&app, width, height);
+        let screen: String = terminal
+            .backend()
+            .buffer()
+            .content
+            .chunks(usize::from(width))
+            .map(|row| row.iter().map(|c| c.symbol()).collect::<String>() + "\n")
+            .collect();
+        let mut names: Vec<String> = Vec::new();
+        for line in screen.lines() {
+            if let Some(used) = line.split("use: ").nth(1) {
+                names.push(used.split(" (").next().unwrap().trim().to_string());
+            }
+            if let Some(also) = line.split("also fit: ").nth(1) {
+                let also = also.trim_end_matches(['│', ' ']);
+                names.extend(also.split(", ").map(|n| n.trim().to_string()));
+            }
+        }
+        // At 80×24 the box has room for "use:" only.
+        let shown = if width >= 120 { 3 } else { 1 };
+        assert!(
+            names.len() >= shown,
+            "{width}×{height}: {names:?}\n{screen}"
+        );
+        let forms: Vec<Vec<usize>> = names
+            .iter()
+            .map(|n| {
+                forms_of(n)
+                    .unwrap_or_else(|| panic!("{width}×{height}: {n:?} is no model's name"))
+                    .1
+            })
+            .collect();
+        assert!(
+            (0..3).any(|form| forms.iter().all(|f| f.contains(&form))),
+            "{width}×{height}: {names:?} in forms {forms:?}"
+        );
+    }
+}

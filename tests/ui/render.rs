@@ -800,8 +800,12 @@ fn the_data_cursor_readout_fits_whole_readings_at_every_size() {
             .lines()
             .find(|l| l.contains("t = "))
             .unwrap_or_else(|| panic!("{w}×{h}: no F(t) readout:\n{screen}"));
+        // Up to the pane's edge or the x title, two blanks after the reading.
         let readout = line[line.find("t = ").unwrap()..]
             .split('│')
+            .next()
+            .unwrap()
+            .split("  ")
             .next()
             .unwrap()
             .trim_end();

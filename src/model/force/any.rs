@@ -9,6 +9,7 @@ pub use super::table::AnyLaw;
 use super::table::DampingParam;
 use super::{ForceModel, ImpactParams};
 use crate::model::error::{ModelError, require};
+use crate::model::numeric::beta::beta;
 
 /// Something done with a law of a concrete type (the solver monomorphises on it).
 pub trait LawVisitor {
@@ -157,11 +158,14 @@ pub(super) use law_table;
 /// 2·(2/5)·B(3/5, 3/2)·(5/4)^{3/5} = 1.1534489 (docs/physics.md §6.5; published as 1.15344).
 pub const KUWABARA_KONO_C1: f64 = 1.153_448_858_095_288;
 
-/// A from e at the scene's v₀ by the series' first term, A = (1 − e)/(C₁·(k/m)^{2/5}·v₀^{1/5})
-/// (docs/physics.md §6.5): a material constant, so e then falls as v₀ grows.
+/// A from e at the scene's v₀ by the series' first term, A = (1 − e)·x_e/(v₀·B(n/(n+1), 3/2))
+/// with x_e the elastic x_max (docs/physics.md §6.5): A·v₀/x_e is the dimensionless damping for
+/// any n, and for spheres this is A = (1 − e)/(C₁·(k/m)^{2/5}·v₀^{1/5}). A material constant, so
+/// e then falls as v₀ grows.
 pub fn kuwabara_kono_a(params: &ImpactParams) -> f64 {
-    let (k, m, v0) = (params.law.k, params.mass, params.v0);
-    (1.0 - params.restitution) / (KUWABARA_KONO_C1 * (k / m).powf(0.4) * v0.powf(0.2))
+    let (m, v0, n) = (params.mass, params.v0, params.law.n);
+    let x_e = params.law.max_approach(m, v0);
+    (1.0 - params.restitution) * x_e / (v0 * beta(n / (n + 1.0), 1.5))
 }
 
 /// A law's damping parameter and the value in use.

@@ -6,6 +6,7 @@ use lambert_w::lambert_wm1;
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{Contact, ForceModel, ImpactParams};
+use crate::format::{Zeros, scientific};
 use crate::model::cylinder::LineContact;
 use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, elastic::elastic};
@@ -58,8 +59,9 @@ impl LogLinear {
 
     /// F(x) for x > 0: x = F·(A − B·ln F) is (−s·ln s) = x·e^{−A/B}/B with F = e^{A/B}·s, so
     /// F = x/(B·(−W₋₁(−z))), z = x·e^{−A/B}/B, on the branch where x grows with F (s < 1/e); one
-    /// Newton step on x(F) polishes W₋₁'s last bits. Beyond the branch point (x past the largest
-    /// approach the formula gives, never reached by an impact the law accepted) F stays there.
+    /// Newton step on x(F) polishes W₋₁'s last bits. Past the branch point (x beyond the largest
+    /// approach the formula gives) z is clamped and F = x/B is no law: `build` refuses every
+    /// impact whose energy could reach it.
     fn force(&self, x: f64) -> f64 {
         let z = (x * self.z_per_x).min(std::f64::consts::E.recip());
         let f = x / (self.b * -lambert_wm1(-z));
@@ -100,9 +102,11 @@ impl HertzLineExact {
                     return Err(ModelError::OutOfDomain {
                         formula: "eqs 13–14 (line contact)",
                         detail: format!(
-                            "the impact energy {energy:e} J exceeds the {:e} J the formulas store \
-                             up to F = {limit:e} N, where they stop holding; lower impact.v0",
-                            log_linear.energy(limit)
+                            "the impact energy {} J exceeds the {} J the formulas store up to \
+                             F = {} N, where they stop holding; lower impact.v0",
+                            sci(energy),
+                            sci(log_linear.energy(limit)),
+                            sci(limit)
                         ),
                     });
                 }
@@ -197,6 +201,11 @@ impl ForceLaw for HertzLineExact {
     fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
         self.line.is_none().then(|| elastic(&self.params))
     }
+}
+
+/// `value` in 4 significant digits, scientific, for messages.
+fn sci(value: f64) -> String {
+    scientific(value, 4, Zeros::Trim)
 }
 
 #[cfg(test)]

@@ -387,6 +387,10 @@ fn axes(
         if f.x_title_below {
             let x = inner.right().saturating_sub(x_title);
             put(buf, x, axis_y + 2, &chart.x.title, title, inner);
+        } else if width(&text) + 2 + x_title < room {
+            // The x title keeps its place right of the reading where both fit.
+            let x = inner.right().saturating_sub(x_title + 1);
+            put(buf, x, inner.y, &chart.x.title, title, inner);
         }
         return;
     }

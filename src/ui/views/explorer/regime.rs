@@ -12,7 +12,7 @@ use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::style::Role;
 use crate::ui::units::sig;
-use crate::ui::widgets::common::{flow, model_name, pane, wrap};
+use crate::ui::widgets::common::{NameForm, flow, pane, wrap};
 
 /// A short name of a regime for the regime line.
 fn regime_name(regime: Regime) -> &'static str {
@@ -102,12 +102,14 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             }),
         ),
     ]);
+    // One name form for the advised model and the others that fit, as in the Models pane.
+    let named: Vec<_> = std::iter::once(advice.model)
+        .chain(advice.fits.iter().copied())
+        .collect();
+    let form = NameForm::fitting(&named, 19);
     items.push(vec![
         Span::styled("use: ", theme.style(Role::Label)),
-        Span::styled(
-            model_name(advice.model, 19),
-            theme.model_style(advice.model),
-        ),
+        Span::styled(form.of(advice.model), theme.model_style(advice.model)),
         Span::styled(format!(" ({})", advice.gist), theme.style(Role::Normal)),
     ]);
     if advice.fits.len() > 1 {
@@ -116,10 +118,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             if i > 0 {
                 also.push(Span::raw(", "));
             }
-            also.push(Span::styled(
-                model_name(model, 19),
-                theme.model_style(model),
-            ));
+            also.push(Span::styled(form.of(model), theme.model_style(model)));
         }
         items.push(also);
     }
