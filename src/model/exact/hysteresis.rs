@@ -87,12 +87,8 @@ impl Integral {
         )
     }
 
-    /// Scaled force f = Xⁿ·u, u = 1 + aV, f = F/(k·x_eⁿ) (eqs 19–20), X^{n+1} = 2D/a².
-    fn force(&self, d: f64, u: f64) -> f64 {
-        (2.0 * d / (self.a * self.a)).powf(self.n / (self.n + 1.0)) * u
-    }
-
-    /// |dT/dV| = 2/((n+1)·f): the integrand of the contact time in V. Its power 1/Xⁿ is taken as
+    /// |dT/dV| = 2/((n+1)·f), f = F/(k·x_eⁿ) = Xⁿ·(1 + aV) the scaled force (eqs 19–20): the
+    /// integrand of the contact time in V. Its power 1/Xⁿ is taken as
     /// exp(−(n/(n+1))·ln X^{n+1}): a logarithm and an exponential cost half a `powf`, the dearest
     /// step of a quadrature node, and lose no digit that matters (the exponent's rounding,
     /// ≤ 1e-15 of a logarithm below 40, is the result's relative error).
@@ -157,7 +153,8 @@ pub(crate) fn hysteresis_with(
     let n = law.n;
     let x_e = law.max_approach(m, v0);
     let t_ref = x_e / v0;
-    let f_ref = law.force(x_e);
+    // k·x_eⁿ from the elastic energy balance k·x_e^{n+1}/(n+1) = m·v₀²/2 (eq 5), without a power.
+    let f_ref = 0.5 * (n + 1.0) * m * v0 * v0 / x_e;
     let c = y_minus_log1p(a);
     let (s, w) = unloading_root(c);
     let hc = Integral {
@@ -174,6 +171,8 @@ pub(crate) fn hysteresis_with(
     // Peak force: dF/dV = 0 ⇔ h(V) = (n+1)·D(V) − n·a·V = 0, a unique root on loading.
     let v_peak = hc.peak_velocity()?;
     let d_peak = hc.d_loading(v_peak, 1.0 - v_peak);
+    // X at the peak; Xⁿ = X^{n+1}/X.
+    let x_peak = (hc.scale * d_peak).powf(1.0 / (n + 1.0));
 
     // Times, in T: [V*, 1] (start to peak), [0, V*] (peak to x_max), [−V_out, 0] (unloading).
     // dt/dV ~ δ^{−n/(n+1)} at first contact and at the exit, smooth elsewhere.
@@ -228,9 +227,9 @@ pub(crate) fn hysteresis_with(
     let exact = ExactImpact {
         x_max: x_e * (2.0 * c / (a * a)).powf(1.0 / (n + 1.0)),
         t_x_max: t_ref * (to_peak + peak_to_x_max),
-        f_max: f_ref * hc.force(d_peak, 1.0 + a * v_peak),
+        f_max: f_ref * (hc.scale * d_peak / x_peak) * (1.0 + a * v_peak),
         t_f_max: t_ref * to_peak,
-        x_f_max: x_e * (2.0 * d_peak / (a * a)).powf(1.0 / (n + 1.0)),
+        x_f_max: x_e * x_peak,
         v_f_max: v0 * v_peak,
         t_contact: t_ref * (to_peak + peak_to_x_max + unloading),
         v_out: v0 * v_out,
