@@ -118,15 +118,20 @@ pub fn plot<K: Copy, S: Borrow<Series<K>>>(
     let raw: Vec<Curve<K>> = series
         .iter()
         .map(Borrow::borrow)
-        .map(|s| Curve {
-            model: s.model,
-            points: s
-                .samples
-                .iter()
-                .map(|sample| kind.point(sample))
-                .filter(finite)
-                .collect(),
-            peak: kind.peak(s),
+        .map(|s| {
+            // Sized once: a collect through the filter would grow it a doubling at a time.
+            let mut points = Vec::with_capacity(s.samples.len());
+            points.extend(
+                s.samples
+                    .iter()
+                    .map(|sample| kind.point(sample))
+                    .filter(finite),
+            );
+            Curve {
+                model: s.model,
+                points,
+                peak: kind.peak(s),
+            }
         })
         .collect();
     let all = raw
@@ -145,14 +150,13 @@ pub fn plot<K: Copy, S: Borrow<Series<K>>>(
     let x = nice_axis(x_lo, x_hi, x_unit, max_x_labels);
     let y = nice_axis(y_lo, y_hi, y_unit, max_y_labels);
     let to_display = |(px, py): (f64, f64)| (px / x.scale, py / y.scale);
-    let curves = raw
-        .into_iter()
-        .map(|c| Curve {
-            model: c.model,
-            points: c.points.into_iter().map(to_display).collect(),
-            peak: to_display(c.peak),
-        })
-        .collect();
+    let mut curves = raw;
+    for c in &mut curves {
+        for p in &mut c.points {
+            *p = to_display(*p);
+        }
+        c.peak = to_display(c.peak);
+    }
     Plot {
         x_title: format!("{x_name} [{}{}]", x.prefix.symbol, x_unit.symbol),
         y_title: format!("{y_name} [{}{}]", y.prefix.symbol, y_unit.symbol),

@@ -1,5 +1,6 @@
 //! Small helpers shared by the pane renderers.
 
+use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::Span;
@@ -109,6 +110,15 @@ pub fn flow<'a>(
     lines.into_iter().map(ratatui::text::Line::from).collect()
 }
 
+/// `lines` from the top of `area`, each cut at its width: the cells `Paragraph::new(lines)`
+/// draws, without its per-grapheme line truncator (a tenth of a frame's drawing in the explorer).
+pub fn draw_lines(buf: &mut Buffer, area: Rect, lines: &[ratatui::text::Line]) {
+    let area = area.intersection(buf.area);
+    for (y, line) in (area.y..area.bottom()).zip(lines) {
+        buf.set_line(area.x, y, line, area.width);
+    }
+}
+
 /// A rectangle of at most `width`×`height` centred in `area`.
 pub fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
@@ -137,6 +147,39 @@ mod tests {
         );
         assert_eq!(wrap("abcdefghij", 4), ["abcd", "efgh", "ij"]);
         assert!(wrap("", 10).is_empty());
+    }
+
+    /// Styled spans, a line style patched over them, text longer than the area and more lines
+    /// than rows: the same cells, styles included, as a `Paragraph`.
+    #[test]
+    fn lines_draw_as_a_paragraph_does() {
+        use ratatui::style::{Color, Modifier};
+        use ratatui::text::Line;
+        use ratatui::widgets::{Paragraph, Widget};
+        let lines = vec![
+            Line::from(vec![
+                Span::styled("● elastic", Style::new().fg(Color::Green)),
+                Span::raw(": v₀ 0.3 m/s < v_y 0.5 m/s"),
+                Span::styled(" (p₀ = 1.1 / 2.8 σ_y)", Style::new().fg(Color::DarkGray)),
+            ]),
+            Line::from("⚠ x_max 1.24 m is not small against R: Hertz's first hypothesis fails")
+                .patch_style(Style::new().add_modifier(Modifier::REVERSED)),
+            Line::from(""),
+            Line::from("why: √(E/ρ)·10⁻⁵ …"),
+            Line::from("a fifth line past the last row"),
+        ];
+        let buf_area = Rect::new(0, 0, 40, 6);
+        for area in [
+            Rect::new(2, 1, 30, 4),
+            Rect::new(0, 0, 40, 6),
+            Rect::new(35, 4, 10, 5),
+        ] {
+            let mut ours = Buffer::empty(buf_area);
+            draw_lines(&mut ours, area, &lines);
+            let mut theirs = Buffer::empty(buf_area);
+            Paragraph::new(lines.clone()).render(area, &mut theirs);
+            assert_eq!(ours, theirs, "{area:?}");
+        }
     }
 
     #[test]

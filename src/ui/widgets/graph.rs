@@ -157,7 +157,7 @@ impl Canvas {
     /// The dot nearest a fractional dot position (`None` left of or below the canvas).
     fn nearest(x: f64, y: f64) -> Option<(i64, i64)> {
         (x >= -0.5 && y >= -0.5 && x.is_finite() && y.is_finite())
-            .then(|| (x.round() as i64, y.round() as i64))
+            .then(|| (round_half_away(x), round_half_away(y)))
     }
 
     fn set_dot(&mut self, (x, y): (i64, i64), ink: Ink, bold: bool) {
@@ -181,22 +181,21 @@ impl Canvas {
         }
     }
 
-    /// A straight line between two dots, one dot at a time (clipped to the canvas): from the dot
-    /// after `a`'s to `b`'s, so that a polyline sets each dot once; a segment within one dot sets
-    /// nothing new.
-    fn line(&mut self, a: (f64, f64), b: (f64, f64), ink: Ink, bold: bool) {
-        let (Some(a), Some(b)) = (Canvas::nearest(a.0, a.1), Canvas::nearest(b.0, b.1)) else {
-            // An end off the canvas: fall back to stepping the fractional line, clipped.
-            let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
-            if steps.is_finite() && steps <= 1e5 {
-                let steps = steps.max(1.0) as u32;
-                for k in 0..=steps {
-                    let s = f64::from(k) / f64::from(steps);
-                    self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
-                }
+    /// A straight line between two fractional dots, clipped to the canvas, for an end off it.
+    fn line_clipped(&mut self, a: (f64, f64), b: (f64, f64), ink: Ink, bold: bool) {
+        let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil();
+        if steps.is_finite() && steps <= 1e5 {
+            let steps = steps.max(1.0) as u32;
+            for k in 0..=steps {
+                let s = f64::from(k) / f64::from(steps);
+                self.set(a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s, ink, bold);
             }
-            return;
-        };
+        }
+    }
+
+    /// A straight line between two dots, one dot at a time (clipped to the canvas): from the dot
+    /// after `a` to `b`, so that a polyline sets each dot once.
+    fn line_dots(&mut self, a: (i64, i64), b: (i64, i64), ink: Ink, bold: bool) {
         let (dx, dy) = (b.0 - a.0, b.1 - a.1);
         let steps = dx.abs().max(dy.abs());
         if steps == 0 || steps > 100_000 {
@@ -221,6 +220,24 @@ impl Canvas {
     }
 }
 
+/// `x.round() as i64` for finite `x ≥ −0.5` (half away from zero), without the call to libm's
+/// `round` that a point of every curve of every frame paid twice.
+fn round_half_away(x: f64) -> i64 {
+    // From 2⁵² up every double is an integer; below it the truncation and the fraction are exact.
+    if x >= 4_503_599_627_370_496.0 {
+        return x as i64;
+    }
+    let whole = x as i64;
+    let fraction = x - whole as f64;
+    if fraction >= 0.5 {
+        whole + 1
+    } else if fraction <= -0.5 {
+        whole - 1
+    } else {
+        whole
+    }
+}
+
 /// How curves are told apart: by colour on braille, by glyphs where there is no colour or no
 /// braille (each model's glyph along the whole curve).
 fn glyphs_along(theme: Theme, marker: MarkerStyle) -> bool {
@@ -229,6 +246,15 @@ fn glyphs_along(theme: Theme, marker: MarkerStyle) -> bool {
 
 /// Cells between the glyphs set along a curve when colour cannot tell curves apart.
 const GLYPH_SPACING: f64 = 6.0;
+
+/// The last point of a curve painted: in fractional dots, its dot, and whether that dot is known
+/// to be set.
+#[derive(Clone, Copy)]
+struct Drawn {
+    at: (f64, f64),
+    dot: Option<(i64, i64)>,
+    dot_set: bool,
+}
 
 fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) {
     let along = glyphs_along(theme, marker);
@@ -253,26 +279,50 @@ fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) 
     for series in &chart.series {
         let bold = series.focused;
         for run in &series.runs {
-            let pts: Vec<(f64, f64)> = run
-                .iter()
-                .filter_map(|&p| canvas.to_dots(chart, p))
-                .collect();
-            if let Some(first) = pts.first() {
-                canvas.set(first.0, first.1, series.ink, bold);
-            }
+            // Each point's dot is found once; a segment within one dot sets nothing new when
+            // that dot is known to be set (a clipped segment may end beside it).
+            let mut last: Option<Drawn> = None;
             let mut travelled = spacing / 2.0;
-            for w in pts.windows(2) {
-                canvas.line(w[0], w[1], series.ink, bold);
-                if along {
-                    travelled += (w[1].0 - w[0].0).hypot((w[1].1 - w[0].1) * 0.5);
-                    if travelled >= spacing {
-                        travelled = 0.0;
-                        canvas.glyph(w[1], series.glyph, series.ink, bold);
+            for &p in run {
+                let Some(p) = canvas.to_dots(chart, p) else {
+                    continue;
+                };
+                let dot = Canvas::nearest(p.0, p.1);
+                let mut dot_set = true;
+                match last {
+                    None => {
+                        if let Some(dot) = dot {
+                            canvas.set_dot(dot, series.ink, bold);
+                        }
+                    }
+                    Some(Drawn {
+                        at: from,
+                        dot: from_dot,
+                        dot_set: from_set,
+                    }) => {
+                        match (from_dot, dot) {
+                            (Some(a), Some(b)) if a == b && from_set => {}
+                            (Some(a), Some(b)) => canvas.line_dots(a, b, series.ink, bold),
+                            _ => {
+                                canvas.line_clipped(from, p, series.ink, bold);
+                                dot_set = false;
+                            }
+                        }
+                        if along {
+                            travelled += (p.0 - from.0).hypot((p.1 - from.1) * 0.5);
+                            if travelled >= spacing {
+                                travelled = 0.0;
+                                canvas.glyph(p, series.glyph, series.ink, bold);
+                            }
+                        }
                     }
                 }
-            }
-            if series.steps {
-                for &p in &pts {
+                last = Some(Drawn {
+                    at: p,
+                    dot,
+                    dot_set,
+                });
+                if series.steps {
                     canvas.glyph(p, series.glyph, series.ink, bold);
                 }
             }
@@ -754,6 +804,110 @@ mod tests {
             short.contains("+3 more") || short.contains("+2 more"),
             "{short}"
         );
+    }
+
+    /// Every segment painted on its own, as the painter did before it skipped segments within
+    /// one dot: the reference whose dots and inks the painter must match cell for cell.
+    fn paint_each_segment(canvas: &mut Canvas, chart: &Chart) {
+        for series in &chart.series {
+            for run in &series.runs {
+                let pts: Vec<(f64, f64)> = run
+                    .iter()
+                    .filter_map(|&p| canvas.to_dots(chart, p))
+                    .collect();
+                if let Some(first) = pts.first() {
+                    canvas.set(first.0, first.1, series.ink, series.focused);
+                }
+                for w in pts.windows(2) {
+                    match (
+                        Canvas::nearest(w[0].0, w[0].1),
+                        Canvas::nearest(w[1].0, w[1].1),
+                    ) {
+                        (Some(a), Some(b)) if a == b => {
+                            canvas.set_dot(b, series.ink, series.focused)
+                        }
+                        (Some(a), Some(b)) => canvas.line_dots(a, b, series.ink, series.focused),
+                        _ => canvas.line_clipped(w[0], w[1], series.ink, series.focused),
+                    }
+                }
+            }
+        }
+    }
+
+    /// Dense wandering curves of two inks, in and out of the plot on every side (some points
+    /// NaN): the painter's cells equal the segment-by-segment painting's.
+    #[test]
+    fn skipping_segments_within_a_dot_changes_no_cell() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for trial in 0..40 {
+            let mut c = chart();
+            c.marks.clear();
+            c.rules.clear();
+            let mut other = c.series[0].clone();
+            other.ink = Ink::Warning;
+            other.focused = false;
+            c.series.insert(0, other);
+            for series in &mut c.series {
+                let (mut x, mut y) = (next() * 10.0, next() * 400.0);
+                let run = (0..600)
+                    .map(|i| {
+                        x += (next() - 0.5) * 0.4;
+                        y += (next() - 0.5) * 30.0;
+                        if i % 97 == 13 { (f64::NAN, y) } else { (x, y) }
+                    })
+                    .collect();
+                series.runs = vec![run];
+            }
+            for marker in [MarkerStyle::Braille, MarkerStyle::Dot] {
+                let plot = Rect::new(0, 0, 37 + trial % 5, 11 + trial % 3);
+                let mut fast = Canvas::new(plot, marker);
+                paint(&mut fast, &c, Theme { color: true }, marker);
+                let mut plain = Canvas::new(plot, marker);
+                paint_each_segment(&mut plain, &c);
+                let inked = plain.cells.iter().filter(|cell| cell.dots != 0).count();
+                assert!(
+                    inked > 20,
+                    "trial {trial}: the curves cross the plot ({inked} cells)"
+                );
+                // The painter's glyphs at peaks and ends aside, the dots and their inks.
+                let lines = |canvas: &Canvas| -> Vec<_> {
+                    canvas
+                        .cells
+                        .iter()
+                        .map(|cell| (cell.dots, cell.ink))
+                        .collect()
+                };
+                assert!(lines(&fast) == lines(&plain), "trial {trial}, {marker:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn dots_round_as_f64_round_does() {
+        let halves = [
+            0.5,
+            1.5,
+            2.5,
+            99.5,
+            -0.5,
+            0.499_999_999_999_999_94,
+            2f64.powi(52) - 0.5,
+        ];
+        let large = [2f64.powi(52), 2f64.powi(53) + 2.0, 1e300, f64::MAX];
+        let spread = (0..10_000).map(|i| f64::from(i) * 0.0137 - 0.5);
+        for x in halves.into_iter().chain(large).chain(spread) {
+            assert_eq!(round_half_away(x), x.round() as i64, "{x:e}");
+            let below = x.next_down();
+            if below >= -0.5 {
+                assert_eq!(round_half_away(below), below.round() as i64, "{below:e}");
+            }
+        }
     }
 
     #[test]

@@ -7,7 +7,6 @@ use ratatui::Frame;
 use ratatui::layout::{Position, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::Line;
-use ratatui::widgets::Paragraph;
 
 use crate::chart::model_glyph;
 use crate::model::ForceModel;
@@ -15,7 +14,7 @@ use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
 use crate::ui::style::{Role, Theme, sample};
 
-use super::common::{NameForm, pane, span};
+use super::common::{NameForm, draw_lines, pane, span};
 
 /// One row of the list: a family heading or a model.
 enum Row {
@@ -125,7 +124,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             Row::Model(model) => model_line(app, theme, *model, (names, name_width), &fits),
         })
         .collect();
-    frame.render_widget(Paragraph::new(lines), inner);
+    draw_lines(frame.buffer_mut(), inner, &lines);
 }
 
 fn model_line(

@@ -3,13 +3,12 @@
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Position, Rect};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
 
 use crate::model::scene_key::BodyIndex;
 use crate::ui::app::{App, Cursor, EditTarget, Mode};
 use crate::ui::field::{self, Field, Section};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{pane, span, wrap};
+use crate::ui::widgets::common::{draw_lines, pane, span, wrap};
 
 /// Width of the label column.
 const LABEL_WIDTH: usize = 8;
@@ -273,8 +272,7 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
         };
         lines.push(line);
     }
-    let paragraph = Paragraph::new(lines);
-    frame.render_widget(paragraph, area);
+    draw_lines(frame.buffer_mut(), area, &lines);
     if let Some(position) = cursor_position {
         frame.set_cursor_position(position);
     }

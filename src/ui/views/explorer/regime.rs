@@ -4,7 +4,6 @@
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
 use crate::model::recommend::recommend;
@@ -12,7 +11,7 @@ use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::style::Role;
 use crate::ui::units::sig;
-use crate::ui::widgets::common::{NameForm, flow, pane, wrap};
+use crate::ui::widgets::common::{NameForm, draw_lines, flow, pane, wrap};
 
 /// A short name of a regime for the regime line.
 fn regime_name(regime: Regime) -> &'static str {
@@ -53,10 +52,8 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         )]);
     }
     let Some(valid) = &app.valid else {
-        frame.render_widget(
-            Paragraph::new(flow(items, width, max_lines, Span::raw("  "))),
-            inner,
-        );
+        let lines = flow(items, width, max_lines, Span::raw("  "));
+        draw_lines(frame.buffer_mut(), inner, &lines);
         return;
     };
     let onset = &valid.quasistatic.onset;
@@ -166,5 +163,5 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             theme.style(Role::Muted),
         )));
     }
-    frame.render_widget(Paragraph::new(lines), inner);
+    draw_lines(frame.buffer_mut(), inner, &lines);
 }
