@@ -144,17 +144,23 @@ fn phase_work<L: ForceLaw>(
             }
             continue;
         }
-        work += if i == last {
-            gauss_legendre_6(
-                |u| power(seg, ta + h * u * u * (3.0 - 2.0 * u)) * 6.0 * h * u * (1.0 - u),
-                0.0,
-                1.0,
-            )
-        } else {
-            bounds
-                .map(|(pa, pb)| gauss_legendre_4(|t| power(seg, t), pa, pb))
-                .sum()
-        };
+        let count = pieces as usize;
+        work += bounds
+            .enumerate()
+            .map(|(j, (pa, pb))| {
+                if i == last && j + 1 == count {
+                    // Separation: smooth the end-point behaviour by T = T₀ + h·u²(3 − 2u).
+                    let w = pb - pa;
+                    gauss_legendre_6(
+                        |u| power(seg, pa + w * u * u * (3.0 - 2.0 * u)) * 6.0 * w * u * (1.0 - u),
+                        0.0,
+                        1.0,
+                    )
+                } else {
+                    gauss_legendre_4(|t| power(seg, t), pa, pb)
+                }
+            })
+            .sum::<f64>();
     }
     work
 }
