@@ -109,7 +109,7 @@ pub fn stream_csv(
     let values = check(&scene, &spec).map_err(|e| CliError::Usage(e.to_string()))?;
     out.write_all(csv_header(&args.param.path(), &models).as_bytes())?;
     let pieces = BUFFERS_PER_THREAD * rayon::current_num_threads();
-    let mut buffers = vec![String::new(); pieces];
+    let mut buffers = vec![Vec::new(); pieces];
     let piece = CHUNK.div_ceil(pieces);
     for chunk in values.chunks(CHUNK) {
         let used = chunk.len().div_ceil(piece);
@@ -123,7 +123,7 @@ pub fn stream_csv(
                 }
             });
         for buffer in &buffers[..used] {
-            out.write_all(buffer.as_bytes())?;
+            out.write_all(buffer)?;
         }
     }
     Ok(())
@@ -148,15 +148,15 @@ fn csv_header(param: &str, models: &[ForceModel]) -> String {
 }
 
 /// `value,` in Rust's `{:e}` (shortest round-trip), or just `,` for a missing number.
-fn push_number(out: &mut String, value: Option<f64>) {
+fn push_number(out: &mut Vec<u8>, value: Option<f64>) {
     if let Some(v) = value {
         push_shortest_exp(out, v);
     }
-    out.push(',');
+    out.push(b',');
 }
 
 /// One CSV row of `row` appended to `out`.
-fn csv_row(out: &mut String, row: &SweepRow, models: &[ForceModel]) {
+fn csv_row(out: &mut Vec<u8>, row: &SweepRow, models: &[ForceModel]) {
     let q = row.quasistatic;
     push_number(out, Some(row.value));
     push_number(out, q.map(|q| q.p_max));
@@ -174,9 +174,9 @@ fn csv_row(out: &mut String, row: &SweepRow, models: &[ForceModel]) {
     }
     let failed = row.error.is_some() || row.impacts.iter().any(|i| i.error.is_some());
     if failed {
-        out.push_str(&csv::field(&failures(row)));
+        out.extend_from_slice(csv::field(&failures(row)).as_bytes());
     }
-    out.push('\n');
+    out.push(b'\n');
 }
 
 fn table(param: &str, unit: &str, models: &[ForceModel], rows: &[SweepRow]) -> String {
