@@ -13,7 +13,7 @@ use crate::model::ForceModel;
 use crate::model::Scene;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
-use crate::model::study::sweep::{SweepRow, SweepSpec, check, sweep, sweep_point};
+use crate::model::study::sweep::{SweepPlan, SweepRow, SweepSpec, check, sweep};
 use rayon::prelude::*;
 use std::io::Write;
 
@@ -109,6 +109,7 @@ pub fn stream_csv(
     let values = check(&scene, &spec).map_err(|e| CliError::Usage(e.to_string()))?;
     out.write_all(csv_header(&args.param.path(), &models).as_bytes())?;
     let pieces = BUFFERS_PER_THREAD * rayon::current_num_threads();
+    let plan = SweepPlan::new(&scene, &spec);
     let mut buffers = vec![Vec::new(); pieces];
     let piece = CHUNK.div_ceil(pieces);
     for chunk in values.chunks(CHUNK) {
@@ -119,7 +120,7 @@ pub fn stream_csv(
             .for_each(|(points, buffer)| {
                 buffer.clear();
                 for &value in points {
-                    csv_row(buffer, &sweep_point(&scene, &spec, value), &models);
+                    csv_row(buffer, &plan.point(value), &models);
                 }
             });
         for buffer in &buffers[..used] {
