@@ -3,6 +3,7 @@
 pub mod args;
 pub mod bench;
 pub mod error;
+mod in_order;
 mod layout;
 mod list;
 pub mod plot;

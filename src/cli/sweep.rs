@@ -4,6 +4,7 @@ use serde::Serialize;
 
 use super::args::{Format, SweepArgs};
 use super::error::CliError;
+use super::in_order::write_in_order;
 use super::json;
 use super::layout::columns;
 use super::solve::{load_scene, models_or_all};
@@ -13,8 +14,7 @@ use crate::model::ForceModel;
 use crate::model::Scene;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
-use crate::model::study::sweep::{SweepRow, SweepSpec, check, sweep, sweep_point};
-use rayon::prelude::*;
+use crate::model::study::sweep::{SweepPlan, SweepRow, SweepSpec, check, sweep};
 use std::io::Write;
 
 /// The JSON document of a sweep.
@@ -91,15 +91,13 @@ fn failures(row: &SweepRow) -> String {
     messages.join("; ")
 }
 
-/// Sweep points solved and formatted per chunk: the rows in flight are bounded by it, not by
-/// `--points` (a million-point sweep holds 16 Ki rows, a few MB, at a time).
-const CHUNK: usize = 16_384;
+/// Sweep points solved and formatted per piece of output: small enough that the pieces in flight
+/// stay a few MB even with every law (a million-point sweep never holds its rows), large enough
+/// that handing a piece out costs nothing against solving it.
+const PIECE: usize = 512;
 
-/// Formatting buffers per worker thread: enough pieces per chunk for rayon to balance the load.
-const BUFFERS_PER_THREAD: usize = 4;
-
-/// `--format csv`, streamed: each chunk of points is solved and formatted in parallel, each worker
-/// into its own reused buffer, and the buffers are written in order.
+/// `--format csv`, streamed: pieces of points are solved and formatted on every core, each into a
+/// reused buffer, and written in order ([`write_in_order`]).
 pub fn stream_csv(
     args: &SweepArgs,
     registry: &Registry,
@@ -108,24 +106,14 @@ pub fn stream_csv(
     let (scene, spec, models) = prepare(args, registry)?;
     let values = check(&scene, &spec).map_err(|e| CliError::Usage(e.to_string()))?;
     out.write_all(csv_header(&args.param.path(), &models).as_bytes())?;
-    let pieces = BUFFERS_PER_THREAD * rayon::current_num_threads();
-    let mut buffers = vec![String::new(); pieces];
-    let piece = CHUNK.div_ceil(pieces);
-    for chunk in values.chunks(CHUNK) {
-        let used = chunk.len().div_ceil(piece);
-        chunk
-            .par_chunks(piece)
-            .zip(buffers.par_iter_mut())
-            .for_each(|(points, buffer)| {
-                buffer.clear();
-                for &value in points {
-                    csv_row(buffer, &sweep_point(&scene, &spec, value), &models);
-                }
-            });
-        for buffer in &buffers[..used] {
-            out.write_all(buffer.as_bytes())?;
+    let plan = SweepPlan::new(&scene, &spec);
+    let pieces: Vec<&[f64]> = values.chunks(PIECE).collect();
+    write_in_order(pieces.len(), out, |index, buffer| {
+        let mut quasistatic = QuasistaticColumns::default();
+        for &value in pieces[index] {
+            csv_row(buffer, &plan.point(value), &models, &mut quasistatic);
         }
-    }
+    })?;
     Ok(())
 }
 
@@ -148,22 +136,56 @@ fn csv_header(param: &str, models: &[ForceModel]) -> String {
 }
 
 /// `value,` in Rust's `{:e}` (shortest round-trip), or just `,` for a missing number.
-fn push_number(out: &mut String, value: Option<f64>) {
+fn push_number(out: &mut Vec<u8>, value: Option<f64>) {
     if let Some(v) = value {
         push_shortest_exp(out, v);
     }
-    out.push(',');
+    out.push(b',');
 }
 
+/// The text of the last number written in a column: copied, not formatted again, while the column
+/// repeats (a sweep of v₀ on a sphere keeps v_yield and v_plastic, of e or x_pl every quasistatic
+/// column).
+#[derive(Default)]
+struct Repeated {
+    bits: Option<u64>,
+    text: Vec<u8>,
+}
+
+impl Repeated {
+    /// [`push_number`], from the last text when `value` is the last number.
+    fn push(&mut self, out: &mut Vec<u8>, value: Option<f64>) {
+        if let Some(v) = value {
+            if self.bits != Some(v.to_bits()) {
+                self.text.clear();
+                push_shortest_exp(&mut self.text, v);
+                self.bits = Some(v.to_bits());
+            }
+            out.extend_from_slice(&self.text);
+        }
+        out.push(b',');
+    }
+}
+
+/// The quasistatic columns, p_max … v_plastic, each remembering its last number.
+#[derive(Default)]
+struct QuasistaticColumns([Repeated; 5]);
+
 /// One CSV row of `row` appended to `out`.
-fn csv_row(out: &mut String, row: &SweepRow, models: &[ForceModel]) {
+fn csv_row(
+    out: &mut Vec<u8>,
+    row: &SweepRow,
+    models: &[ForceModel],
+    quasistatic: &mut QuasistaticColumns,
+) {
     let q = row.quasistatic;
     push_number(out, Some(row.value));
-    push_number(out, q.map(|q| q.p_max));
-    push_number(out, q.and_then(|q| q.contact_radius));
-    push_number(out, q.and_then(|q| q.half_width));
-    push_number(out, q.map(|q| q.v_yield));
-    push_number(out, q.map(|q| q.v_plastic));
+    let [p_max, contact_radius, half_width, v_yield, v_plastic] = &mut quasistatic.0;
+    p_max.push(out, q.map(|q| q.p_max));
+    contact_radius.push(out, q.and_then(|q| q.contact_radius));
+    half_width.push(out, q.and_then(|q| q.half_width));
+    v_yield.push(out, q.map(|q| q.v_yield));
+    v_plastic.push(out, q.map(|q| q.v_plastic));
     for model in models {
         let point = row.impacts.iter().find(|i| i.model == *model);
         push_number(out, point.and_then(|p| p.x_max));
@@ -174,9 +196,9 @@ fn csv_row(out: &mut String, row: &SweepRow, models: &[ForceModel]) {
     }
     let failed = row.error.is_some() || row.impacts.iter().any(|i| i.error.is_some());
     if failed {
-        out.push_str(&csv::field(&failures(row)));
+        out.extend_from_slice(csv::field(&failures(row)).as_bytes());
     }
-    out.push('\n');
+    out.push(b'\n');
 }
 
 fn table(param: &str, unit: &str, models: &[ForceModel], rows: &[SweepRow]) -> String {
@@ -206,4 +228,51 @@ fn table(param: &str, unit: &str, models: &[ForceModel], rows: &[SweepRow]) -> S
         table.push(cells);
     }
     columns(&table, "")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::study::sweep::QuasistaticPoint;
+
+    fn row(value: f64, quasistatic: Option<QuasistaticPoint>) -> SweepRow {
+        SweepRow {
+            value,
+            quasistatic,
+            impacts: Vec::new(),
+            error: quasistatic.is_none().then(|| "invalid".into()),
+        }
+    }
+
+    #[test]
+    fn repeated_columns_are_written_as_if_formatted_afresh() {
+        let q = |p_max: f64, v_yield: f64| QuasistaticPoint {
+            p_max,
+            contact_radius: Some(7.7e-5),
+            half_width: None,
+            v_yield,
+            v_plastic: 0.326,
+        };
+        // v_yield repeats, changes, disappears with an invalid point, and comes back.
+        let rows = [
+            row(0.01, Some(q(5.4e8, 0.0316))),
+            row(0.02, Some(q(6.1e8, 0.0316))),
+            row(0.03, Some(q(6.6e8, 0.0451))),
+            row(0.04, None),
+            row(0.05, Some(q(7.3e8, 0.0451))),
+        ];
+        let mut out = Vec::new();
+        let mut columns = QuasistaticColumns::default();
+        for row in &rows {
+            csv_row(&mut out, row, &[], &mut columns);
+        }
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "1e-2,5.4e8,7.7e-5,,3.16e-2,3.26e-1,\n\
+             2e-2,6.1e8,7.7e-5,,3.16e-2,3.26e-1,\n\
+             3e-2,6.6e8,7.7e-5,,4.51e-2,3.26e-1,\n\
+             4e-2,,,,,,invalid\n\
+             5e-2,7.3e8,7.7e-5,,4.51e-2,3.26e-1,\n"
+        );
+    }
 }

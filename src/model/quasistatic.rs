@@ -7,7 +7,7 @@ use super::error::{ModelError, require_positive};
 use super::force::Contact;
 use super::pair::ContactPair;
 use super::power_law::PowerLaw;
-use super::pressure::{Regime, YieldOnset};
+use super::pressure::{PressureLaw, Regime, YieldOnset};
 use super::sphere;
 
 /// Contact-area result that depends on the geometry.
@@ -59,39 +59,129 @@ impl Quasistatic {
 
 /// Evaluates the quasistatic model of `pair` hit at relative velocity `v0` (eqs 1–14).
 pub fn evaluate(pair: &ContactPair, v0: f64) -> Result<Quasistatic, ModelError> {
-    require_positive("impact.v0", v0)?;
-    let eta = pair.elastic_factor();
-    let radius = pair.reduced_radius();
-    let mass = pair.reduced_mass();
-    let (law, pressure, fit) = match pair.contact_length() {
-        None => (
-            sphere::hertz_law(pair),
-            sphere::pressure_law(eta, radius),
-            None,
-        ),
-        Some(length) => {
-            let fit = cylinder::scene_fit(pair, v0)?;
-            // Eq 13/14 give 1 < n < 1.5 (the paper's §3); a fit outside that range comes from the
-            // end of their domain, where x(F) flattens, and would extrapolate nonsense.
-            if !(1.0..=1.5).contains(&fit.n) {
-                return Err(ModelError::OutOfDomain {
-                    formula: "line contact (eqs 11–14)",
-                    detail: format!(
-                        "the fit of eq 13/14 over {:.4e}…{:.4e} N gives n = {:.4}, outside the paper's 1 ≤ n ≤ 1.5: the scene is near the end of the formulas' domain; lower impact.v0 or change the geometry",
-                        fit.f_min, fit.f_max, fit.n
-                    ),
-                });
+    PairEstimate::new(pair.clone()).at(v0)
+}
+
+/// The part of the quasistatic estimate the pair alone fixes: evaluated once, it gives the estimate
+/// at any v₀ ([`PairEstimate::at`]) with the same numbers as [`evaluate`], which a sweep of v₀, e
+/// or x_pl reuses at every point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairEstimate {
+    pair: ContactPair,
+    eta: f64,
+    radius: f64,
+    mass: f64,
+    shape: PairLaw,
+    contact: Contact,
+}
+
+/// What of the elastic law a pair fixes: all of it for a point contact (eqs 2, 9), only the
+/// contact length for a line contact, whose power-law fit spans the forces v₀ reaches (eqs 13–14).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum PairLaw {
+    Point {
+        law: PowerLaw,
+        pressure: PressureLaw,
+        onset: YieldOnset,
+    },
+    Line {
+        length: f64,
+    },
+}
+
+impl PairEstimate {
+    pub fn new(pair: ContactPair) -> Self {
+        let eta = pair.elastic_factor();
+        let radius = pair.reduced_radius();
+        let mass = pair.reduced_mass();
+        let shape = match pair.contact_length() {
+            None => {
+                let law = sphere::hertz_law(&pair);
+                let pressure = sphere::pressure_law(eta, radius);
+                PairLaw::Point {
+                    law,
+                    pressure,
+                    onset: onset(&pair, &law, &pressure, mass),
+                }
             }
-            (
-                PowerLaw::new(fit.a, fit.n)?,
-                cylinder::pressure_law(eta, radius, length),
-                Some((fit, length)),
-            )
+            Some(length) => PairLaw::Line { length },
+        };
+        PairEstimate {
+            contact: Contact::of(&pair),
+            pair,
+            eta,
+            radius,
+            mass,
+            shape,
         }
-    };
-    let f_max = law.max_force(mass, v0);
-    if fit.is_some() {
-        let limit = cylinder::LineContact::of(pair)?.force_limit();
+    }
+
+    /// The estimate of the pair hit at relative velocity `v0` (eqs 1–14).
+    pub fn at(&self, v0: f64) -> Result<Quasistatic, ModelError> {
+        require_positive("impact.v0", v0)?;
+        let (eta, radius, mass) = (self.eta, self.radius, self.mass);
+        let (law, pressure, onset, fit) = match self.shape {
+            PairLaw::Point {
+                law,
+                pressure,
+                onset,
+            } => (law, pressure, onset, None),
+            PairLaw::Line { length } => {
+                let (law, pressure, fit) = self.line_law(v0, length)?;
+                (
+                    law,
+                    pressure,
+                    onset(&self.pair, &law, &pressure, mass),
+                    Some(fit),
+                )
+            }
+        };
+        let f_max = law.max_force(mass, v0);
+        Ok(Quasistatic {
+            eta,
+            k: law.k,
+            n: law.n,
+            reduced_mass: mass,
+            x_max: law.max_approach(mass, v0),
+            f_max,
+            t_contact: law.contact_time(mass, v0),
+            p_max: pressure.pressure(f_max),
+            onset,
+            geometry: match fit {
+                None => ContactGeometry::Point {
+                    contact_radius: sphere::contact_radius(eta, radius, f_max),
+                },
+                Some((fit, length)) => ContactGeometry::Line {
+                    half_width: cylinder::half_width(eta, radius, length, f_max),
+                    fit,
+                },
+            },
+            contact: self.contact,
+        })
+    }
+
+    /// The power law fitted to eq 13/14 over the forces an impact at `v0` reaches, its pressure law
+    /// (eq 12), and the fit; refused where eqs 11–14 no longer hold.
+    fn line_law(
+        &self,
+        v0: f64,
+        length: f64,
+    ) -> Result<(PowerLaw, PressureLaw, (PowerFit, f64)), ModelError> {
+        let fit = cylinder::scene_fit(&self.pair, v0)?;
+        // Eq 13/14 give 1 < n < 1.5 (the paper's §3); a fit outside that range comes from the
+        // end of their domain, where x(F) flattens, and would extrapolate nonsense.
+        if !(1.0..=1.5).contains(&fit.n) {
+            return Err(ModelError::OutOfDomain {
+                formula: "line contact (eqs 11–14)",
+                detail: format!(
+                    "the fit of eq 13/14 over {:.4e}…{:.4e} N gives n = {:.4}, outside the paper's 1 ≤ n ≤ 1.5: the scene is near the end of the formulas' domain; lower impact.v0 or change the geometry",
+                    fit.f_min, fit.f_max, fit.n
+                ),
+            });
+        }
+        let law = PowerLaw::new(fit.a, fit.n)?;
+        let f_max = law.max_force(self.mass, v0);
+        let limit = cylinder::LineContact::of(&self.pair)?.force_limit();
         if f_max >= limit {
             return Err(ModelError::OutOfDomain {
                 formula: "line contact (eqs 11–14)",
@@ -100,34 +190,14 @@ pub fn evaluate(pair: &ContactPair, v0: f64) -> Result<Quasistatic, ModelError> 
                 ),
             });
         }
+        let pressure = cylinder::pressure_law(self.eta, self.radius, length);
+        Ok((law, pressure, (fit, length)))
     }
-    Ok(Quasistatic {
-        eta,
-        k: law.k,
-        n: law.n,
-        reduced_mass: mass,
-        x_max: law.max_approach(mass, v0),
-        f_max,
-        t_contact: law.contact_time(mass, v0),
-        p_max: pressure.pressure(f_max),
-        onset: YieldOnset::new(
-            &law,
-            &pressure,
-            mass,
-            pair.yield_stress(),
-            pair.wave_speed(),
-        ),
-        geometry: match fit {
-            None => ContactGeometry::Point {
-                contact_radius: sphere::contact_radius(eta, radius, f_max),
-            },
-            Some((fit, length)) => ContactGeometry::Line {
-                half_width: cylinder::half_width(eta, radius, length, f_max),
-                fit,
-            },
-        },
-        contact: Contact::of(pair),
-    })
+}
+
+/// The yield-onset velocities of `law` on `pair` (the paper's §2 conventions).
+fn onset(pair: &ContactPair, law: &PowerLaw, pressure: &PressureLaw, mass: f64) -> YieldOnset {
+    YieldOnset::new(law, pressure, mass, pair.yield_stress(), pair.wave_speed())
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@ use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
 use super::force::ImpactParams;
 use super::pair::ContactPair;
-use super::quasistatic::{self, Quasistatic};
+use super::quasistatic::{PairEstimate, Quasistatic};
 
 /// Conditions of the impact (the `[impact]` table of a scene file).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -60,23 +60,53 @@ impl Scene {
     /// The quasistatic estimate (eqs 1–14) at the scene's v₀. Inputs that are each valid but
     /// together overflow double precision (v₀ = 1e200 m/s) are an error, never an infinite result.
     pub fn quasistatic(&self) -> Result<Quasistatic, ModelError> {
-        self.impact.validate()?;
-        let q = quasistatic::evaluate(&self.pair()?, self.impact.v0)?;
-        require_finite_results(&q)?;
-        Ok(q)
+        SceneBodies::of(self).quasistatic(&self.impact)
     }
 
     /// Inputs of the impact solver: the quasistatic law F = k·xⁿ, the reduced mass, the impact
     /// conditions and the bodies' contact (for the laws that need it).
     pub fn impact_params(&self, quasistatic: &Quasistatic) -> ImpactParams {
+        self.impact.params(quasistatic)
+    }
+}
+
+impl ImpactConditions {
+    /// The impact solver's inputs under these conditions: [`Scene::impact_params`].
+    pub fn params(&self, quasistatic: &Quasistatic) -> ImpactParams {
         ImpactParams {
             mass: quasistatic.reduced_mass,
             law: quasistatic.law(),
-            v0: self.impact.v0,
-            restitution: self.impact.restitution,
-            plastic_indentation: self.impact.plastic_indentation,
+            v0: self.v0,
+            restitution: self.restitution,
+            plastic_indentation: self.plastic_indentation,
             contact: quasistatic.contact,
         }
+    }
+}
+
+/// A scene's bodies evaluated once, for many impact conditions: a sweep of v₀, e or x_pl gets at
+/// every point the numbers [`Scene::quasistatic`] would, without re-validating and re-evaluating
+/// what only the bodies fix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneBodies {
+    /// The pair's part of the estimate, or why the bodies make no valid pair.
+    estimate: Result<PairEstimate, ModelError>,
+}
+
+impl SceneBodies {
+    pub fn of(scene: &Scene) -> Self {
+        SceneBodies {
+            estimate: scene.pair().map(PairEstimate::new),
+        }
+    }
+
+    /// [`Scene::quasistatic`] of these bodies under `impact`.
+    pub fn quasistatic(&self, impact: &ImpactConditions) -> Result<Quasistatic, ModelError> {
+        impact.validate()?;
+        let estimate = self.estimate.as_ref().map_err(Clone::clone)?;
+        let q = estimate.at(impact.v0)?;
+        require_finite_results(&q)?;
+        Ok(q)
     }
 }
 

@@ -4,7 +4,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use super::body::{Body, Shape};
-use super::scene::Scene;
+use super::scene::{ImpactConditions, Scene};
 
 /// Which body a key addresses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -102,9 +102,11 @@ impl SceneKey {
     /// Sets the value; validation is left to the model (`Scene::quasistatic`), which names the field.
     pub fn set(self, scene: &mut Scene, value: f64) -> Result<(), SceneKeyError> {
         match self {
-            SceneKey::V0 => scene.impact.v0 = value,
-            SceneKey::Restitution => scene.impact.restitution = value,
-            SceneKey::PlasticIndentation => scene.impact.plastic_indentation = value,
+            SceneKey::V0 | SceneKey::Restitution | SceneKey::PlasticIndentation => {
+                if let Some(condition) = self.impact_condition(&mut scene.impact) {
+                    *condition = value;
+                }
+            }
             SceneKey::Body(index, field) => {
                 let body = body_mut(scene, index);
                 match (field, &mut body.shape) {
@@ -126,6 +128,17 @@ impl SceneKey {
             }
         }
         Ok(())
+    }
+
+    /// The impact condition this key names (`impact.*`), `None` for a key of the bodies: a sweep
+    /// of an impact condition leaves the bodies, and what they fix, unchanged.
+    pub fn impact_condition(self, impact: &mut ImpactConditions) -> Option<&mut f64> {
+        match self {
+            SceneKey::V0 => Some(&mut impact.v0),
+            SceneKey::Restitution => Some(&mut impact.restitution),
+            SceneKey::PlasticIndentation => Some(&mut impact.plastic_indentation),
+            SceneKey::Body(..) => None,
+        }
     }
 
     /// Every numeric key.

@@ -273,8 +273,8 @@ fn sweep_refuses_keys_that_do_not_exist_or_do_not_apply() {
 
 #[test]
 fn a_streamed_sweep_keeps_every_row_in_order_across_chunks() {
-    // 40 000 points: the CSV is solved and written in chunks of 16 Ki points, each formatted in
-    // pieces on the workers; every row must come out once, in parameter order, matching its value.
+    // 40 000 points: the CSV is solved and formatted in pieces of 512 points on every core and
+    // written in order; every row must come out once, in parameter order, matching its value.
     let points = 40_000;
     let output = run(&[
         "sweep",

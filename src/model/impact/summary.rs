@@ -93,8 +93,13 @@ fn segment_peak(mut f: impl FnMut(f64) -> f64, ta: f64, tb: f64) -> (f64, f64) {
 /// first contact still feel it); the first step gets six points. The last step of unloading
 /// (separation) gets six points after the substitution T = T₀ + h·u²(3 − 2u). A loading phase
 /// integrated in (X, W) ([`Scales::shift`]) integrates the damping's work by parts.
-/// The longest stretch of scaled time (the contact lasts about 3) one Gauss rule integrates.
-const MAX_PIECE: f64 = 0.05;
+/// The longest stretch of scaled time (the contact lasts about 3) one four-point Gauss rule
+/// integrates at tolerance `rtol`: its error on a power oscillating at twice the contact's
+/// frequency is about (2·piece)⁸/4·10⁴, held under rtol (0.16 at 1e-8, one piece a DOP853 step;
+/// 0.05 at 1e-12).
+fn max_piece(rtol: f64) -> f64 {
+    (0.5 * (4e4 * rtol).powf(0.125)).clamp(0.02, 1.0)
+}
 
 fn phase_work<L: ForceLaw>(
     law: &L,
@@ -102,6 +107,7 @@ fn phase_work<L: ForceLaw>(
     dense: &DenseOutput,
     phase: Phase,
     (t_lo, t_hi): (f64, f64),
+    rtol: f64,
 ) -> f64 {
     let power = |seg: &Segment, t: f64| {
         let y = sc.xv(&seg.eval(t));
@@ -125,10 +131,10 @@ fn phase_work<L: ForceLaw>(
         }
         let h = tb - ta;
         // A long step (DOP853 covers a contact in ~10) is cut into pieces of at most
-        // MAX_PIECE: the power oscillates at twice the contact's frequency, and four points over
+        // max_piece(rtol): the power oscillates at twice the contact's frequency, and four points over
         // a whole step left the work 2e-7 off on a linear oscillator whose solution was right to
         // 1e-12.
-        let pieces = (h / MAX_PIECE).ceil().clamp(1.0, 64.0);
+        let pieces = (h / max_piece(rtol)).ceil().clamp(1.0, 64.0);
         let piece = h / pieces;
         let bounds =
             (0..pieces as usize).map(|j| (ta + j as f64 * piece, ta + (j + 1) as f64 * piece));
@@ -176,14 +182,21 @@ pub(crate) fn cycle_work<L: ForceLaw>(law: &L, sc: &Scales, run: &Run) -> f64 {
         let work = law.stored_energy(x_max, Phase::Loading) - given_back;
         return work / (0.5 * sc.mass * sc.v * sc.v);
     }
-    let dissipative = phase_work(law, sc, &run.loading, Phase::Loading, (0.0, run.t_switch))
-        + phase_work(
-            law,
-            &sc.without_shift(),
-            &run.unloading,
-            Phase::Unloading,
-            (run.t_switch, run.t_end),
-        );
+    let dissipative = phase_work(
+        law,
+        sc,
+        &run.loading,
+        Phase::Loading,
+        (0.0, run.t_switch),
+        run.rtol,
+    ) + phase_work(
+        law,
+        &sc.without_shift(),
+        &run.unloading,
+        Phase::Unloading,
+        (run.t_switch, run.t_end),
+        run.rtol,
+    );
     sc.energy(run.y_end[0], 0.0) + (sc.n + 1.0) * dissipative
 }
 

@@ -5,9 +5,10 @@ use serde::Serialize;
 use thiserror::Error;
 
 use crate::model::force::ForceModel;
+use crate::model::force::ImpactParams;
 use crate::model::impact::{SolveOptions, solve_impact};
 use crate::model::quasistatic::ContactGeometry;
-use crate::model::scene::Scene;
+use crate::model::scene::{Scene, SceneBodies};
 use crate::model::scene_key::{SceneKey, SceneKeyError};
 
 /// What to sweep and how.
@@ -110,9 +111,10 @@ pub fn sweep_until(
 ) -> Result<Option<Vec<SweepRow>>, SweepError> {
     // Fail early on a key that does not apply to this scene's shapes.
     let values = check(base, spec)?;
+    let plan = SweepPlan::new(base, spec);
     Ok(values
         .into_par_iter()
-        .map(|value| (!stop()).then(|| sweep_point(base, spec, value)))
+        .map(|value| (!stop()).then(|| plan.point(value)))
         .collect())
 }
 
@@ -123,66 +125,104 @@ pub fn check(base: &Scene, spec: &SweepSpec) -> Result<Vec<f64>, SweepError> {
     Ok(values)
 }
 
-/// One point of the sweep: the scene with the key set to `value`, its quasistatic numbers and
-/// every model's impact (or the error that stopped them).
-pub fn sweep_point(base: &Scene, spec: &SweepSpec, value: f64) -> SweepRow {
-    let mut scene = base.clone();
-    let invalid = |error: String| SweepRow {
-        value,
-        quasistatic: None,
-        impacts: Vec::new(),
-        error: Some(error),
-    };
-    if let Err(e) = spec.key.set(&mut scene, value) {
-        return invalid(e.to_string());
+/// A sweep ready to be solved point by point. When its key is an impact condition (v₀, e, x_pl)
+/// the bodies are evaluated once for every point: the numbers are the same as re-evaluating the
+/// scene at each point, which a sweep of a body's key does.
+pub struct SweepPlan<'a> {
+    base: &'a Scene,
+    spec: &'a SweepSpec,
+    /// The base scene's bodies, when the key leaves them unchanged.
+    bodies: Option<SceneBodies>,
+}
+
+impl<'a> SweepPlan<'a> {
+    pub fn new(base: &'a Scene, spec: &'a SweepSpec) -> Self {
+        let mut impact = base.impact;
+        let bodies = spec
+            .key
+            .impact_condition(&mut impact)
+            .map(|_| SceneBodies::of(base));
+        SweepPlan { base, spec, bodies }
     }
-    let qs = match scene.quasistatic() {
-        Ok(qs) => qs,
-        Err(e) => return invalid(e.to_string()),
-    };
-    let params = scene.impact_params(&qs);
-    let (contact_radius, half_width) = match qs.geometry {
-        ContactGeometry::Point { contact_radius } => (Some(contact_radius), None),
-        ContactGeometry::Line { half_width, .. } => (None, Some(half_width)),
-    };
-    let impacts = spec
-        .models
-        .iter()
-        .map(|&model| match solve_impact(model, &params, &spec.options) {
-            Ok(solution) => {
-                let s = solution.summary;
-                ImpactPoint {
-                    model,
-                    x_max: Some(s.x_max),
-                    f_max: Some(s.f_max),
-                    t_contact: Some(s.t_contact),
-                    v_out: Some(s.v_out),
-                    e_out: Some(s.e_out),
-                    error: None,
-                }
+
+    /// One point of the sweep: the scene with the key set to `value`, its quasistatic numbers and
+    /// every model's impact (or the error that stopped them).
+    pub fn point(&self, value: f64) -> SweepRow {
+        let invalid = |error: String| SweepRow {
+            value,
+            quasistatic: None,
+            impacts: Vec::new(),
+            error: Some(error),
+        };
+        let mut impact = self.base.impact;
+        let estimate = match (&self.bodies, self.spec.key.impact_condition(&mut impact)) {
+            (Some(bodies), Some(condition)) => {
+                *condition = value;
+                bodies.quasistatic(&impact)
             }
-            Err(e) => ImpactPoint {
+            _ => {
+                let mut scene = self.base.clone();
+                if let Err(e) = self.spec.key.set(&mut scene, value) {
+                    return invalid(e.to_string());
+                }
+                impact = scene.impact;
+                scene.quasistatic()
+            }
+        };
+        let qs = match estimate {
+            Ok(qs) => qs,
+            Err(e) => return invalid(e.to_string()),
+        };
+        let params = impact.params(&qs);
+        let (contact_radius, half_width) = match qs.geometry {
+            ContactGeometry::Point { contact_radius } => (Some(contact_radius), None),
+            ContactGeometry::Line { half_width, .. } => (None, Some(half_width)),
+        };
+        let impacts = self
+            .spec
+            .models
+            .iter()
+            .map(|&model| impact_point(model, &params, &self.spec.options))
+            .collect();
+        SweepRow {
+            value,
+            quasistatic: Some(QuasistaticPoint {
+                p_max: qs.p_max,
+                contact_radius,
+                half_width,
+                v_yield: qs.onset.v_yield,
+                v_plastic: qs.onset.v_plastic,
+            }),
+            impacts,
+            error: None,
+        }
+    }
+}
+
+/// `model`'s impact under `params`, or the error that stopped it.
+fn impact_point(model: ForceModel, params: &ImpactParams, options: &SolveOptions) -> ImpactPoint {
+    match solve_impact(model, params, options) {
+        Ok(solution) => {
+            let s = solution.summary;
+            ImpactPoint {
                 model,
-                x_max: None,
-                f_max: None,
-                t_contact: None,
-                v_out: None,
-                e_out: None,
-                error: Some(e.to_string()),
-            },
-        })
-        .collect();
-    SweepRow {
-        value,
-        quasistatic: Some(QuasistaticPoint {
-            p_max: qs.p_max,
-            contact_radius,
-            half_width,
-            v_yield: qs.onset.v_yield,
-            v_plastic: qs.onset.v_plastic,
-        }),
-        impacts,
-        error: None,
+                x_max: Some(s.x_max),
+                f_max: Some(s.f_max),
+                t_contact: Some(s.t_contact),
+                v_out: Some(s.v_out),
+                e_out: Some(s.e_out),
+                error: None,
+            }
+        }
+        Err(e) => ImpactPoint {
+            model,
+            x_max: None,
+            f_max: None,
+            t_contact: None,
+            v_out: None,
+            e_out: None,
+            error: Some(e.to_string()),
+        },
     }
 }
 
@@ -225,6 +265,48 @@ mod tests {
             rows.iter()
                 .all(|r| r.impacts.len() == 1 && r.error.is_none())
         );
+    }
+
+    #[test]
+    fn impact_keys_reuse_the_bodies_with_the_numbers_of_a_scene_evaluated_afresh() {
+        use crate::model::body::Shape;
+        let sphere = crate::model::scene::tests::fig5_scene();
+        let mut cylinder = sphere.clone();
+        cylinder.body1.shape = Shape::Cylinder {
+            radius: 0.02,
+            length: 0.1,
+        };
+        cylinder.body1.mass = Some(1.0);
+        // Each with invalid values: v₀ ≤ 0, e > 1, x_pl < 0, and a cylinder beyond eq 13/14 at 1e6 m/s.
+        let cases = [
+            (&sphere, SceneKey::V0, vec![-0.1, 1e-3, 0.3, 2.0]),
+            (&sphere, SceneKey::Restitution, vec![0.05, 0.6, 1.0, 1.5]),
+            (
+                &sphere,
+                SceneKey::PlasticIndentation,
+                vec![-1e-6, 0.0, 2.3e-6],
+            ),
+            (&cylinder, SceneKey::V0, vec![1e-3, 1.0, 1e6]),
+            (&cylinder, SceneKey::Restitution, vec![0.3, 1.2]),
+        ];
+        for (scene, key, values) in cases {
+            let mut spec = spec(0.1, 1.0, 2, false);
+            spec.key = key;
+            spec.models = vec![ForceModel::Quasistatic, ForceModel::HuntCrossley];
+            let plan = SweepPlan::new(scene, &spec);
+            assert!(plan.bodies.is_some(), "{key:?}");
+            let afresh = SweepPlan {
+                bodies: None,
+                ..SweepPlan::new(scene, &spec)
+            };
+            let mut failures = 0;
+            for value in values {
+                let row = plan.point(value);
+                assert_eq!(row, afresh.point(value), "{key:?} = {value}");
+                failures += usize::from(row.error.is_some());
+            }
+            assert_eq!(failures, 1, "{key:?}: one invalid value each");
+        }
     }
 
     #[test]
