@@ -173,9 +173,16 @@ fn check(
     assert_eq!(samples[0].t, 0.0);
     assert!((samples[0].v / p.v0 - 1.0).abs() < 1e-9);
     let peak = samples.iter().map(|q| q.f).fold(f64::MIN, f64::max);
-    // The peak is located to ~√ε in t, so an even sample may land nearer it by ~1e-14.
+    // The peak is located to ~√ε in t, so an even sample may land nearer it by ~1e-14; an exact
+    // solution's curves are integrated for the chart at rtol 1e-10, so their samples may pass
+    // its closed-form peak by that much (6.8e-12 on Kelvin–Voigt with tension, proptest).
+    let sampled = if s.method == MethodUsed::Exact {
+        1e-10
+    } else {
+        1e-12
+    };
     assert!(
-        (peak - s.f_max).abs() <= 1e-12 * s.f_max,
+        (peak - s.f_max).abs() <= sampled * s.f_max,
         "{model}: the chart's peak {peak} is the summary's {}",
         s.f_max
     );

@@ -229,7 +229,11 @@ pub(crate) fn summarize<L: ForceLaw>(
         End::Approach => 0.0,
         End::Tension => x_end.max(0.0) * sc.x,
     };
-    let tensile_cutoff = (run.end == End::Tension && law.contact_end() == ContactEnd::ApproachZero)
+    // A cutoff that fires where the approach has already returned to 0 (a creep back along
+    // F ≈ 0 that reaches the surface) is the ordinary end of contact.
+    let tensile_cutoff = (run.end == End::Tension
+        && law.contact_end() == ContactEnd::ApproachZero
+        && x_residual > 0.0)
         .then_some(TensileCutoff {
             t: run.t_end * sc.t,
             x: x_residual,
