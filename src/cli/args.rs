@@ -177,7 +177,7 @@ pub struct SolveArgs {
     /// Relative tolerance of the adaptive methods (default 1e-8).
     #[arg(long, value_name = "R", value_parser = positive_number, allow_hyphen_values = true)]
     pub rtol: Option<f64>,
-    /// Absolute tolerance of the adaptive methods, in scaled variables (default 1e-10).
+    /// Absolute tolerance of the adaptive methods, in scaled variables (default: tied to rtol).
     #[arg(long, value_name = "A", value_parser = positive_number, allow_hyphen_values = true)]
     pub atol: Option<f64>,
     /// Step of the fixed-step methods, s (default: the elastic contact time / 1000).

@@ -85,14 +85,6 @@ fn segment_peak(mut f: impl FnMut(f64) -> f64, ta: f64, tb: f64) -> (f64, f64) {
     }
 }
 
-/// ∫ F_d·ẋ dt over [t_lo, t_hi] of one phase, in units of F_ref·x_e (F_d the dissipative force).
-/// Each step's interpolant gets four-point Gauss–Legendre (its error, ~6e-10·(h·∂)^8 of the step's
-/// share, is far below any integrator's). Loading steps are integrated in s = √(T − T₀), which
-/// turns the xⁿ⁻¹ ∝ (T − T₀)ⁿ⁻¹ behaviour of first contact into a smooth integrand on every step,
-/// not only the first (the proposed model's damping is ∝ √x there, and steps a few lengths from
-/// first contact still feel it); the first step gets six points. The last step of unloading
-/// (separation) gets six points after the substitution T = T₀ + h·u²(3 − 2u). A loading phase
-/// integrated in (X, W) ([`Scales::shift`]) integrates the damping's work by parts.
 /// The longest stretch of scaled time (the contact lasts about 3) one four-point Gauss rule
 /// integrates at tolerance `rtol`: its error on a power oscillating at twice the contact's
 /// frequency is about (2·piece)⁸/4·10⁴, held under rtol (0.16 at 1e-8, one piece a DOP853 step;
@@ -101,6 +93,14 @@ fn max_piece(rtol: f64) -> f64 {
     (0.5 * (4e4 * rtol).powf(0.125)).clamp(0.02, 1.0)
 }
 
+/// ∫ F_d·ẋ dt over [t_lo, t_hi] of one phase, in units of F_ref·x_e (F_d the dissipative force).
+/// Each step's interpolant gets four-point Gauss–Legendre, over pieces of at most
+/// [`max_piece`] (a DOP853 step can span a tenth of the contact). Loading steps are integrated
+/// in s = √(T − T₀), which turns the xⁿ⁻¹ ∝ (T − T₀)ⁿ⁻¹ behaviour of first contact into a smooth integrand on every step,
+/// not only the first (the proposed model's damping is ∝ √x there, and steps a few lengths from
+/// first contact still feel it); the first step gets six points. The last step of unloading
+/// (separation) gets six points after the substitution T = T₀ + h·u²(3 − 2u). A loading phase
+/// integrated in (X, W) ([`Scales::shift`]) integrates the damping's work by parts.
 fn phase_work<L: ForceLaw>(
     law: &L,
     sc: &Scales,
@@ -131,13 +131,12 @@ fn phase_work<L: ForceLaw>(
         }
         let h = tb - ta;
         // A long step (DOP853 covers a contact in ~10) is cut into pieces of at most
-        // max_piece(rtol): the power oscillates at twice the contact's frequency, and four points over
-        // a whole step left the work 2e-7 off on a linear oscillator whose solution was right to
-        // 1e-12.
-        let pieces = (h / max_piece(rtol)).ceil().clamp(1.0, 64.0);
-        let piece = h / pieces;
-        let bounds =
-            (0..pieces as usize).map(|j| (ta + j as f64 * piece, ta + (j + 1) as f64 * piece));
+        // max_piece(rtol): the power oscillates at twice the contact's frequency, and four points
+        // over a whole step left the work 2e-7 off on a linear oscillator whose solution was
+        // right to 1e-12.
+        let count = (h / max_piece(rtol)).ceil().clamp(1.0, 64.0) as usize;
+        let piece = h / count as f64;
+        let bounds = (0..count).map(|j| (ta + j as f64 * piece, ta + (j + 1) as f64 * piece));
         if phase == Phase::Loading {
             let integrand = |s: f64| power(seg, t_lo + s * s) * 2.0 * s;
             for (pa, pb) in bounds {
@@ -150,7 +149,6 @@ fn phase_work<L: ForceLaw>(
             }
             continue;
         }
-        let count = pieces as usize;
         work += bounds
             .enumerate()
             .map(|(j, (pa, pb))| {
