@@ -3,14 +3,14 @@
 //!
 //! The Hunt–Crossley family in closed form: its e_out depends on χ = α·v₀ alone, through
 //! ln((1 + χ)/(1 − χ·e_out)) = χ·(1 + e_out), whatever n, k, m and v₀. Thornton's law by inverting
-//! his closed-form e(V). Every other law with a damping parameter by a bracketed root of
+//! his closed-form e(V) (spheres) or its line-contact counterpart (a quadrature). Every other law with a damping parameter by a bracketed root of
 //! e_out(d) − e over solves at tight tolerance.
 
 use thiserror::Error;
 
 use super::exact::special::{unloading_root, y_minus_log1p};
 use super::force::table::Family;
-use super::force::thornton::{Thornton, thornton_restitution};
+use super::force::thornton::Thornton;
 use super::force::{AnyLaw, Damping, DampingParam, ForceModel, ImpactParams};
 use super::impact::{ImpactError, MethodChoice, SolveOptions, solve_law};
 use super::numeric::roots::brent;
@@ -136,8 +136,8 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
         });
     }
     if model == THORNTON {
-        // Thornton's e(V) is closed-form (spheres, the only contact the law is built for).
-        let v_yield = Thornton::v_yield_for_restitution(target, params.v0);
+        // Thornton's e(V) is closed-form on spheres, a quadrature and a root on line contacts.
+        let v_yield = Thornton::v_yield_for_restitution(params, target);
         let law = build(v_yield)?;
         return Ok(Calibrated {
             law,
@@ -145,7 +145,7 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
                 param,
                 value: v_yield,
             },
-            e_out: thornton_restitution(v_yield / params.v0),
+            e_out: Thornton::restitution_of(params, v_yield),
         });
     }
     let opts = SolveOptions {

@@ -93,8 +93,8 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
     let lossless = e >= 1.0;
     let near_elastic = e >= NEAR_ELASTIC_RESTITUTION;
     let hysteresis = [ForceModel::LankaraniNikravesh, ForceModel::HuntCrossley];
-    // Thornton's elastic–plastic sphere also leaves a dent (docs/physics.md §6.6).
-    let thornton = (quasistatic.n == 1.5).then_some(ForceModel::with_id("thornton"));
+    // Thornton's elastic–plastic law also leaves a dent, on spheres and cylinders (docs/physics.md §6.6).
+    let thornton = ForceModel::with_id("thornton");
     let (model, others, gist, why): (ForceModel, Vec<ForceModel>, &'static str, String) =
         match regime {
             Regime::Elastic if lossless => (
@@ -136,7 +136,7 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
             ),
             Regime::YieldBegins if x_pl > 0.0 => (
                 ForceModel::Proposed,
-                thornton.into_iter().chain(hysteresis).collect(),
+                std::iter::once(thornton).chain(hysteresis).collect(),
                 "yield begins, a dent is kept",
                 "p₀ ≥ 1.1·σ_y: yield begins and the given x_pl > 0 says the surface keeps a dent: \
                  the proposed model (eq 18, §4.2) leaves it and exits near v₀e"

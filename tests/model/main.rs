@@ -18,6 +18,7 @@ mod laws_common;
 mod laws_kuwabara_kono;
 mod laws_line_exact;
 mod laws_thornton;
+mod laws_thornton_line;
 mod laws_viscous;
 mod ode_convergence;
 mod ode_crosscheck;

@@ -1,6 +1,6 @@
 //! What a law may need to know about the bodies beyond F = k·xⁿ and the reduced mass: the yield
 //! pressure and elastic constants of a point contact (Thornton, docs/physics.md §6.6) and the
-//! eq 13/14 geometry of a line contact (the exact line-contact law, §6.7). Built from the scene's
+//! yield pressure and eq 13/14 geometry of a line contact (the exact line-contact law, §6.7). Built from the scene's
 //! pair; parameters assembled by hand carry [`Contact::Unspecified`], and the laws that need the
 //! bodies refuse it by name.
 
@@ -20,6 +20,9 @@ pub enum Contact {
     /// Parallel cylinders, or a cylinder on a plane.
     Line {
         line: LineContact,
+        /// Limiting contact pressure p_y = 1.1·σ_y of the softer body on the strip's maximum
+        /// pressure p₀, Pa (eq 12; Thornton's law on a line contact, docs/physics.md §6.6).
+        yield_pressure: f64,
         /// Which bodies are cylinders, for messages ("body1 is a cylinder").
         bodies: &'static str,
     },
@@ -41,7 +44,11 @@ impl Contact {
     /// The contact of a validated pair.
     pub fn of(pair: &ContactPair) -> Contact {
         let line = |bodies| match LineContact::of(pair) {
-            Ok(line) => Contact::Line { line, bodies },
+            Ok(line) => Contact::Line {
+                line,
+                yield_pressure: YIELD_FACTOR * pair.yield_stress(),
+                bodies,
+            },
             Err(_) => Contact::Unspecified,
         };
         match pair.kind() {
@@ -60,10 +67,16 @@ impl Contact {
 
     /// A point contact's constants finite and positive (hand-built ones are checked too).
     pub fn validate(&self) -> Result<(), ModelError> {
-        if let Contact::Point(p) = self {
-            require_positive("contact.yield_pressure", p.yield_pressure)?;
-            require_positive("contact.modulus", p.modulus)?;
-            require_positive("contact.radius", p.radius)?;
+        match self {
+            Contact::Point(p) => {
+                require_positive("contact.yield_pressure", p.yield_pressure)?;
+                require_positive("contact.modulus", p.modulus)?;
+                require_positive("contact.radius", p.radius)?;
+            }
+            Contact::Line { yield_pressure, .. } => {
+                require_positive("contact.yield_pressure", *yield_pressure)?;
+            }
+            Contact::Unspecified => {}
         }
         Ok(())
     }

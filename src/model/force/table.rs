@@ -239,7 +239,7 @@ law_table! {
         id: "thornton",
         label: "Thornton 1997",
         short: "Thorn.",
-        source: "Thornton, J. Appl. Mech. 64 (1997), elastic–perfectly-plastic spheres; docs/physics.md §6.6",
+        source: "Thornton, J. Appl. Mech. 64 (1997), elastic–perfectly-plastic spheres (cylinders: the same construction on a strip); docs/physics.md §6.6",
         family: Family::Plastic,
         damping: Some(DampingParam {
             symbol: "v_y",

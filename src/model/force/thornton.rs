@@ -1,29 +1,119 @@
-//! Thornton's elastic–perfectly-plastic sphere (J. Appl. Mech. 64, 1997), docs/physics.md §6.6:
-//! Hertz up to the limiting pressure, then linear loading; Hertzian unloading with the enlarged
-//! radius, down to a residual indentation.
+//! Thornton's elastic–perfectly-plastic sphere (J. Appl. Mech. 64, 1997), and the same
+//! construction on a line contact, docs/physics.md §6.6: Hertz up to the limiting pressure, then
+//! the Hertz pressure capped at it; elastic unloading with the enlarged radius, down to a residual
+//! indentation.
+
+use std::f64::consts::PI;
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{Contact, ForceModel, ImpactParams};
+use crate::model::cylinder::pressure_law;
 use crate::model::error::ModelError;
 use crate::model::exact::ExactImpact;
+use crate::model::exact::gauss_jacobi::singular_at_end;
 use crate::model::numeric::roots::brent;
 
 /// Thornton's law with its yield velocity v_y (the impact speed at which Hertz contact first
 /// reaches the limiting pressure p_y). With x_y = the elastic x_max at v_y and F_y = k·x_yⁿ:
-/// loading F = k·xⁿ up to x_y, then F = F_y + k_p·(x − x_y) with k_p = n·k·x_yⁿ⁻¹ (= π·p_y·R for
-/// spheres); unloading F = k_u·(x − x_res)ⁿ with k_u = k·√(R_p/R),
-/// R_p/R = (k/F_max)·((2F_max + F_y)/(3k·√x_y))^{3/2}, passing through (x_max, F_max).
+/// loading F = k·xⁿ up to x_y, then the Hertz pressure capped at p_y ([`Cap`]); unloading
+/// F = k_u·(x − x_res)ⁿ, the elastic contact of enlarged radius R_p = λ·R that is as wide at
+/// F_max as the loaded one: λ = k·x_maxⁿ/F_max and k_u = k·λⁿ⁻¹ (= k·√(R_p/R) for spheres).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Thornton {
     params: ImpactParams,
     model: ForceModel,
+    cap: Cap,
     v_yield: f64,
     x_yield: f64,
     f_yield: f64,
-    k_plastic: f64,
     x_max: f64,
     k_unload: f64,
     x_residual: f64,
+}
+
+/// Where the capped pressure acts: a circle of radius a (spheres, Thornton 1997) or a strip of
+/// half-width b (cylinders, the same construction in two dimensions), docs/physics.md §6.6.
+/// Both follow Hertz's kinematics, a² = R·x or b² ∝ k·xⁿ, so with β = a/a_y or b/b_y the
+/// loaded contact is β times as wide as at first yield.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cap {
+    /// F = F_y·(3β² − 1)/2, β² = x/x_y: Thornton's F = F_y + π·p_y·R·(x − x_y).
+    Circle,
+    /// F = (2F_y/π)·(β²·arcsin(1/β) + √(β² − 1)), β = (x/x_y)^{n/2}: the strip's Hertz pressure
+    /// p₀·√(1 − s²/b²) capped at p_y and integrated across it (Johnson 1985, eq 4.45).
+    Strip,
+}
+
+impl Cap {
+    /// The plastic branch's force over F_y at ξ = x/x_y ≥ 1 for exponent n.
+    fn force_ratio(self, xi: f64, n: f64) -> f64 {
+        match self {
+            Cap::Circle => 0.5 * (3.0 * xi - 1.0),
+            Cap::Strip => {
+                let beta = xi.powf(0.5 * n);
+                2.0 / PI * (beta * beta * beta.recip().asin() + (beta * beta - 1.0).max(0.0).sqrt())
+            }
+        }
+    }
+
+    /// d(F/F_y)/dξ: 3/2, or (2/π)·n·β²·arcsin(1/β)/ξ (= n at ξ = 1: the loading is C¹ at yield).
+    fn slope_ratio(self, xi: f64, n: f64) -> f64 {
+        match self {
+            Cap::Circle => 1.5,
+            Cap::Strip => {
+                let beta2 = xi.powf(n);
+                2.0 / PI * n * beta2 * beta2.sqrt().recip().asin() / xi
+            }
+        }
+    }
+
+    /// ∫₁^ξ (F/F_y) dξ′, the plastic branch's work over F_y·x_y. The strip's integrand, in u with
+    /// β = cosh u, is (2/π)·(cosh²u·(π/2 − gd u) + sinh u)·(2/n)·cosh^{2/n−1}u·sinh u: analytic,
+    /// its nearest singularities at u = ±iπ/2, so 10 Gauss–Legendre nodes a unit panel reach
+    /// rounding.
+    fn work_ratio(self, xi: f64, n: f64) -> f64 {
+        match self {
+            Cap::Circle => {
+                let d = xi - 1.0;
+                d + 0.75 * d * d
+            }
+            Cap::Strip => {
+                let top = xi.powf(0.5 * n).max(1.0).acosh();
+                let integrand = |u: f64, _: f64, _: f64| {
+                    let (c, s) = (u.cosh(), u.sinh());
+                    let gd = s.atan();
+                    2.0 / PI * (c * c * (0.5 * PI - gd) + s) * (2.0 / n) * c.powf(2.0 / n - 1.0) * s
+                };
+                let panels = top.ceil().max(1.0);
+                let width = top / panels;
+                (0..panels as usize)
+                    .map(|i| {
+                        let a = i as f64 * width;
+                        singular_at_end(integrand, a, a + width, 0.0, 10)
+                    })
+                    .sum()
+            }
+        }
+    }
+
+    /// ξ_max ≥ 1 where the plastic work reaches `work` (over F_y·x_y).
+    fn approach_for_work(self, work: f64, n: f64) -> f64 {
+        if work <= 0.0 {
+            return 1.0;
+        }
+        match self {
+            // d + ¾d² = w.
+            Cap::Circle => 1.0 + 2.0 * work / (1.0 + (1.0 + 3.0 * work).sqrt()),
+            Cap::Strip => {
+                // The work grows at least as fast as ξ − 1 (F ≥ F_y on the branch).
+                let mut high = 1.0 + work;
+                while self.work_ratio(high, n) < work {
+                    high = 1.0 + 2.0 * (high - 1.0);
+                }
+                brent(|xi| self.work_ratio(xi, n) - work, 1.0, high).unwrap_or(high)
+            }
+        }
+    }
 }
 
 /// Thornton's e(V) above the yield velocity, q = V_y/V ∈ (0, 1]:
@@ -38,69 +128,74 @@ pub fn thornton_restitution(q: f64) -> f64 {
         * (q / (q + 2.0 * root)).powf(0.25)
 }
 
-/// The refusal of a line contact, naming the cylinder body (docs/physics.md §6.6).
-fn line_contact_refused(bodies: &str) -> ModelError {
+/// The restitution of Thornton's construction at q = V_y/V for a contact F = k·xⁿ capped as
+/// `cap` (docs/physics.md §6.6): it depends on q and n alone. In units x_y = F_y = 1, the impact
+/// energy is 1/((n + 1)·q²); ξ_max from the work, λ = ξ_maxⁿ/F_max, and the rebound returns
+/// F_max·(ξ_max − ξ_res)/(n + 1) with ξ_max − ξ_res = (F_max/λⁿ⁻¹)^{1/n}. For the circle and
+/// n = 3/2 it is [`thornton_restitution`]; for the strip it is the oracle and the calibration's.
+pub fn capped_restitution(cap: Cap, q: f64, n: f64) -> f64 {
+    if q >= 1.0 {
+        return 1.0;
+    }
+    let energy = 1.0 / ((n + 1.0) * q * q);
+    let xi_max = cap.approach_for_work(energy - 1.0 / (n + 1.0), n);
+    let f_max = cap.force_ratio(xi_max, n);
+    let lambda = xi_max.powf(n) / f_max;
+    let span = (f_max / lambda.powf(n - 1.0)).powf(1.0 / n);
+    (f_max * span / (n + 1.0) / energy).sqrt()
+}
+
+/// The refusal of a contact whose n is not Hertz's (spheres, by hand without a scene).
+fn exponent_refused(n: f64) -> ModelError {
     ModelError::OutOfDomain {
         formula: "Thornton (1997) elastic–perfectly-plastic law",
         detail: format!(
-            "{bodies}: the law's limiting pressure and enlarged unloading radius are Hertz's \
-             sphere geometry, and no line-contact counterpart is derived here; use a viscous law \
-             (proposed, hertz-viscous) for cylinders"
+            "on a point contact it is Hertz's sphere (n = 3/2), and these parameters have n = {n}"
         ),
     }
 }
 
 impl Thornton {
-    /// The law with yield velocity `v_yield`, m/s. Spheres only (n = 3/2): the enlarged unloading
-    /// radius is Hertz's sphere geometry; a line contact is refused naming its cylinder.
+    /// The law with yield velocity `v_yield`, m/s: the circle cap on spheres (n = 3/2), the strip
+    /// cap on line contacts (any n of the scene's fit); parameters without a scene are a sphere's.
     pub fn new(model: ForceModel, params: &ImpactParams, v_yield: f64) -> Result<Self, ModelError> {
-        if let Contact::Line { bodies, .. } = params.contact {
-            return Err(line_contact_refused(bodies));
-        }
-        if params.law.n != 1.5 {
-            return Err(ModelError::OutOfDomain {
-                formula: "Thornton (1997) elastic–perfectly-plastic law",
-                detail: format!(
-                    "it is for spheres (n = 3/2), this contact has n = {}",
-                    params.law.n
-                ),
-            });
-        }
+        let cap = match params.contact {
+            Contact::Line { .. } => Cap::Strip,
+            Contact::Point(_) | Contact::Unspecified => {
+                if params.law.n != 1.5 {
+                    return Err(exponent_refused(params.law.n));
+                }
+                Cap::Circle
+            }
+        };
         let (k, n, m, v0) = (params.law.k, params.law.n, params.mass, params.v0);
+        let elastic = v_yield >= v0;
         let x_yield = params.law.max_approach(m, v_yield.min(v0));
         let f_yield = k * x_yield.powf(n);
-        let k_plastic = n * k * x_yield.powf(n - 1.0);
-        // ½mv₀² = k·x_y^{n+1}/(n+1) + F_y·d + ½k_p·d², d = x_max − x_y.
-        let rest = 0.5 * m * v0 * v0 - k * x_yield.powf(n + 1.0) / (n + 1.0);
-        let d = if rest > 0.0 && k_plastic > 0.0 {
-            2.0 * rest / (f_yield + (f_yield * f_yield + 2.0 * k_plastic * rest).sqrt())
+        let (x_max, f_max) = if elastic || x_yield == 0.0 {
+            let x_max = params.law.max_approach(m, v0);
+            (x_max, params.law.force(x_max))
         } else {
-            0.0
+            // ½mv₀² = k·x_y^{n+1}/(n+1) + the plastic work from x_y to x_max.
+            let unit = f_yield * x_yield;
+            let plastic = (0.5 * m * v0 * v0 - k * x_yield.powf(n + 1.0) / (n + 1.0)) / unit;
+            let xi = cap.approach_for_work(plastic, n);
+            (x_yield * xi, f_yield * cap.force_ratio(xi, n))
         };
-        let x_max = if v_yield >= v0 {
-            params.law.max_approach(m, v0)
-        } else {
-            x_yield + d
-        };
-        let f_max = if v_yield >= v0 {
-            params.law.force(x_max)
-        } else {
-            f_yield + k_plastic * d
-        };
-        let ratio = if v_yield >= v0 || x_yield == 0.0 {
+        let lambda = if elastic || x_yield == 0.0 {
             1.0
         } else {
-            (k / f_max) * ((2.0 * f_max + f_yield) / (3.0 * k * x_yield.sqrt())).powf(1.5)
+            (k * x_max.powf(n) / f_max).max(1.0)
         };
-        let k_unload = k * ratio.sqrt();
+        let k_unload = k * lambda.powf(n - 1.0);
         let x_residual = x_max - (f_max / k_unload).powf(1.0 / n);
         Ok(Thornton {
             params: *params,
             model,
+            cap,
             v_yield,
-            x_yield: if v_yield >= v0 { x_max } else { x_yield },
+            x_yield: if elastic { x_max } else { x_yield },
             f_yield,
-            k_plastic,
             x_max,
             k_unload,
             x_residual: x_residual.max(0.0),
@@ -121,13 +216,23 @@ impl Thornton {
     }
 
     /// Thornton's V_y from the material: the impact speed at which the Hertz pressure p₀ first
-    /// reaches p_y, i.e. x_y = R·(π·p_y/(2E*))² (p₀ = (2E*/π)·√(x/R)) and ½mV_y² = k·x_y^{5/2}/(5/2)
-    /// (Thornton 1997; his V_y = 1.56·(p_y⁵/(E*⁴ρ))^{1/2} for a sphere on a plane), docs/physics.md
-    /// §6.6. With p_y = 1.1·σ_y it is the paper's yield-onset speed v₀y.
+    /// reaches p_y. Spheres: x_y = R·(π·p_y/(2E*))² (p₀ = (2E*/π)·√(x/R)) and
+    /// ½mV_y² = k·x_y^{5/2}/(5/2) (Thornton 1997; his V_y = 1.56·(p_y⁵/(E*⁴ρ))^{1/2} for a sphere
+    /// on a plane). Cylinders: F_y = π·L·η·R·p_y² (eq 12 inverted) on the scene's k·xⁿ. With
+    /// p_y = 1.1·σ_y both are the paper's yield-onset speed v₀y, docs/physics.md §6.6.
     pub fn default_v_yield(params: &ImpactParams) -> Result<f64, ModelError> {
-        let point = match params.contact {
-            Contact::Point(point) => point,
-            Contact::Line { bodies, .. } => return Err(line_contact_refused(bodies)),
+        let f_yield = match params.contact {
+            Contact::Point(point) => {
+                let x_yield =
+                    point.radius * (PI * point.yield_pressure / (2.0 * point.modulus)).powi(2);
+                params.law.force(x_yield)
+            }
+            Contact::Line {
+                line,
+                yield_pressure,
+                ..
+            } => pressure_law(line.eta(), line.reduced_radius(), line.length())
+                .force_at_pressure(yield_pressure),
             Contact::Unspecified => {
                 return Err(ModelError::OutOfDomain {
                     formula: "Thornton (1997) elastic–perfectly-plastic law",
@@ -138,19 +243,35 @@ impl Thornton {
                 });
             }
         };
-        let x_yield = point.radius
-            * (std::f64::consts::PI * point.yield_pressure / (2.0 * point.modulus)).powi(2);
-        Ok(params
-            .law
-            .velocity_for_force(params.mass, params.law.force(x_yield)))
+        Ok(params.law.velocity_for_force(params.mass, f_yield))
     }
 
-    /// The v_y at which Thornton's e(V) at `v0` is `e` (calibration, docs/physics.md §6.4).
-    pub fn v_yield_for_restitution(e: f64, v0: f64) -> f64 {
+    /// The v_y at which the law's e(V) at `v0` is `e` (calibration, docs/physics.md §6.4):
+    /// Thornton's closed form inverted on spheres, [`capped_restitution`] on line contacts.
+    pub fn v_yield_for_restitution(params: &ImpactParams, e: f64) -> f64 {
+        let v0 = params.v0;
         if e >= 1.0 {
             return v0;
         }
-        brent(|q| thornton_restitution(q) - e, 1e-12, 1.0).unwrap_or(1.0) * v0
+        let q = match params.contact {
+            Contact::Line { .. } => brent(
+                |q| capped_restitution(Cap::Strip, q, params.law.n) - e,
+                1e-12,
+                1.0,
+            ),
+            _ => brent(|q| thornton_restitution(q) - e, 1e-12, 1.0),
+        };
+        q.unwrap_or(1.0) * v0
+    }
+
+    /// The restitution the law gives at `params` with yield velocity `v_yield`: Thornton's closed
+    /// form on spheres, [`capped_restitution`] on line contacts.
+    pub fn restitution_of(params: &ImpactParams, v_yield: f64) -> f64 {
+        let q = v_yield / params.v0;
+        match params.contact {
+            Contact::Line { .. } => capped_restitution(Cap::Strip, q, params.law.n),
+            _ => thornton_restitution(q),
+        }
     }
 
     /// The yield velocity v_y, m/s.
@@ -161,6 +282,11 @@ impl Thornton {
     /// The residual indentation after unloading, m.
     pub fn x_residual(&self) -> f64 {
         self.x_residual
+    }
+
+    /// How the pressure is capped: a circle (spheres) or a strip (line contacts).
+    pub fn cap(&self) -> Cap {
+        self.cap
     }
 
     fn yielded(&self) -> bool {
@@ -177,12 +303,13 @@ impl ForceLaw for Thornton {
         &self.params
     }
 
-    /// Loading: k·xⁿ, then F_y + k_p·(x − x_y); unloading: k_u·(x − x_res)ⁿ (Thornton 1997).
+    /// Loading: k·xⁿ, then the capped pressure's force; unloading: k_u·(x − x_res)ⁿ (Thornton
+    /// 1997; docs/physics.md §6.6).
     fn phase_force(&self, x: f64, _v: f64, phase: Phase) -> f64 {
         let law = self.params.law;
         match phase {
             Phase::Loading if x > self.x_yield => {
-                self.f_yield + self.k_plastic * (x - self.x_yield)
+                self.f_yield * self.cap.force_ratio(x / self.x_yield, law.n)
             }
             Phase::Unloading if self.yielded() => {
                 self.k_unload * signed_pow_n(x - self.x_residual, law.n)
@@ -199,7 +326,9 @@ impl ForceLaw for Thornton {
     fn partials(&self, x: f64, _v: f64, phase: Phase) -> (f64, f64) {
         let law = self.params.law;
         let dfdx = match phase {
-            Phase::Loading if x > self.x_yield => self.k_plastic,
+            Phase::Loading if x > self.x_yield => {
+                self.f_yield / self.x_yield * self.cap.slope_ratio(x / self.x_yield, law.n)
+            }
             Phase::Unloading if self.yielded() => {
                 law.n * self.k_unload * abs_pow_nm1(x - self.x_residual, law.n)
             }
@@ -213,15 +342,15 @@ impl ForceLaw for Thornton {
         true
     }
 
-    /// Loading: Hertz's k·x^{n+1}/(n+1) up to x_y, then + F_y·d + ½k_p·d² (d = x − x_y);
-    /// unloading: k_u·(x − x_res)^{n+1}/(n+1), what the rebound gives back.
+    /// Loading: Hertz's k·x^{n+1}/(n+1) up to x_y, then + the capped branch's work
+    /// ([`Cap`]); unloading: k_u·(x − x_res)^{n+1}/(n+1), what the rebound gives back.
     fn stored_energy(&self, x: f64, phase: Phase) -> f64 {
         let (k, n) = (self.params.law.k, self.params.law.n);
         let hertz = |x: f64| k * x * x * abs_pow_nm1(x, n) / (n + 1.0);
         match phase {
             Phase::Loading if x > self.x_yield => {
-                let d = x - self.x_yield;
-                hertz(self.x_yield) + self.f_yield * d + 0.5 * self.k_plastic * d * d
+                hertz(self.x_yield)
+                    + self.f_yield * self.x_yield * self.cap.work_ratio(x / self.x_yield, n)
             }
             Phase::Unloading if self.yielded() => {
                 let u = (x - self.x_residual).max(0.0);
