@@ -79,6 +79,9 @@ impl Cap {
             }
             Cap::Strip => {
                 let top = xi.powf(0.5 * n).max(1.0).acosh();
+                if !top.is_finite() {
+                    return f64::INFINITY;
+                }
                 let integrand = |u: f64, _: f64, _: f64| {
                     let (c, s) = (u.cosh(), u.sinh());
                     let gd = s.atan();
@@ -98,8 +101,11 @@ impl Cap {
 
     /// ξ_max ≥ 1 where the plastic work reaches `work` (over F_y·x_y).
     fn approach_for_work(self, work: f64, n: f64) -> f64 {
-        if work <= 0.0 {
+        if work <= 0.0 || work.is_nan() {
             return 1.0;
+        }
+        if work == f64::INFINITY {
+            return f64::INFINITY;
         }
         match self {
             // d + ¾d² = w.
@@ -107,7 +113,7 @@ impl Cap {
             Cap::Strip => {
                 // The work grows at least as fast as ξ − 1 (F ≥ F_y on the branch).
                 let mut high = 1.0 + work;
-                while self.work_ratio(high, n) < work {
+                while high.is_finite() && self.work_ratio(high, n) < work {
                     high = 1.0 + 2.0 * (high - 1.0);
                 }
                 brent(|xi| self.work_ratio(xi, n) - work, 1.0, high).unwrap_or(high)
@@ -189,6 +195,15 @@ impl Thornton {
         };
         let k_unload = k * lambda.powf(n - 1.0);
         let x_residual = x_max - (f_max / k_unload).powf(1.0 / n);
+        if !(x_max.is_finite() && f_max.is_finite() && x_residual.is_finite()) {
+            return Err(ModelError::OutOfDomain {
+                formula: "Thornton (1997) elastic–perfectly-plastic law",
+                detail: format!(
+                    "the impact energy ½·m·v₀² = {:e} J is beyond what the law can store in f64",
+                    0.5 * m * v0 * v0
+                ),
+            });
+        }
         Ok(Thornton {
             params: *params,
             model,
