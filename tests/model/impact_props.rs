@@ -77,7 +77,7 @@ fn resolved(model: ForceModel, p: &ImpactParams) -> bool {
     lambda * dt < 0.05
 }
 
-fn check(
+pub fn check(
     model: ForceModel,
     p: &ImpactParams,
     opts: &SolveOptions,

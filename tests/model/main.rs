@@ -4,6 +4,7 @@
 #[allow(dead_code)]
 mod ode_common;
 
+mod bodies_props;
 mod calibration;
 mod dry_friction_cutoff;
 mod engines;

@@ -148,6 +148,12 @@ macro_rules! law_table {
                     $(AnyLaw::$variant(l) => l.rate_independent()),*
                 }
             }
+
+            fn loading_breakpoint(&self) -> Option<f64> {
+                match self {
+                    $(AnyLaw::$variant(l) => l.loading_breakpoint()),*
+                }
+            }
         }
     };
 }

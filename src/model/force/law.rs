@@ -94,6 +94,13 @@ pub trait ForceLaw {
         0.0
     }
 
+    /// An approach x, m, past which the loading force is not smooth (Thornton's first yield, where
+    /// the capped pressure sets in): adaptive methods stop there and start a fresh step, so that
+    /// no step straddles it and fools its error estimate. `None` for smooth laws.
+    fn loading_breakpoint(&self) -> Option<f64> {
+        None
+    }
+
     /// Whether F depends on x alone within each phase (a rate-independent hysteresis such as
     /// Thornton's), so that ∮F dx over an impact is exact from [`ForceLaw::stored_energy`]: no
     /// quadrature has to resolve the kink where such a law changes branch.

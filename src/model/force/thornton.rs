@@ -352,6 +352,11 @@ impl ForceLaw for Thornton {
         (dfdx, 0.0)
     }
 
+    /// First yield: the force's curvature jumps there (spheres) or grows as 1/√(x − x_y) (strips).
+    fn loading_breakpoint(&self) -> Option<f64> {
+        self.yielded().then_some(self.x_yield)
+    }
+
     /// Loading and unloading are each a force of x alone (Thornton 1997).
     fn rate_independent(&self) -> bool {
         true

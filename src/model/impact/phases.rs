@@ -104,22 +104,54 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         max_steps: ro.max_steps,
     };
 
-    // Loading: from first contact to maximum compression.
+    // Loading: from first contact to maximum compression, restarting at the law's breakpoint.
     let at_rest = |_: f64, y: &State| sc.velocity(y);
-    let loading_events = [Event {
-        g: &at_rest,
-        direction: Direction::Falling,
-    }];
+    let breakpoint = law
+        .loading_breakpoint()
+        .filter(|_| ro.method.is_adaptive())
+        .map(|x| x / sc.x);
+    let past_breakpoint = |_: f64, y: &State| y[0] - breakpoint.unwrap_or(f64::INFINITY);
+    let loading_events = [
+        Event {
+            g: &at_rest,
+            direction: Direction::Falling,
+        },
+        Event {
+            g: &past_breakpoint,
+            direction: Direction::Rising,
+        },
+    ];
     let mut sys = ImpactSystem::new(law, Phase::Loading, *sc);
-    let loading = ode::integrate(
-        ro.method,
-        &mut sys,
-        0.0,
-        sc.xw(0.0, 1.0),
-        &loading_events,
-        &opts,
-    )
-    .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    let events = if breakpoint.is_some() {
+        &loading_events[..]
+    } else {
+        &loading_events[..1]
+    };
+    let mut loading = ode::integrate(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
+        .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    if loading.stop == (Stop::Event { index: 1 }) {
+        let spent = loading.stats.steps + loading.stats.rejected_steps;
+        let rest = ode::Options {
+            max_steps: ro.max_steps.saturating_sub(spent).max(1),
+            ..opts
+        };
+        let tail = ode::integrate(
+            ro.method,
+            &mut sys,
+            loading.t,
+            loading.y,
+            &loading_events[..1],
+            &rest,
+        )
+        .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+        for segment in tail.dense.segments() {
+            loading.dense.push(segment.clone());
+        }
+        loading.stats += tail.stats;
+        loading.t = tail.t;
+        loading.y = tail.y;
+        loading.stop = tail.stop;
+    }
     if loading.stop == Stop::TimeLimit {
         return Err(no_separation);
     }
