@@ -2,11 +2,13 @@
 //! the exact line-contact law): random scenes built from the presets with their radius, length,
 //! yield stress, mass and v₀ varied, every method and tolerance. Each solve terminates with
 //! finite results and a residual below its tolerance, or a typed error; `auto` on Thornton
-//! always succeeds, and its rebound is the law's own e(q, n) (docs/physics.md §6.6).
+//! always succeeds, its rebound is the law's own e(q, n) (docs/physics.md §6.6), and calibrated
+//! it realises the requested e.
 
+use hertz_tui::model::calibrate::calibrate;
 use hertz_tui::model::force::thornton::Thornton;
 use hertz_tui::model::force::{ForceModel, ImpactParams};
-use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_impact};
+use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_impact, solve_law};
 use hertz_tui::model::ode::Method;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::{Scene, Shape};
@@ -107,5 +109,33 @@ proptest! {
         // v_y, e ≈ 0.02 and its relative error is 1/e times larger).
         prop_assert!((s.e_out - expected).abs() < 1e-4, "{p:?}: {} vs {expected}", s.e_out);
         check(model, &p, &opts, Ok(solution));
+    }
+    #[test]
+    fn thornton_calibrates_to_the_requested_e_on_random_bodies(
+        preset in prop::sample::select(PRESETS.to_vec()),
+        size in -1.0..1.0f64,
+        log_sigma in 8.0..9.5f64,
+        mass in -1.0..1.0f64,
+        log_v0 in -3.0..1.0f64,
+        e in 0.01..0.99f64,
+    ) {
+        let p = scene_params(preset, 10f64.powf(size), log_sigma, 10f64.powf(mass), log_v0);
+        prop_assume!(p.is_some());
+        let p = ImpactParams { restitution: e, ..p.unwrap() };
+        let model = ForceModel::with_id("thornton");
+        let c = calibrate(model, &p);
+        prop_assert!(c.is_ok(), "{p:?}: {:?}", c.as_ref().err());
+        let c = c.unwrap();
+        prop_assert!((c.e_out / e - 1.0).abs() < 1e-10, "{p:?}: {} vs {e}", c.e_out);
+        // An independent integration of the calibrated law: v_out within 100·rtol·v₀.
+        let opts = SolveOptions {
+            method: MethodChoice::Integrator(Method::Dop853),
+            rtol: 1e-10,
+            ..SolveOptions::default()
+        };
+        let s = solve_law(&c.law, &opts);
+        prop_assert!(s.is_ok(), "{p:?}: {:?}", s.as_ref().err());
+        let e_out = s.unwrap().summary.e_out;
+        prop_assert!((e_out - e).abs() < 1e-8, "{p:?}: DOP853 {e_out} vs {e}");
     }
 }

@@ -149,6 +149,12 @@ macro_rules! law_table {
                 }
             }
 
+            fn unloading_at_turn(&self, x_turn: f64) -> Self {
+                match self {
+                    $(AnyLaw::$variant(l) => AnyLaw::$variant(l.unloading_at_turn(x_turn))),*
+                }
+            }
+
             fn loading_breakpoint(&self) -> Option<f64> {
                 match self {
                     $(AnyLaw::$variant(l) => l.loading_breakpoint()),*

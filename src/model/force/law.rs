@@ -42,7 +42,8 @@ pub enum ContactEnd {
 }
 
 /// One contact-force law F(x, ẋ) with its parameters resolved from an [`ImpactParams`], SI units.
-pub trait ForceLaw {
+/// A law is a handful of numbers, copied freely (the solver re-anchors a hysteresis by value).
+pub trait ForceLaw: Copy {
     /// Which law this is.
     fn model(&self) -> ForceModel;
 
@@ -92,6 +93,13 @@ pub trait ForceLaw {
     /// instead of ẋ, whose √x damping at first contact costs adaptive methods their order.
     fn impulse_coefficient(&self) -> f64 {
         0.0
+    }
+
+    /// The law as it unloads from the turning point x_turn (m) the integration reached: a
+    /// rate-independent hysteresis (Thornton's) defines its unloading branch by the state at
+    /// maximum compression. The law itself for every other law.
+    fn unloading_at_turn(&self, _x_turn: f64) -> Self {
+        *self
     }
 
     /// An approach x, m, past which the loading force is not smooth (Thornton's first yield, where

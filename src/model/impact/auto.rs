@@ -124,6 +124,11 @@ fn finish<L: ForceLaw>(
     run: Run,
     method: Method,
 ) -> ImpactSolution {
+    let x_turn = run.x_turn(sc);
+    let (law, any) = (
+        &law.unloading_at_turn(x_turn),
+        any.unloading_at_turn(x_turn),
+    );
     let summary = summarize(law, sc, &run, MethodUsed::Integrator(method));
     let trajectory = Trajectory::integrated(any, *sc, run, &summary);
     ImpactSolution {

@@ -278,6 +278,11 @@ fn solve_with<L: ForceLaw>(
                 max_steps: opts.max_steps,
             };
             let run = phases::run(law, scales, &ro)?;
+            let x_turn = run.x_turn(scales);
+            let (law, any) = (
+                &law.unloading_at_turn(x_turn),
+                any.unloading_at_turn(x_turn),
+            );
             let summary = summary::summarize(law, scales, &run, MethodUsed::Integrator(method));
             let trajectory = Trajectory::integrated(any, *scales, run, &summary);
             Ok(ImpactSolution {

@@ -55,6 +55,18 @@ pub(crate) struct Run {
     pub rtol: f64,
 }
 
+impl Run {
+    /// The approach at maximum compression, m: where the unloading of a rate-independent
+    /// hysteresis is anchored ([`ForceLaw::unloading_at_turn`]).
+    pub fn x_turn(&self, sc: &Scales) -> f64 {
+        run_x_turn(&self.y_switch, sc)
+    }
+}
+
+fn run_x_turn(y_switch: &State, sc: &Scales) -> f64 {
+    y_switch[0] * sc.x
+}
+
 /// Turns an integrator error in scaled time into one in seconds; an abort by the energy guard
 /// becomes [`ImpactError::EnergyGrowth`].
 fn impact_error(method: Method, err: OdeError, t_ref: f64, growth: Option<f64>) -> ImpactError {
@@ -187,8 +199,18 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         .last()
         .map(|seg| seg.t_end() - seg.t_start())
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());
-    let approach = |_: f64, y: &State| y[0];
-    let tension = |_: f64, y: &State| law.tension(y[0] * sc.x, y[1] * sc.v);
+    // Unloading from the turning point reached, as a rate-independent hysteresis defines it.
+    let law = &law.unloading_at_turn(run_x_turn(&y_switch, sc));
+    // A rate-independent hysteresis unloads over a span x_max − x_res that may be 10⁻⁴ of x_max
+    // (Thornton far above v_y): integrated in X − X_turn, its step control weighs errors against
+    // that span, not against x_max, and the rebound keeps the tolerance asked.
+    let offset = if law.rate_independent() {
+        y_switch[0]
+    } else {
+        0.0
+    };
+    let approach = |_: f64, y: &State| y[0] + offset;
+    let tension = |_: f64, y: &State| law.tension((y[0] + offset) * sc.x, y[1] * sc.v);
     let watch_tension = law.may_turn_tensile() || law.contact_end() == ContactEnd::ForceZero;
     let all_events = [
         Event {
@@ -206,15 +228,19 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         &all_events[..1]
     };
     let mut sys = ImpactSystem::new(law, Phase::Unloading, usc);
-    let unloading = ode::integrate(
+    sys.x_offset = offset;
+    let shift = State::new(offset, 0.0);
+    let mut unloading = ode::integrate(
         ro.method,
         &mut sys,
         t_switch,
-        y_switch,
+        y_switch - shift,
         unloading_events,
         &opts,
     )
     .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    unloading.dense.shift(shift);
+    unloading.y += shift;
     force_evals += sys.force_evals;
     stats += unloading.stats;
     let end = match unloading.stop {

@@ -26,6 +26,9 @@ pub(crate) struct ImpactSystem<'a, L> {
     pub force_evals: usize,
     /// Set when the energy guard stopped the integration: the growth as a fraction of ½mv₀².
     pub growth: Option<f64>,
+    /// X_off: the state's first component is X − X_off (shift = 0 only), so that the step control
+    /// weighs errors against the span travelled rather than against x itself.
+    pub x_offset: f64,
 }
 
 impl<'a, L: ForceLaw> ImpactSystem<'a, L> {
@@ -36,6 +39,7 @@ impl<'a, L: ForceLaw> ImpactSystem<'a, L> {
             scales,
             force_evals: 0,
             growth: None,
+            x_offset: 0.0,
         }
     }
 }
@@ -46,7 +50,9 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
         self.force_evals += 1;
         let sc = &self.scales;
         if sc.shift == 0.0 {
-            let f = self.law.phase_force(y[0] * sc.x, y[1] * sc.v, self.phase);
+            let f = self
+                .law
+                .phase_force((y[0] + self.x_offset) * sc.x, y[1] * sc.v, self.phase);
             State::new(y[1], -sc.accel * f)
         } else {
             // k·xⁿ/F_ref = Xⁿ, and accel·F_ref = (n+1)/2.
@@ -61,7 +67,7 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
     /// stand-in costs nothing in accuracy.
     fn jacobian(&mut self, _t: f64, y: &State) -> Matrix2<f64> {
         let sc = &self.scales;
-        let x = y[0].max(1e-3);
+        let x = (y[0] + self.x_offset).max(1e-3);
         if sc.shift == 0.0 {
             let (fx, fv) = self.law.partials(x * sc.x, y[1] * sc.v, self.phase);
             Matrix2::new(0.0, 1.0, -sc.accel * sc.x * fx, -sc.accel * sc.v * fv)
@@ -75,7 +81,9 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
         // ½mẋ² plus what the law stores, over ½mv₀²: Hertz's k·x^{n+1}/(n+1) for most laws.
         let sc = &self.scales;
         let v = sc.velocity(y);
-        let stored = self.law.stored_energy(y[0] * sc.x, self.phase);
+        let stored = self
+            .law
+            .stored_energy((y[0] + self.x_offset) * sc.x, self.phase);
         let energy = v * v + stored / (0.5 * sc.mass * sc.v * sc.v);
         if energy > ENERGY_LIMIT {
             self.growth = Some(energy - 1.0);

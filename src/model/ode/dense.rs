@@ -90,6 +90,20 @@ impl Segment {
         }
     }
 
+    /// The same interpolant moved by `dy`: every form here is an end state plus terms that vanish
+    /// with the state's differences, so adding `dy` to the stored end states shifts it exactly.
+    pub fn shift(&mut self, dy: State) {
+        match self {
+            Segment::Hermite { y0, y1, .. }
+            | Segment::Dopri5 { y0, y1, .. }
+            | Segment::Dop853 { y0, y1, .. }
+            | Segment::Radau5 { y0, y1, .. } => {
+                *y0 += dy;
+                *y1 += dy;
+            }
+        }
+    }
+
     /// The interpolated state at t inside the segment; t outside is clamped to the segment, and
     /// the step ends return the stored states exactly.
     pub fn eval(&self, t: f64) -> State {
@@ -187,6 +201,13 @@ impl DenseOutput {
 
     pub fn is_empty(&self) -> bool {
         self.segments.is_empty()
+    }
+
+    /// The whole solution moved by `dy` (an integration done in shifted coordinates).
+    pub fn shift(&mut self, dy: State) {
+        for segment in &mut self.segments {
+            segment.shift(dy);
+        }
     }
 
     /// Keeps the solution up to t (the located event) and drops what lies beyond; the covered
