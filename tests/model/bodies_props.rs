@@ -14,7 +14,7 @@ use hertz_tui::model::presets::Registry;
 use hertz_tui::model::{Scene, Shape};
 use proptest::prelude::*;
 
-use crate::impact_props::check;
+use crate::impact_props::{any_method, check, solve_and_check};
 
 const PRESETS: [&str; 3] = [
     "fig5-steel-sphere-r10-plate",
@@ -52,13 +52,6 @@ fn scene_params(
     Some(scene.impact_params(&quasistatic))
 }
 
-fn any_method() -> impl Strategy<Value = MethodChoice> {
-    prop_oneof![
-        3 => Just(MethodChoice::Auto),
-        1 => prop::sample::select(Method::ALL.to_vec()).prop_map(MethodChoice::Integrator),
-    ]
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
 
@@ -76,14 +69,7 @@ proptest! {
         let p = scene_params(preset, 10f64.powf(size), log_sigma, 10f64.powf(mass), log_v0);
         prop_assume!(p.is_some());
         let p = p.unwrap();
-        let model = ForceModel::with_id(model);
-        let opts = SolveOptions {
-            method,
-            rtol: 10f64.powf(log_rtol),
-            atol: Some(10f64.powf(log_rtol)),
-            ..SolveOptions::default()
-        };
-        check(model, &p, &opts, solve_impact(model, &p, &opts));
+        solve_and_check(ForceModel::with_id(model), &p, method, log_rtol);
     }
 
     #[test]

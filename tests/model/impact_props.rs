@@ -42,7 +42,7 @@ fn any_model() -> impl Strategy<Value = ForceModel> {
     prop::sample::select(ForceModel::ALL.to_vec())
 }
 
-fn any_method() -> impl Strategy<Value = MethodChoice> {
+pub fn any_method() -> impl Strategy<Value = MethodChoice> {
     prop_oneof![
         3 => Just(MethodChoice::Auto),
         1 => prop::sample::select(Method::ALL.to_vec()).prop_map(MethodChoice::Integrator),
@@ -75,6 +75,17 @@ fn resolved(model: ForceModel, p: &ImpactParams) -> bool {
     let lambda = 0.5 * (p.law.n + 1.0) * p.plastic_indentation / (p.restitution * x_e);
     let dt = p.law.contact_time(p.mass, p.v0) / 1000.0 * p.v0 / x_e;
     lambda * dt < 0.05
+}
+
+/// Solves `p` with `model` by `method` at rtol = atol = 10^`log_rtol` and [`check`]s the outcome.
+pub fn solve_and_check(model: ForceModel, p: &ImpactParams, method: MethodChoice, log_rtol: f64) {
+    let opts = SolveOptions {
+        method,
+        rtol: 10f64.powf(log_rtol),
+        atol: Some(10f64.powf(log_rtol)),
+        ..SolveOptions::default()
+    };
+    check(model, p, &opts, solve_impact(model, p, &opts));
 }
 
 pub fn check(
@@ -206,13 +217,7 @@ proptest! {
         method in any_method(),
         log_rtol in -12.0..-4.0f64,
     ) {
-        let opts = SolveOptions {
-            method,
-            rtol: 10f64.powf(log_rtol),
-            atol: Some(10f64.powf(log_rtol)),
-            ..SolveOptions::default()
-        };
-        check(model, &p, &opts, solve_impact(model, &p, &opts));
+        solve_and_check(model, &p, method, log_rtol);
     }
 
     #[test]
