@@ -348,3 +348,53 @@ fn far_above_v_y_the_calibrated_rebound_keeps_the_tolerance_asked() {
         }
     }
 }
+
+#[test]
+fn the_exact_solution_agrees_with_an_integration_at_tight_tolerance() {
+    // Spheres: closed forms (an incomplete beta to x_y, an arcsine on the capped branch, eq 7's
+    // half-period unloading); strips: the capped branch's time by quadrature. Against DOP853 at
+    // rtol 1e-12 from the Fig. 5 sphere and both cylinder presets, v₀/v_y from 1.001 to 100.
+    let scenes = [
+        "fig5-steel-sphere-r10-plate",
+        "steel-cylinder-r20-l100-plate",
+        "steel-cylinders-r20-l100",
+    ];
+    for name in scenes {
+        let scene = preset(name);
+        let v_yield = v_yield_of(&params_at(&scene, 1.0, 0.6));
+        for ratio in [0.5, 1.001, 1.5, 3.0, 10.0, 100.0] {
+            let p = params_at(&scene, ratio * v_yield, 0.6);
+            for rtol in [1e-6, 1e-12] {
+                let exact = solve_impact(
+                    THORNTON,
+                    &p,
+                    &SolveOptions {
+                        rtol,
+                        ..SolveOptions::default()
+                    },
+                )
+                .unwrap()
+                .summary;
+                assert_eq!(exact.method.to_string(), "exact");
+                let num = solve_impact(THORNTON, &p, &dop853(1e-12)).unwrap().summary;
+                let pairs = [
+                    ("x_max", exact.x_max, num.x_max),
+                    ("f_max", exact.f_max, num.f_max),
+                    ("t_x_max", exact.t_x_max, num.t_x_max),
+                    ("t_contact", exact.t_contact, num.t_contact),
+                    ("v_out", exact.v_out, num.v_out),
+                ];
+                for (what, a, b) in pairs {
+                    assert!(
+                        (a / b - 1.0).abs() < 1e-9 + 100.0 * rtol,
+                        "{name} v₀/v_y {ratio} rtol {rtol:e} {what}: exact {a} vs DOP853 {b}"
+                    );
+                }
+                assert!(
+                    (exact.x_residual - num.x_residual).abs() < 1e-9 * exact.x_max,
+                    "{name} {ratio}: {exact:?} {num:?}"
+                );
+            }
+        }
+    }
+}
