@@ -9,7 +9,6 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Block;
 
 use crate::chart::layout::dot;
 use crate::chart::{Chart, Ink, place_ticks};
@@ -17,6 +16,7 @@ use crate::ui::style::MarkerStyle;
 use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
+use super::pane::Pane;
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -516,17 +516,17 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
     }
 }
 
-/// Draws `chart` in `area` inside `block`.
+/// Draws `chart` in `area` inside `pane`.
 pub fn render(
     frame: &mut Frame,
     area: Rect,
-    block: Block,
+    pane: Pane,
     chart: &Chart,
     marker: MarkerStyle,
     theme: Theme,
 ) {
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
+    let inner = pane.inner(area);
+    frame.render_widget(pane, area);
     let f = frame_of(inner, chart);
     if f.plot.width < 4 || f.plot.height < 2 {
         return;
@@ -539,26 +539,26 @@ pub fn render(
     labels(buf, chart, &f, theme, marker);
 }
 
-/// [`render`] with the legend along the block's bottom edge on roomy screens (compact panes have
+/// [`render`] with the legend along the pane's bottom edge on roomy screens (compact panes have
 /// no bottom border to carry it).
 pub fn render_with_legend(
     frame: &mut Frame,
     area: Rect,
-    block: Block,
+    pane: Pane,
     chart: &Chart,
     (marker, theme): (MarkerStyle, Theme),
     roomy: bool,
 ) {
-    let block = if roomy {
-        block.title_bottom(legend(
+    let pane = if roomy {
+        pane.title_bottom(legend(
             chart,
             theme,
             usize::from(area.width.saturating_sub(2)),
         ))
     } else {
-        block
+        pane
     };
-    render(frame, area, block, chart, marker, theme);
+    render(frame, area, pane, chart, marker, theme);
 }
 
 /// The legend of `chart`'s series in their inks (name and line sample with its glyph), as many as
@@ -680,7 +680,6 @@ mod tests {
     use super::*;
     use ratatui::Terminal;
     use ratatui::backend::TestBackend;
-    use ratatui::widgets::Borders;
 
     use crate::chart::{Axis, Mark, Rule, Series, Tick};
 
@@ -738,7 +737,7 @@ mod tests {
                 render(
                     frame,
                     area,
-                    Block::default().borders(Borders::ALL),
+                    Pane::new("", Theme { color: false }, true),
                     chart,
                     marker,
                     Theme { color: false },
