@@ -11,5 +11,6 @@ pub(crate) mod pane;
 pub mod picker;
 pub mod prompt;
 pub mod status;
+pub(crate) mod table;
 pub mod tabs;
 pub mod too_small;
