@@ -167,17 +167,23 @@ pub fn plot<K: Copy, S: Borrow<Series<K>>>(
             }
         })
         .collect();
-    let all = raw
-        .iter()
-        .flat_map(|c| c.points.iter().chain(std::iter::once(&c.peak)))
-        .filter(|p| finite(p));
-    // Axes always include 0: the contact starts at x = 0, t = 0 and F = 0.
+    // Axes always include 0: the contact starts at x = 0, t = 0 and F = 0. The points are
+    // finite, so plain comparisons find the ranges (f64::min's NaN handling costs more).
     let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for &(x, y) in all {
-        x_lo = x_lo.min(x);
-        x_hi = x_hi.max(x);
-        y_lo = y_lo.min(y);
-        y_hi = y_hi.max(y);
+    for c in &raw {
+        let peak = finite(&c.peak).then_some(&c.peak);
+        for &(x, y) in c.points.iter().chain(peak) {
+            if x < x_lo {
+                x_lo = x;
+            } else if x > x_hi {
+                x_hi = x;
+            }
+            if y < y_lo {
+                y_lo = y;
+            } else if y > y_hi {
+                y_hi = y;
+            }
+        }
     }
     let ((x_name, x_unit), (y_name, y_unit)) = kind.axes();
     let x = nice_axis(x_lo, x_hi, x_unit, max_x_labels);
