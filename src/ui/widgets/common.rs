@@ -9,6 +9,7 @@ use crate::model::ForceModel;
 use crate::ui::style::Theme;
 
 use super::pane::Pane;
+use super::text::set_line;
 
 /// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
 pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Pane<'a> {
@@ -111,7 +112,7 @@ pub fn flow<'a>(
 pub fn draw_lines(buf: &mut Buffer, area: Rect, lines: &[ratatui::text::Line]) {
     let area = area.intersection(buf.area);
     for (y, line) in (area.y..area.bottom()).zip(lines) {
-        buf.set_line(area.x, y, line, area.width);
+        set_line(buf, area.x, y, line, area.width);
     }
 }
 

@@ -13,4 +13,5 @@ pub mod prompt;
 pub mod status;
 pub(crate) mod table;
 pub mod tabs;
+pub(crate) mod text;
 pub mod too_small;

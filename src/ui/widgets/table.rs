@@ -7,32 +7,11 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Span;
-use ratatui::widgets::Widget;
+
+use super::text::put_text;
 
 /// Columns between neighbours.
 const SPACING: u16 = 1;
-
-/// `text` from (x, y) in at most `width` cells, each patched with `style`, as a `Span` of it
-/// renders into a one-row area of that width (cut where the next character would not fit).
-pub fn put_text(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style: Style) {
-    let area = Rect::new(x, y, width, 1).intersection(buf.area);
-    if area.is_empty() {
-        return;
-    }
-    // Printable ASCII is one grapheme a byte, one cell wide: no segmentation needed.
-    if !text.bytes().all(|b| b == b' ' || b.is_ascii_graphic()) {
-        Span::styled(text, style).render(area, buf);
-        return;
-    }
-    let start = usize::from(area.y - buf.area.y) * usize::from(buf.area.width)
-        + usize::from(area.x - buf.area.x);
-    let cells = buf.content[start..]
-        .iter_mut()
-        .take(usize::from(area.width));
-    for (cell, byte) in cells.zip(text.bytes()) {
-        cell.set_char(char::from(byte)).set_style(style);
-    }
-}
 
 /// Draws in `area` the header row (its cells' texts over the whole row in `header_style`) and
 /// below it as many `rows` as fit, each a span per column from the left: the columns `widths`
@@ -76,7 +55,7 @@ mod tests {
     use super::*;
     use ratatui::layout::Constraint;
     use ratatui::style::{Color, Modifier};
-    use ratatui::widgets::{Cell, Row, Table};
+    use ratatui::widgets::{Cell, Row, Table, Widget};
 
     /// A buffer whose every cell already holds a styled symbol.
     fn busy(area: Rect) -> Buffer {
