@@ -198,7 +198,9 @@ impl Canvas {
     fn line_dots(&mut self, a: (i64, i64), b: (i64, i64), ink: Ink, bold: bool) {
         let (dx, dy) = (b.0 - a.0, b.1 - a.1);
         let steps = dx.abs().max(dy.abs());
-        if steps == 0 || steps > 100_000 {
+        // A neighbouring dot is the one step of the walk below: most segments of a curve sampled
+        // a dot apart.
+        if steps <= 1 || steps > 100_000 {
             self.set_dot(b, ink, bold);
             return;
         }
@@ -883,6 +885,33 @@ mod tests {
                         .collect()
                 };
                 assert!(lines(&fast) == lines(&plain), "trial {trial}, {marker:?}");
+            }
+        }
+    }
+
+    /// Lines from a dot to every dot up to three away, on and off the canvas: the dots of the
+    /// integer DDA walked one step at a time, a neighbour included.
+    #[test]
+    fn lines_set_the_dots_of_their_walk() {
+        let plot = Rect::new(0, 0, 5, 2);
+        let a = (4, 3);
+        for dx in -3..=3 {
+            for dy in -3..=3 {
+                let b = (a.0 + dx, a.1 + dy);
+                let mut line = Canvas::new(plot, MarkerStyle::Braille);
+                line.line_dots(a, b, Ink::Foreground, false);
+                let mut walk = Canvas::new(plot, MarkerStyle::Braille);
+                let steps = dx.abs().max(dy.abs());
+                for k in 1..=steps {
+                    let x = a.0 + (2 * dx * k + steps).div_euclid(2 * steps);
+                    let y = a.1 + (2 * dy * k + steps).div_euclid(2 * steps);
+                    walk.set_dot((x, y), Ink::Foreground, false);
+                }
+                if steps == 0 {
+                    walk.set_dot(b, Ink::Foreground, false);
+                }
+                let dots = |c: &Canvas| c.cells.iter().map(|cell| cell.dots).collect::<Vec<_>>();
+                assert_eq!(dots(&line), dots(&walk), "{a:?} to {b:?}");
             }
         }
     }
