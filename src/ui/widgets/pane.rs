@@ -147,24 +147,9 @@ impl Widget for &Pane<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use ratatui::style::{Color, Modifier};
+    use crate::ui::testing::busy_buffer;
+    use ratatui::style::Color;
     use ratatui::text::Span;
-
-    /// A buffer whose every cell already holds a styled symbol, so that a frame drawn into it
-    /// shows which cells it restyles.
-    fn busy(area: Rect) -> Buffer {
-        let mut buf = Buffer::empty(area);
-        for (i, cell) in buf.content.iter_mut().enumerate() {
-            cell.set_char(char::from(b'a' + (i % 26) as u8));
-            match i % 4 {
-                0 => cell.set_style(Style::new().fg(Color::Yellow).bg(Color::Blue)),
-                1 => cell.set_style(Style::new().add_modifier(Modifier::BOLD | Modifier::DIM)),
-                2 => cell.set_style(Style::new().fg(Color::Indexed(99))),
-                _ => cell,
-            };
-        }
-        buf
-    }
 
     /// Roomy and compact panes, with and without colour and a bottom title, titles wider than
     /// the pane, areas down to nothing and partly off the buffer: the cells and styles of the
@@ -199,9 +184,9 @@ mod tests {
                             pane = pane.title_bottom(bottom.clone());
                         }
                         for area in areas {
-                            let mut ours = busy(buf_area);
+                            let mut ours = busy_buffer(buf_area);
                             (&pane).render(area, &mut ours);
-                            let mut theirs = busy(buf_area);
+                            let mut theirs = busy_buffer(buf_area);
                             pane.block().render(area, &mut theirs);
                             let case = format!("{color} {roomy} {title} {bottom:?} {area:?}");
                             assert_eq!(ours, theirs, "{case}");

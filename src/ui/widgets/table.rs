@@ -53,25 +53,10 @@ pub fn draw_table(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ui::testing::busy_buffer;
     use ratatui::layout::Constraint;
     use ratatui::style::{Color, Modifier};
     use ratatui::widgets::{Cell, Row, Table, Widget};
-
-    /// A buffer whose every cell already holds a styled symbol.
-    fn busy(area: Rect) -> Buffer {
-        let mut buf = Buffer::empty(area);
-        for (i, cell) in buf.content.iter_mut().enumerate() {
-            cell.set_char(char::from(b'a' + (i % 26) as u8));
-            if i % 3 == 0 {
-                cell.set_style(
-                    Style::new()
-                        .fg(Color::Yellow)
-                        .add_modifier(Modifier::ITALIC),
-                );
-            }
-        }
-        buf
-    }
 
     /// Texts of every kind a results cell holds (numbers, symbols with units, names with dashes,
     /// an ellipsis) and some that are cut, in columns that fit, in tables cut short at the right
@@ -121,9 +106,9 @@ mod tests {
                 Rect::new(2, 8, total + 5, 5),
                 Rect::new(5, 5, total + 1, 1),
             ] {
-                let mut ours = busy(buf_area);
+                let mut ours = busy_buffer(buf_area);
                 draw_table(&mut ours, area, widths, (&header, header_style), &rows);
-                let mut theirs = busy(buf_area);
+                let mut theirs = busy_buffer(buf_area);
                 let table = Table::new(
                     rows.iter()
                         .map(|r| Row::new(r.iter().cloned().map(Cell::from))),

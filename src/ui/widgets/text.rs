@@ -124,6 +124,7 @@ pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ui::testing::busy_buffer;
     use ratatui::style::{Color, Modifier};
     use ratatui::text::Span;
 
@@ -165,17 +166,6 @@ mod tests {
         }
     }
 
-    fn busy(area: Rect) -> Buffer {
-        let mut buf = Buffer::empty(area);
-        for (i, cell) in buf.content.iter_mut().enumerate() {
-            cell.set_char(char::from(b'a' + (i % 26) as u8));
-            if i % 3 == 0 {
-                cell.set_style(Style::new().bg(Color::Blue).add_modifier(Modifier::ITALIC));
-            }
-        }
-        buf
-    }
-
     fn lines() -> Vec<Line<'static>> {
         let red = Style::new().fg(Color::Red).add_modifier(Modifier::BOLD);
         vec![
@@ -203,9 +193,9 @@ mod tests {
         let buf_area = Rect::new(1, 1, 30, 3);
         for line in lines() {
             for (x, width) in [(1, 30), (3, 10), (20, 40), (30, 5), (5, 0), (2, 1)] {
-                let mut ours = busy(buf_area);
+                let mut ours = busy_buffer(buf_area);
                 let end = set_line(&mut ours, x, 2, &line, width);
-                let mut theirs = busy(buf_area);
+                let mut theirs = busy_buffer(buf_area);
                 let their_end = theirs.set_line(x, 2, &line, width);
                 assert_eq!(ours, theirs, "{line:?} at {x} in {width}");
                 assert_eq!(end, their_end, "{line:?} at {x} in {width}");
@@ -226,9 +216,9 @@ mod tests {
                 Rect::new(3, 2, 0, 1),
                 Rect::new(40, 2, 5, 1),
             ] {
-                let mut ours = busy(buf_area);
+                let mut ours = busy_buffer(buf_area);
                 render_line(&mut ours, area, &line);
-                let mut theirs = busy(buf_area);
+                let mut theirs = busy_buffer(buf_area);
                 (&line).render(area, &mut theirs);
                 assert_eq!(ours, theirs, "{line:?} in {area:?}");
             }
