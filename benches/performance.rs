@@ -82,7 +82,7 @@ fn solve_queued(app: &mut App) -> usize {
     solved
 }
 
-/// The explorer on the default scene with the paper's five models checked (and no other),
+/// The explorer on the default scene at 160×48 with the paper's five models checked (and no other),
 /// their first solves done.
 fn paper_models_app() -> App {
     let registry = Registry::builtin().expect("built-in presets load");
@@ -90,6 +90,8 @@ fn paper_models_app() -> App {
         .scene(DEFAULT_SCENE)
         .expect("default scene resolves");
     let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+    // As the runtime does before its first frame: the curves are sampled for this screen's charts.
+    update(&mut app, Action::Resize(160, 48));
     for model in ForceModel::ALL {
         if app.is_checked(model) != PAPER_MODELS.contains(&model) {
             app.focused = model;

@@ -12,10 +12,43 @@ use super::chart_kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
 
-/// Samples taken of each solution once, when it arrives (evenly in t, the exact extrema added):
-/// about two per braille column of a 150-column chart on each of loading and unloading; lines are
-/// drawn between them, so wider charts stay connected.
-pub const SAMPLES_PER_SOLVE: usize = 600;
+/// Dots across the widest plot each chart gets on the screen: what a solution is sampled for, once,
+/// when it arrives (see [`ChartDots::samples_for`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ChartDots {
+    /// F(t), whose x axis is the contact time.
+    pub time: u32,
+    /// F(x) and v(x), whose x axis is the approach.
+    pub approach: u32,
+}
+
+/// Fewest and most samples of one solution, whatever the screen.
+const SAMPLES: std::ops::RangeInclusive<usize> = 32..=8192;
+
+impl ChartDots {
+    /// Until the terminal's size is known: plots 100 braille columns wide.
+    pub const UNKNOWN_SCREEN: ChartDots = ChartDots {
+        time: 200,
+        approach: 200,
+    };
+
+    /// How many samples, evenly in t, put consecutive samples of `solution` at most about one
+    /// dot apart across every chart: `time` over the contact; and on the approach charts, where
+    /// x moves at most v₀·Δt a sample (the speed only falls from v₀ in contact), `approach` over
+    /// x_max (the axis spans at least the solution's own x_max). Lines join the samples, so the
+    /// curves stay connected; the extrema are added exactly.
+    pub fn samples_for(self, solution: &ImpactSolution) -> usize {
+        let s = &solution.summary;
+        let sweep = solution.trajectory.v0().abs() * s.t_contact / s.x_max;
+        let approach = f64::from(self.approach) * sweep;
+        let intervals = if approach.is_finite() {
+            approach.ceil().max(f64::from(self.time))
+        } else {
+            f64::from(self.time)
+        };
+        (intervals as usize + 1).clamp(*SAMPLES.start(), *SAMPLES.end())
+    }
+}
 
 /// One solution's samples and its exact extrema, under a key that says whose they are (a force
 /// model in the explorer; a method or the reference in the stability view).
@@ -134,17 +167,23 @@ pub fn plot<K: Copy, S: Borrow<Series<K>>>(
             }
         })
         .collect();
-    let all = raw
-        .iter()
-        .flat_map(|c| c.points.iter().chain(std::iter::once(&c.peak)))
-        .filter(|p| finite(p));
-    // Axes always include 0: the contact starts at x = 0, t = 0 and F = 0.
+    // Axes always include 0: the contact starts at x = 0, t = 0 and F = 0. The points are
+    // finite, so plain comparisons find the ranges (f64::min's NaN handling costs more).
     let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for &(x, y) in all {
-        x_lo = x_lo.min(x);
-        x_hi = x_hi.max(x);
-        y_lo = y_lo.min(y);
-        y_hi = y_hi.max(y);
+    for c in &raw {
+        let peak = finite(&c.peak).then_some(&c.peak);
+        for &(x, y) in c.points.iter().chain(peak) {
+            if x < x_lo {
+                x_lo = x;
+            } else if x > x_hi {
+                x_hi = x;
+            }
+            if y < y_lo {
+                y_lo = y;
+            } else if y > y_hi {
+                y_hi = y;
+            }
+        }
     }
     let ((x_name, x_unit), (y_name, y_unit)) = kind.axes();
     let x = nice_axis(x_lo, x_hi, x_unit, max_x_labels);
@@ -263,6 +302,52 @@ mod tests {
         );
         assert_eq!(v.y_title, "v [m/s]");
         assert!(v.y.bounds[0] <= -0.2 && v.y.bounds[1] >= 0.3);
+    }
+
+    /// On every law of the paper's Fig. 5 (and e = 0.2, x_pl = 0, where the contact is shortest
+    /// against x_max), consecutive samples lie within about a dot of each other on every chart
+    /// the resolution was asked for: t over the time plot, x over the approach plots.
+    #[test]
+    fn samples_are_a_dot_apart_at_most() {
+        use crate::model::impact::{SolveOptions, solve_impact};
+        use crate::ui::testing::fig5_params;
+        let dots = ChartDots {
+            time: 214,
+            approach: 98,
+        };
+        let mut damped = fig5_params(0.3);
+        damped.restitution = 0.2;
+        damped.plastic_indentation = 0.0;
+        for params in [fig5_params(0.3), damped] {
+            for model in ForceModel::ALL {
+                let Ok(solution) = solve_impact(model, &params, &SolveOptions::default()) else {
+                    continue;
+                };
+                let n = dots.samples_for(&solution);
+                let s = &solution.summary;
+                let samples = solution.trajectory.samples(n);
+                let widest = |f: &dyn Fn(&Sample) -> f64| {
+                    samples
+                        .windows(2)
+                        .map(|w| (f(&w[1]) - f(&w[0])).abs())
+                        .fold(0.0, f64::max)
+                };
+                let t_step = widest(&|q| q.t) / s.t_contact * f64::from(dots.time);
+                let x_step = widest(&|q| q.x) / s.x_max * f64::from(dots.approach);
+                assert!(
+                    t_step <= 1.0 + 1e-9,
+                    "{model}: {n} samples, {t_step} dots in t"
+                );
+                assert!(
+                    x_step <= 1.0 + 1e-9,
+                    "{model}: {n} samples, {x_step} dots in x"
+                );
+                assert!(
+                    n < 1000,
+                    "{model}: {n} samples for charts of 214 and 98 dots"
+                );
+            }
+        }
     }
 
     #[test]

@@ -10,7 +10,7 @@ use crate::model::force::{Damping, LAW_COUNT};
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
 
-use super::plot::{SAMPLES_PER_SOLVE, Series};
+use super::plot::{ChartDots, Series};
 
 /// One impact to solve off the UI thread.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,6 +59,8 @@ struct Slot {
 pub struct Solutions {
     slots: [Slot; LAW_COUNT],
     last_generation: u64,
+    /// The charts' widths the curves are sampled for.
+    dots: ChartDots,
 }
 
 impl Default for Solutions {
@@ -66,8 +68,14 @@ impl Default for Solutions {
         Solutions {
             slots: std::array::from_fn(|_| Slot::default()),
             last_generation: 0,
+            dots: ChartDots::UNKNOWN_SCREEN,
         }
     }
+}
+
+/// `solution`'s curves sampled for charts `dots` wide.
+fn sampled(model: ForceModel, solution: &ImpactSolution, dots: ChartDots) -> Arc<Series> {
+    Arc::new(Series::sample(model, solution, dots.samples_for(solution)))
 }
 
 fn index(model: ForceModel) -> usize {
@@ -108,16 +116,26 @@ impl Solutions {
         }
         slot.pending = false;
         slot.sampled = match &outcome.result {
-            Ok(solution) => Some(Arc::new(Series::sample(
-                outcome.model,
-                solution,
-                SAMPLES_PER_SOLVE,
-            ))),
+            Ok(solution) => Some(sampled(outcome.model, solution, self.dots)),
             Err(_) => None,
         };
         slot.shown = Some(outcome.result);
         slot.damping = outcome.damping;
         true
+    }
+
+    /// Samples the curves for charts `dots` wide from now on, the shown solutions' again if that
+    /// changes their resolution.
+    pub fn set_chart_dots(&mut self, dots: ChartDots) {
+        if dots == self.dots {
+            return;
+        }
+        self.dots = dots;
+        for (slot, model) in self.slots.iter_mut().zip(ForceModel::ALL) {
+            if let Some(Ok(solution)) = &slot.shown {
+                slot.sampled = Some(sampled(model, solution, dots));
+            }
+        }
     }
 
     /// The damping parameter of the law of `model`'s latest finished result.
@@ -196,6 +214,41 @@ mod tests {
             s.request(ForceModel::HuntCrossley, fig5_params(0.3), opts, false)
                 .is_some()
         );
+    }
+
+    /// A solution is sampled for the charts' resolution when it arrives, and again when the
+    /// resolution changes; a failed one has no samples either way.
+    #[test]
+    fn curves_are_sampled_again_for_a_new_resolution() {
+        use crate::model::impact::solve_impact;
+        let mut s = Solutions::default();
+        let opts = SolveOptions::default();
+        let params = fig5_params(0.3);
+        let job = s
+            .request(ForceModel::HuntCrossley, params, opts, false)
+            .unwrap();
+        let solution = Arc::new(solve_impact(ForceModel::HuntCrossley, &params, &opts).unwrap());
+        assert!(s.accept(Outcome {
+            result: Ok(Arc::clone(&solution)),
+            damping: None,
+            ..failed(&job, "")
+        }));
+        let failing = s
+            .request(ForceModel::Proposed, params, opts, false)
+            .unwrap();
+        assert!(s.accept(failed(&failing, "no")));
+        let count = |s: &Solutions| s.samples(ForceModel::HuntCrossley).unwrap().samples.len();
+        let extrema = solution.trajectory.extrema().len();
+        let expected = |dots: ChartDots| dots.samples_for(&solution) + extrema - 1;
+        assert_eq!(count(&s), expected(ChartDots::UNKNOWN_SCREEN));
+        let wide = ChartDots {
+            time: 700,
+            approach: 400,
+        };
+        s.set_chart_dots(wide);
+        assert!(expected(wide) > expected(ChartDots::UNKNOWN_SCREEN));
+        assert_eq!(count(&s), expected(wide));
+        assert!(s.samples(ForceModel::Proposed).is_none());
     }
 
     #[test]

@@ -1,5 +1,9 @@
 //! Fixtures shared by the unit tests of the UI.
 
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Modifier, Style};
+
 use crate::model::ImpactParams;
 use crate::model::power_law::PowerLaw;
 use crate::model::scene::Scene;
@@ -27,4 +31,20 @@ pub fn fig5_params(v0: f64) -> ImpactParams {
         plastic_indentation: 2.3e-6,
         contact: crate::model::force::Contact::Unspecified,
     }
+}
+
+/// A buffer whose every cell already holds a symbol, most of them styled, so that what is drawn
+/// into it shows which cells it sets and restyles.
+pub fn busy_buffer(area: Rect) -> Buffer {
+    let mut buf = Buffer::empty(area);
+    for (i, cell) in buf.content.iter_mut().enumerate() {
+        cell.set_char(char::from(b'a' + (i % 26) as u8));
+        match i % 4 {
+            0 => cell.set_style(Style::new().fg(Color::Yellow).bg(Color::Blue)),
+            1 => cell.set_style(Style::new().add_modifier(Modifier::BOLD | Modifier::ITALIC)),
+            2 => cell.set_style(Style::new().fg(Color::Indexed(99))),
+            _ => cell,
+        };
+    }
+    buf
 }

@@ -35,13 +35,23 @@ pub fn update(app: &mut App, action: Action) {
     views::request_studies(app);
 }
 
+/// The terminal's new size: the sweep view sizes its sweeps by it, and the explorer's curves are
+/// sampled for the charts it leaves room for.
+fn resize(app: &mut App, width: u16, height: u16) {
+    app.screen = (width, height);
+    let area = ratatui::layout::Rect::new(0, 0, width, height);
+    if let Some(dots) = views::explorer::layout::chart_dots(area, app.marker.dots_per_cell()) {
+        app.solutions.set_chart_dots(dots);
+    }
+}
+
 fn transition(app: &mut App, action: Action) {
     match action {
         Action::Quit if matches!(app.mode, Mode::Normal | Mode::Confirm(Confirm::Quit)) => {
             quit_or_ask(app, matches!(app.mode, Mode::Confirm(Confirm::Quit)))
         }
         Action::Interrupt => quit_or_ask(app, matches!(app.mode, Mode::Confirm(Confirm::Quit))),
-        Action::Resize(width, height) => app.screen = (width, height),
+        Action::Resize(width, height) => resize(app, width, height),
         Action::Solved(report) => solved(app, report),
         Action::Studied(report) => studied(app, report),
         Action::ToggleMouse => {

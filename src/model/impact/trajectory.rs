@@ -209,6 +209,11 @@ impl Trajectory {
         })
     }
 
+    /// Approach velocity at first contact, m/s.
+    pub fn v0(&self) -> f64 {
+        self.scales.v
+    }
+
     /// Duration of contact covered, s.
     pub fn t_end(&self) -> f64 {
         self.t_end

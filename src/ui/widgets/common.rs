@@ -4,19 +4,16 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::Span;
-use ratatui::widgets::{Block, Borders};
 
 use crate::model::ForceModel;
-use crate::ui::style::{Role, Theme};
+use crate::ui::style::Theme;
+
+use super::pane::Pane;
+use super::text::set_line;
 
 /// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
-pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Block<'a> {
-    let borders = if roomy { Borders::ALL } else { Borders::TOP };
-    Block::default()
-        .borders(borders)
-        .border_style(theme.style(Role::Muted))
-        .title(title)
-        .title_style(theme.style(Role::Title))
+pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Pane<'a> {
+    Pane::new(title, theme, roomy)
 }
 
 /// How a pane names models: the paper's label, the kebab id, or the abbreviation, longest first.
@@ -115,7 +112,7 @@ pub fn flow<'a>(
 pub fn draw_lines(buf: &mut Buffer, area: Rect, lines: &[ratatui::text::Line]) {
     let area = area.intersection(buf.area);
     for (y, line) in (area.y..area.bottom()).zip(lines) {
-        buf.set_line(area.x, y, line, area.width);
+        set_line(buf, area.x, y, line, area.width);
     }
 }
 

@@ -9,7 +9,6 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Block;
 
 use crate::chart::layout::dot;
 use crate::chart::{Chart, Ink, place_ticks};
@@ -17,6 +16,7 @@ use crate::ui::style::MarkerStyle;
 use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
+use super::pane::Pane;
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -198,7 +198,9 @@ impl Canvas {
     fn line_dots(&mut self, a: (i64, i64), b: (i64, i64), ink: Ink, bold: bool) {
         let (dx, dy) = (b.0 - a.0, b.1 - a.1);
         let steps = dx.abs().max(dy.abs());
-        if steps == 0 || steps > 100_000 {
+        // A neighbouring dot is the one step of the walk below: most segments of a curve sampled
+        // a dot apart.
+        if steps <= 1 || steps > 100_000 {
             self.set_dot(b, ink, bold);
             return;
         }
@@ -516,17 +518,17 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
     }
 }
 
-/// Draws `chart` in `area` inside `block`.
+/// Draws `chart` in `area` inside `pane`.
 pub fn render(
     frame: &mut Frame,
     area: Rect,
-    block: Block,
+    pane: Pane,
     chart: &Chart,
     marker: MarkerStyle,
     theme: Theme,
 ) {
-    let inner = block.inner(area);
-    frame.render_widget(block, area);
+    let inner = pane.inner(area);
+    frame.render_widget(pane, area);
     let f = frame_of(inner, chart);
     if f.plot.width < 4 || f.plot.height < 2 {
         return;
@@ -539,26 +541,26 @@ pub fn render(
     labels(buf, chart, &f, theme, marker);
 }
 
-/// [`render`] with the legend along the block's bottom edge on roomy screens (compact panes have
+/// [`render`] with the legend along the pane's bottom edge on roomy screens (compact panes have
 /// no bottom border to carry it).
 pub fn render_with_legend(
     frame: &mut Frame,
     area: Rect,
-    block: Block,
+    pane: Pane,
     chart: &Chart,
     (marker, theme): (MarkerStyle, Theme),
     roomy: bool,
 ) {
-    let block = if roomy {
-        block.title_bottom(legend(
+    let pane = if roomy {
+        pane.title_bottom(legend(
             chart,
             theme,
             usize::from(area.width.saturating_sub(2)),
         ))
     } else {
-        block
+        pane
     };
-    render(frame, area, block, chart, marker, theme);
+    render(frame, area, pane, chart, marker, theme);
 }
 
 /// The legend of `chart`'s series in their inks (name and line sample with its glyph), as many as
@@ -680,7 +682,6 @@ mod tests {
     use super::*;
     use ratatui::Terminal;
     use ratatui::backend::TestBackend;
-    use ratatui::widgets::Borders;
 
     use crate::chart::{Axis, Mark, Rule, Series, Tick};
 
@@ -738,7 +739,7 @@ mod tests {
                 render(
                     frame,
                     area,
-                    Block::default().borders(Borders::ALL),
+                    Pane::new("", Theme { color: false }, true),
                     chart,
                     marker,
                     Theme { color: false },
@@ -884,6 +885,33 @@ mod tests {
                         .collect()
                 };
                 assert!(lines(&fast) == lines(&plain), "trial {trial}, {marker:?}");
+            }
+        }
+    }
+
+    /// Lines from a dot to every dot up to three away, on and off the canvas: the dots of the
+    /// integer DDA walked one step at a time, a neighbour included.
+    #[test]
+    fn lines_set_the_dots_of_their_walk() {
+        let plot = Rect::new(0, 0, 5, 2);
+        let a = (4, 3);
+        for dx in -3..=3 {
+            for dy in -3..=3 {
+                let b = (a.0 + dx, a.1 + dy);
+                let mut line = Canvas::new(plot, MarkerStyle::Braille);
+                line.line_dots(a, b, Ink::Foreground, false);
+                let mut walk = Canvas::new(plot, MarkerStyle::Braille);
+                let steps = dx.abs().max(dy.abs());
+                for k in 1..=steps {
+                    let x = a.0 + (2 * dx * k + steps).div_euclid(2 * steps);
+                    let y = a.1 + (2 * dy * k + steps).div_euclid(2 * steps);
+                    walk.set_dot((x, y), Ink::Foreground, false);
+                }
+                if steps == 0 {
+                    walk.set_dot(b, Ink::Foreground, false);
+                }
+                let dots = |c: &Canvas| c.cells.iter().map(|cell| cell.dots).collect::<Vec<_>>();
+                assert_eq!(dots(&line), dots(&walk), "{a:?} to {b:?}");
             }
         }
     }

@@ -13,6 +13,8 @@ use crate::ui::style::Role;
 use crate::ui::units;
 use crate::ui::views::{self, Hints};
 
+use super::common::draw_lines;
+
 /// Key hints of the modes other than normal: (key, action).
 fn mode_hints(mode: &Mode) -> Hints {
     match mode {
@@ -183,7 +185,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let right = Line::from(right).right_aligned();
     let [l, r] =
         Layout::horizontal([Constraint::Length(left_width + 1), Constraint::Fill(1)]).areas(area);
-    frame.render_widget(Paragraph::new(left), l);
+    draw_lines(frame.buffer_mut(), l, &[left]);
     frame.render_widget(Paragraph::new(right), r);
 }
 

@@ -4,11 +4,12 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::Modifier;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
 
 use crate::ui::app::App;
 use crate::ui::style::Role;
 use crate::ui::tab::Tab;
+
+use super::common::draw_lines;
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let theme = app.theme;
@@ -26,7 +27,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         spans.push(Span::styled(title, title_style));
         spans.push(Span::raw(gap));
     }
-    frame.render_widget(Paragraph::new(Line::from(spans)), area);
+    draw_lines(frame.buffer_mut(), area, &[Line::from(spans)]);
 }
 
 /// The key, title and gap of a tab's label on the bar.

@@ -4,8 +4,9 @@
 use ratatui::layout::{Constraint, Layout, Rect};
 
 use crate::ui::chart_kind::ChartKind;
+use crate::ui::layout::{Screen, Y_AXIS_ALLOWANCE, left_width, screen};
+use crate::ui::plot::ChartDots;
 use crate::ui::widgets::models;
-use crate::ui::layout::{Screen, left_width, screen};
 
 /// The least height of the models pane on a roomy screen.
 pub const MODELS_HEIGHT: u16 = 7;
@@ -66,6 +67,31 @@ pub fn layout(area: Rect, first: ChartKind, form_height: impl Fn(u16) -> u16) ->
     })
 }
 
+/// Dots across the widest plot each chart gets on a screen of `area` (`dots_per_cell` a column),
+/// whichever chart is shown first; `None` where the explorer does not fit.
+pub fn chart_dots(area: Rect, dots_per_cell: u16) -> Option<ChartDots> {
+    let mut dots = ChartDots {
+        time: 0,
+        approach: 0,
+    };
+    for first in ChartKind::ALL {
+        let areas = layout(area, first, |_| 0)?;
+        // The pane's side borders (roomy) and the y labels and axis line.
+        let frame = if areas.roomy { 2 } else { 0 } + Y_AXIS_ALLOWANCE;
+        for (kind, rect) in areas.charts {
+            let across = u32::from(rect.width.saturating_sub(frame)) * u32::from(dots_per_cell);
+            let widest = match kind {
+                ChartKind::ForceTime => &mut dots.time,
+                ChartKind::ForceDisplacement | ChartKind::VelocityDisplacement => {
+                    &mut dots.approach
+                }
+            };
+            *widest = (*widest).max(across);
+        }
+    }
+    Some(dots)
+}
+
 /// One, two or three charts, as the space allows: F(x) and v(x) side by side like the paper's
 /// Fig. 5, with F(t) under them when there is height, or beside them when there is width.
 fn chart_grid(area: Rect, first: ChartKind) -> Vec<(ChartKind, Rect)> {
@@ -112,6 +138,31 @@ mod tests {
         assert_eq!(short_form.models.height, 40 - 28);
         let tiny_form = layout(area, ChartKind::ForceTime, |_| 3).unwrap();
         assert_eq!(tiny_form.models.height, models::row_count() + 2);
+    }
+
+    /// The plots' widths less the y labels and axis (7 columns) and, on roomy screens, the
+    /// borders: at 160×48 F(t) spans the right-hand column under F(x) and v(x); at 100×30 two
+    /// charts share it and either kind may be in the wider one.
+    #[test]
+    fn charts_are_sampled_for_their_widest_plots() {
+        let at = |w, h, per_cell| chart_dots(Rect::new(0, 0, w, h), per_cell);
+        let big = layout(Rect::new(0, 0, 160, 48), ChartKind::ForceTime, |_| 30).unwrap();
+        let f_t = big.charts.iter().find(|(k, _)| *k == ChartKind::ForceTime).unwrap();
+        let f_x = big.charts.iter().find(|(k, _)| *k == ChartKind::ForceDisplacement).unwrap();
+        assert_eq!(
+            at(160, 48, 2),
+            Some(ChartDots {
+                time: 2 * u32::from(f_t.1.width - 9),
+                approach: 2 * u32::from(f_x.1.width - 9),
+            })
+        );
+        assert_eq!(at(160, 48, 1).unwrap().time, u32::from(f_t.1.width - 9));
+        let two = layout(Rect::new(0, 0, 100, 30), ChartKind::ForceTime, |_| 30).unwrap();
+        let widest = two.charts.iter().map(|(_, r)| r.width).max().unwrap();
+        let dots = at(100, 30, 2).unwrap();
+        assert_eq!(dots.time, dots.approach);
+        assert_eq!(dots.time, 2 * u32::from(widest - 7), "compact: no side borders");
+        assert_eq!(at(79, 24, 2), None);
     }
 
     #[test]

@@ -4,7 +4,7 @@ use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Cell, Paragraph, Row, Table};
+use ratatui::widgets::Paragraph;
 
 use crate::format::{Zeros, scientific};
 use crate::model::ForceModel;
@@ -14,7 +14,8 @@ use crate::model::quasistatic::ContactGeometry;
 use crate::ui::app::App;
 use crate::ui::style::{Role, Theme};
 use crate::ui::units::{self, sig};
-use crate::ui::widgets::common::{flow, model_name, pane, span};
+use crate::ui::widgets::common::{draw_lines, flow, model_name, pane, span};
+use crate::ui::widgets::table::draw_table;
 
 /// A column: header, unit, width, and the value of a solved row in that unit.
 struct Column {
@@ -246,19 +247,23 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .max(1);
     let [table_area, q_area] =
         Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
-    let header = Row::new(
-        std::iter::once(Cell::from("model"))
-            .chain(columns.iter().map(|c| Cell::from(header_text(c)))),
-    )
-    .style(theme.style(Role::Label).add_modifier(Modifier::BOLD));
-    let rows: Vec<Row> = checked
+    let header_texts: Vec<String> = columns.iter().map(|c| header_text(c)).collect();
+    let header: Vec<&str> = std::iter::once("model")
+        .chain(header_texts.iter().map(String::as_str))
+        .collect();
+    let header_style = theme.style(Role::Label).add_modifier(Modifier::BOLD);
+    let rows: Vec<Vec<Span>> = checked
         .iter()
         .map(|&model| model_row(app, model, &columns, &widths, model_width, theme))
         .collect();
-    let widths = std::iter::once(Constraint::Length(model_width))
-        .chain(widths.iter().map(|&w| Constraint::Length(w)));
-    let table = Table::new(rows, widths).header(header).column_spacing(1);
-    frame.render_widget(table, table_area);
+    let widths: Vec<u16> = std::iter::once(model_width).chain(widths).collect();
+    draw_table(
+        frame.buffer_mut(),
+        table_area,
+        &widths,
+        (&header, header_style),
+        &rows,
+    );
     // A failed model's reason over its number columns, whole where the row has room: a table
     // cell would cut it to the width of one number.
     let reason_x = table_area.x + model_width + 1;
@@ -279,7 +284,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             Rect::new(reason_x, y, width, 1),
         );
     }
-    frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
+    draw_lines(frame.buffer_mut(), q_area, &quasistatic_lines);
     if !roomy {
         // The compact header has no room for units: name them once, in the title row.
         let mut notes: Vec<&str> = Vec::new();
@@ -297,14 +302,16 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     }
 }
 
-fn model_row<'a>(
+/// A model's row, a span per column: its name, then its numbers (nothing more for a failed
+/// model, whose reason is laid over the row; `computing…` before its first result).
+fn model_row(
     app: &App,
     model: ForceModel,
     columns: &[&Column],
     widths: &[u16],
     model_width: u16,
     theme: Theme,
-) -> Row<'a> {
+) -> Vec<Span<'static>> {
     let busy = app.solutions.is_pending(model);
     let mut name = model_name(model, usize::from(model_width) - 1).to_string();
     if busy {
@@ -314,28 +321,25 @@ fn model_row<'a>(
     if app.focused == model {
         name_style = name_style.add_modifier(Modifier::BOLD);
     }
-    let name_cell = Cell::from(span(name, name_style));
+    let name_cell = span(name, name_style);
     match app.solutions.result(model) {
         Some(Ok(solution)) => {
             let solved = Solved {
                 summary: &solution.summary,
                 damping: app.solutions.damping(model),
             };
-            Row::new(
-            std::iter::once(name_cell).chain(
-                columns
-                    .iter()
-                    .zip(widths)
-                    .map(|(c, &w)| Cell::from((c.value)(&solved).text(usize::from(w)))),
-            ),
-            )
+            std::iter::once(name_cell)
+                .chain(
+                    columns
+                        .iter()
+                        .zip(widths)
+                        .map(|(c, &w)| Span::raw((c.value)(&solved).text(usize::from(w)))),
+                )
+                .collect()
         }
         // The reason is laid over the row after the table is drawn.
-        Some(Err(_)) => Row::new(vec![name_cell]),
-        None => Row::new(vec![
-            name_cell,
-            Cell::from(span("computing…", theme.style(Role::Muted))),
-        ]),
+        Some(Err(_)) => vec![name_cell],
+        None => vec![name_cell, span("computing…", theme.style(Role::Muted))],
     }
 }
 

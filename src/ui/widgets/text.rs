@@ -1,0 +1,227 @@
+//! Text set into the buffer a character a cell where every character is its own one-cell
+//! grapheme, which is all the explorer writes but for rare names: the cells ratatui's
+//! `Buffer::set_line` and `Line`'s rendering give (tests compare them), without segmenting the
+//! text into graphemes and measuring each (a tenth of the explorer's frame). Any other text takes
+//! ratatui's own path.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::text::Line;
+use ratatui::widgets::Widget;
+
+/// Whether `c` is one cell wide and a grapheme of its own beside any other such character: the
+/// printable ASCII and Latin-1 characters, Greek, dashes and punctuation, super- and subscripts,
+/// arrows, mathematical operators, box drawing, blocks and shapes, braille, ✓ ✗ ⚠. A test checks
+/// every one, and every pair, against ratatui's width and grapheme segmentation.
+pub fn is_plain(c: char) -> bool {
+    matches!(c,
+        ' '..='~'
+        | '\u{a0}'..='\u{ac}'
+        | '\u{ae}'..='\u{ff}'
+        | '\u{370}'..='\u{3ff}'
+        | '\u{2010}'..='\u{2027}'
+        | '\u{2070}'..='\u{209f}'
+        | '\u{2190}'..='\u{22ff}'
+        | '\u{2500}'..='\u{25fc}'
+        | '\u{2800}'..='\u{28ff}'
+        | '\u{26a0}'
+        | '\u{2713}'
+        | '\u{2717}')
+}
+
+fn all_plain(text: &str) -> bool {
+    text.chars().all(is_plain)
+}
+
+/// Sets the plain `text` from (x, y) into at most `width` cells (and no further than the
+/// buffer's right edge), each patched with `style`; returns the column after the last.
+fn put_plain(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style: Style) -> u16 {
+    let area = buf.area;
+    let room = area.right().saturating_sub(x).min(width);
+    if room == 0 || !area.contains((x, y).into()) {
+        return x;
+    }
+    let start = usize::from(y - area.y) * usize::from(area.width) + usize::from(x - area.x);
+    let mut written = 0;
+    for (cell, c) in buf.content[start..]
+        .iter_mut()
+        .take(usize::from(room))
+        .zip(text.chars())
+    {
+        cell.set_char(c).set_style(style);
+        written += 1;
+    }
+    x + written
+}
+
+/// `text` from (x, y) in at most `width` cells, patched with `style`, as a `Span` of it renders
+/// into a one-row area of that width (cut where the next character would not fit).
+pub fn put_text(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style: Style) {
+    let area = Rect::new(x, y, width, 1).intersection(buf.area);
+    if area.is_empty() {
+        return;
+    }
+    if all_plain(text) {
+        put_plain(buf, (area.x, area.y), text, area.width, style);
+    } else {
+        ratatui::text::Span::styled(text, style).render(area, buf);
+    }
+}
+
+/// What `buf.set_line(x, y, line, max_width)` does: each span in the line's style patched with
+/// its own, from x on, within `max_width` cells in all.
+pub fn set_line(buf: &mut Buffer, x: u16, y: u16, line: &Line, max_width: u16) -> (u16, u16) {
+    let mut remaining = max_width;
+    let mut x = x;
+    for span in line {
+        if remaining == 0 {
+            break;
+        }
+        let style = line.style.patch(span.style);
+        let end = if all_plain(&span.content) {
+            put_plain(buf, (x, y), &span.content, remaining, style)
+        } else {
+            buf.set_stringn(x, y, span.content.as_ref(), usize::from(remaining), style)
+                .0
+        };
+        remaining = remaining.saturating_sub(end.saturating_sub(x));
+        x = end;
+    }
+    (x, y)
+}
+
+/// What rendering `line` into `area` does for a line without an alignment of its own (drawn
+/// from the left, cut at the right): its style over its row, then each span in its own style.
+pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
+    if line.alignment.is_some() || !line.spans.iter().all(|s| all_plain(&s.content)) {
+        line.render(area, buf);
+        return;
+    }
+    let area = area.intersection(buf.area);
+    if area.is_empty() || line.spans.iter().all(|s| s.content.is_empty()) {
+        return;
+    }
+    let area = Rect { height: 1, ..area };
+    buf.set_style(area, line.style);
+    let mut x = area.x;
+    for span in &line.spans {
+        if x >= area.right() {
+            break;
+        }
+        put_plain(
+            buf,
+            (x, area.y),
+            &span.content,
+            area.right() - x,
+            span.style,
+        );
+        let width = span.content.chars().count();
+        x = x.saturating_add(u16::try_from(width).unwrap_or(u16::MAX));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ui::testing::busy_buffer;
+    use ratatui::style::{Color, Modifier};
+    use ratatui::text::Span;
+
+    fn plain_chars() -> Vec<char> {
+        (0..=0x3000u32)
+            .filter_map(char::from_u32)
+            .filter(|&c| is_plain(c))
+            .collect()
+    }
+
+    /// Every plain character is one grapheme one cell wide, and every pair of them two graphemes,
+    /// by ratatui's own measure and segmentation.
+    #[test]
+    fn plain_characters_are_graphemes_of_one_cell() {
+        let plain = plain_chars();
+        assert!(plain.len() > 1000, "{}", plain.len());
+        let graphemes = |s: &str| {
+            Span::raw(s.to_string())
+                .styled_graphemes(Style::default())
+                .map(|g| g.symbol.to_string())
+                .collect::<Vec<_>>()
+        };
+        let mut pair = String::new();
+        for &a in &plain {
+            let one = a.to_string();
+            assert_eq!(Span::raw(one.as_str()).width(), 1, "{a:?}");
+            assert_eq!(graphemes(&one), std::slice::from_ref(&one), "{a:?}");
+            for &b in &plain {
+                pair.clear();
+                pair.push(a);
+                pair.push(b);
+                assert_eq!(graphemes(&pair).len(), 2, "{a:?} {b:?}");
+            }
+        }
+        for c in [
+            '\u{ad}', '\u{301}', '\u{200b}', '中', '\u{fe0f}', '\u{25fd}', '\n',
+        ] {
+            assert!(!is_plain(c), "{c:?}");
+        }
+    }
+
+    fn lines() -> Vec<Line<'static>> {
+        let red = Style::new().fg(Color::Red).add_modifier(Modifier::BOLD);
+        vec![
+            Line::from(vec![
+                Span::styled("● yield begins: ", red),
+                Span::raw("v_y 0.0316 m/s ≤ v₀ 0.3 m/s < v_p"),
+                Span::styled(" (p₀ = 1.1 / 2.8 σ_y)", Style::new().fg(Color::DarkGray)),
+            ]),
+            Line::from("Hunt–Crossley (eq 19) χ 0.6 … ✓ ⣀⡤⠔ ─┴┤")
+                .patch_style(Style::new().add_modifier(Modifier::REVERSED)),
+            Line::from(vec![
+                Span::raw("café "),
+                Span::styled("e\u{301} 中文 x", red),
+                Span::raw(" ⚠\u{fe0f} after"),
+            ]),
+            Line::from(vec![Span::raw(""), Span::styled("", red)]),
+            Line::from(vec![Span::raw(""), Span::styled(" x ", red)]),
+        ]
+    }
+
+    /// Plain and other spans, line styles, cut by the width asked and by the buffer's edge:
+    /// `set_line` sets what `Buffer::set_line` sets and returns where it stopped.
+    #[test]
+    fn set_line_sets_what_buffer_set_line_sets() {
+        let buf_area = Rect::new(1, 1, 30, 3);
+        for line in lines() {
+            for (x, width) in [(1, 30), (3, 10), (20, 40), (30, 5), (5, 0), (2, 1)] {
+                let mut ours = busy_buffer(buf_area);
+                let end = set_line(&mut ours, x, 2, &line, width);
+                let mut theirs = busy_buffer(buf_area);
+                let their_end = theirs.set_line(x, 2, &line, width);
+                assert_eq!(ours, theirs, "{line:?} at {x} in {width}");
+                assert_eq!(end, their_end, "{line:?} at {x} in {width}");
+            }
+        }
+    }
+
+    /// The same lines into areas wide, narrow, empty and off the buffer: `render_line` draws
+    /// what rendering the `Line` draws.
+    #[test]
+    fn render_line_draws_what_a_line_draws() {
+        let buf_area = Rect::new(1, 1, 30, 3);
+        for line in lines() {
+            for area in [
+                Rect::new(1, 1, 30, 1),
+                Rect::new(4, 2, 12, 2),
+                Rect::new(25, 3, 20, 1),
+                Rect::new(3, 2, 0, 1),
+                Rect::new(40, 2, 5, 1),
+            ] {
+                let mut ours = busy_buffer(buf_area);
+                render_line(&mut ours, area, &line);
+                let mut theirs = busy_buffer(buf_area);
+                (&line).render(area, &mut theirs);
+                assert_eq!(ours, theirs, "{line:?} in {area:?}");
+            }
+        }
+    }
+}
