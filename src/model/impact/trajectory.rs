@@ -149,7 +149,13 @@ impl Trajectory {
             marks.push(loading_end);
         }
         if law.switches_at_max_compression() {
-            marks.push(at_rest(Phase::Unloading));
+            // Unloading starts at or below the peak (dry friction drops, Thornton's branch passes
+            // through it, up to rounding): never above the summary's F_max.
+            let unloading_start = at_rest(Phase::Unloading);
+            marks.push(Sample {
+                f: unloading_start.f.min(summary.f_max),
+                ..unloading_start
+            });
         }
         marks.push(Sample {
             t: summary.t_contact,
