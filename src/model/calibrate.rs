@@ -137,7 +137,15 @@ pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated,
     }
     if model == THORNTON {
         // Thornton's e(V) is closed-form on spheres, a quadrature and a root on line contacts.
-        let v_yield = Thornton::v_yield_for_restitution(params, target);
+        let v_yield = Thornton::v_yield_for_restitution(params, target).ok_or_else(|| {
+            CalibrationError::Unreachable {
+                model,
+                target,
+                lowest: Thornton::lowest_restitution(params),
+                symbol: param.symbol,
+                damping: 0.0,
+            }
+        })?;
         let law = build(v_yield)?;
         return Ok(Calibrated {
             law,

@@ -73,7 +73,7 @@ proptest! {
     }
 
     #[test]
-    fn thornton_on_auto_always_solves_and_rebounds_as_its_e_of_q(
+    fn thornton_on_auto_is_exact_and_agrees_with_dop853(
         preset in prop::sample::select(PRESETS.to_vec()),
         size in -1.0..1.0f64,
         log_sigma in 8.0..9.5f64,
@@ -89,13 +89,31 @@ proptest! {
         prop_assert!(solution.is_ok(), "{p:?}: {:?}", solution.as_ref().err());
         let solution = solution.unwrap();
         let s = &solution.summary;
-        let v_yield = model.law(&p).unwrap().damping().unwrap().value;
-        let expected = Thornton::restitution_of(&p, v_yield);
-        // The default rtol 1e-6: v_out within 100·rtol·v₀ of the law's own e(q, n)·v₀ (far above
-        // v_y, e ≈ 0.02 and its relative error is 1/e times larger).
-        prop_assert!((s.e_out - expected).abs() < 1e-4, "{p:?}: {} vs {expected}", s.e_out);
+        prop_assert_eq!(s.method.to_string(), "exact");
+        // An independent integration at rtol 1e-11: every number within 100·1e-11 of it, plus
+        // the exact path's own 100·rtol (the default rtol 1e-8).
+        let tight = SolveOptions {
+            method: MethodChoice::Integrator(Method::Dop853),
+            rtol: 1e-11,
+            ..SolveOptions::default()
+        };
+        let num = solve_impact(model, &p, &tight);
+        prop_assert!(num.is_ok(), "{p:?}: {:?}", num.as_ref().err());
+        let num = num.unwrap().summary;
+        let bound = 100.0 * opts.rtol + 1e-9;
+        for (what, a, b) in [
+            ("x_max", s.x_max, num.x_max),
+            ("f_max", s.f_max, num.f_max),
+            ("t_contact", s.t_contact, num.t_contact),
+        ] {
+            prop_assert!((a / b - 1.0).abs() < bound, "{p:?} {what}: exact {a} vs {b}");
+        }
+        prop_assert!((s.v_out - num.v_out).abs() < bound * p.v0, "{p:?}: {s:?} {num:?}");
+        let expected = Thornton::restitution_of(&p, model.law(&p).unwrap().damping().unwrap().value);
+        prop_assert!((s.e_out - expected).abs() < 1e-12, "{p:?}: {} vs {expected}", s.e_out);
         check(model, &p, &opts, Ok(solution));
     }
+
     #[test]
     fn thornton_calibrates_to_the_requested_e_on_random_bodies(
         preset in prop::sample::select(PRESETS.to_vec()),

@@ -204,7 +204,7 @@ fn calibration_on_cylinders_realises_the_requested_e() {
         let scene = preset(name);
         for (v0, e) in [(0.5, 0.3), (2.0, 0.6), (5.0, 0.9)] {
             let p = params_at(&scene, v0, e);
-            let v_yield = Thornton::v_yield_for_restitution(&p, e);
+            let v_yield = Thornton::v_yield_for_restitution(&p, e).unwrap();
             assert!(v_yield < p.v0, "{name}");
             let c = calibrate(THORNTON, &p).unwrap();
             assert!(
@@ -213,7 +213,6 @@ fn calibration_on_cylinders_realises_the_requested_e() {
                 c.e_out
             );
             assert!((c.damping.value / v_yield - 1.0).abs() < 1e-12);
-            let s = solve_impact(THORNTON, &p, &dop853(1e-12));
             let law_e = hertz_tui::model::impact::solve_law(&c.law, &dop853(1e-12))
                 .unwrap()
                 .summary
@@ -222,8 +221,6 @@ fn calibration_on_cylinders_realises_the_requested_e() {
                 (law_e / e - 1.0).abs() < 1e-8,
                 "{name} {v0}: {law_e} vs {e}"
             );
-            // The material's own v_y gives another e; the scene's e only enters by calibration.
-            assert!(s.is_ok());
         }
     }
 }
@@ -353,7 +350,7 @@ fn far_above_v_y_the_calibrated_rebound_keeps_the_tolerance_asked() {
 fn the_exact_solution_agrees_with_an_integration_at_tight_tolerance() {
     // Spheres: closed forms (an incomplete beta to x_y, an arcsine on the capped branch, eq 7's
     // half-period unloading); strips: the capped branch's time by quadrature. Against DOP853 at
-    // rtol 1e-12 from the Fig. 5 sphere and both cylinder presets, v₀/v_y from 1.001 to 100.
+    // rtol 1e-12 from the Fig. 5 sphere and both cylinder presets, v₀/v_y from 0.5 to 100.
     let scenes = [
         "fig5-steel-sphere-r10-plate",
         "steel-cylinder-r20-l100-plate",
@@ -362,7 +359,9 @@ fn the_exact_solution_agrees_with_an_integration_at_tight_tolerance() {
     for name in scenes {
         let scene = preset(name);
         let v_yield = v_yield_of(&params_at(&scene, 1.0, 0.6));
-        for ratio in [0.5, 1.001, 1.5, 3.0, 10.0, 100.0] {
+        // Just above v_y the capped branch is short and its time integrand's branch point at
+        // u = −u_max lies close (1.0001: 3e-9 off when the rule ignored it).
+        for ratio in [0.5, 1.000001, 1.0001, 1.001, 1.5, 3.0, 10.0, 100.0] {
             let p = params_at(&scene, ratio * v_yield, 0.6);
             for rtol in [1e-6, 1e-12] {
                 let exact = solve_impact(
@@ -386,7 +385,7 @@ fn the_exact_solution_agrees_with_an_integration_at_tight_tolerance() {
                 ];
                 for (what, a, b) in pairs {
                     assert!(
-                        (a / b - 1.0).abs() < 1e-9 + 100.0 * rtol,
+                        (a / b - 1.0).abs() < 1e-10 + 100.0 * rtol,
                         "{name} v₀/v_y {ratio} rtol {rtol:e} {what}: exact {a} vs DOP853 {b}"
                     );
                 }
@@ -397,4 +396,25 @@ fn the_exact_solution_agrees_with_an_integration_at_tight_tolerance() {
             }
         }
     }
+}
+
+#[test]
+fn a_yield_velocity_of_zero_and_an_unreachable_e_are_refused_by_name() {
+    let p = params_at(&preset("steel-cylinders-r20-l100"), 1.0, 0.6);
+    for v_yield in [0.0, -1.0, f64::NAN] {
+        let err = THORNTON
+            .law_with_damping(&p, v_yield)
+            .unwrap_err()
+            .to_string();
+        // NaN and −1 stop at the damping check every law has, 0 at Thornton's own.
+        assert!(err.contains("v_y") && err.contains("0"), "{err}");
+    }
+    // e = 1e-40 lies below what v_y = 1e-100·v₀ gives: calibration says so instead of
+    // returning v_y = v₀ (e_out = 1) as a success.
+    let hopeless = ImpactParams {
+        restitution: 1e-40,
+        ..p
+    };
+    let err = calibrate(THORNTON, &hopeless).unwrap_err().to_string();
+    assert!(err.contains("cannot reach e = 0.0000"), "{err}");
 }

@@ -143,8 +143,18 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
     if loading.stop == (Stop::Event { index: 1 }) {
         let spent = loading.stats.steps + loading.stats.rejected_steps;
+        let exhausted = |steps: usize, t: f64| ImpactError::Integration {
+            method: ro.method,
+            source: OdeError::StepBudgetExhausted {
+                t: t * sc.t,
+                steps: spent + steps,
+            },
+        };
+        if spent >= ro.max_steps {
+            return Err(exhausted(0, loading.t));
+        }
         let rest = ode::Options {
-            max_steps: ro.max_steps.saturating_sub(spent).max(1),
+            max_steps: ro.max_steps - spent,
             ..opts
         };
         let tail = ode::integrate(
@@ -155,7 +165,11 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             &loading_events[..1],
             &rest,
         )
-        .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+        .map_err(|e| match e {
+            // The budget is the whole solve's: count the steps before the breakpoint too.
+            OdeError::StepBudgetExhausted { t, steps } => exhausted(steps, t),
+            e => impact_error(ro.method, e, sc.t, sys.growth),
+        })?;
         for segment in tail.dense.segments() {
             loading.dense.push(segment.clone());
         }
@@ -201,10 +215,11 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());
     // Unloading from the turning point reached, as a rate-independent hysteresis defines it.
     let law = &law.unloading_at_turn(run_x_turn(&y_switch, sc));
-    // A rate-independent hysteresis unloads over a span x_max − x_res that may be 10⁻⁴ of x_max
-    // (Thornton far above v_y): integrated in X − X_turn, its step control weighs errors against
-    // that span, not against x_max, and the rebound keeps the tolerance asked.
-    let offset = if law.rate_independent() {
+    // A rate-independent hysteresis (one branch up, another down) unloads over a span
+    // x_max − x_res that may be 10⁻⁴ of x_max (Thornton far above v_y). Integrated in
+    // X − X_turn, with atol = rtol in scaled units, its error weight is ~atol instead of
+    // rtol·X_max: the rebound keeps the tolerance asked where X_max ≫ 1.
+    let offset = if law.rate_independent() && law.switches_at_max_compression() {
         y_switch[0]
     } else {
         0.0

@@ -16,11 +16,17 @@ struct Curves {
     unloading: DenseOutput,
     /// Scaled time of the phase switch on the dense output.
     t_switch: f64,
+    /// The law as these curves unload: anchored at their own turning point
+    /// ([`ForceLaw::unloading_at_turn`]; the law itself unless it is a hysteresis such as
+    /// Thornton's). An exact solution's law is anchored at the exact x_max; its curves, integrated,
+    /// turn within their tolerance of it, and their forces must follow their own anchor.
+    unloading_law: Option<AnyLaw>,
 }
 
-impl From<Run> for Curves {
-    fn from(run: Run) -> Self {
+impl Curves {
+    fn new(run: Run, law: &AnyLaw, scales: &Scales) -> Self {
         Curves {
+            unloading_law: Some(law.unloading_at_turn(run.x_turn(scales))),
             loading: run.loading,
             unloading: run.unloading,
             t_switch: run.t_switch,
@@ -74,7 +80,7 @@ impl Trajectory {
         summary: &ImpactSummary,
     ) -> Self {
         let mut traj = Self::bare(law, scales, summary, (0.0, 0.0));
-        traj.curves = OnceLock::from(Curves::from(run));
+        traj.curves = OnceLock::from(Curves::new(run, &law, &scales));
         // From the curves directly: `at` would fall back on the marks, not made yet.
         if let Some((y, _)) = traj.state_at(summary.t_f_max.clamp(0.0, traj.t_end)) {
             traj.extrema.peak = (y[0] * scales.x, y[1] * scales.v);
@@ -183,7 +189,7 @@ impl Trajectory {
     fn curves(&self) -> &Curves {
         self.curves.get_or_init(|| match &self.pending {
             Some(ro) => phases::run(&self.law, &self.scales, ro)
-                .map(Curves::from)
+                .map(|run| Curves::new(run, &self.law, &self.scales))
                 .unwrap_or_default(),
             None => Curves::default(),
         })
@@ -232,8 +238,12 @@ impl Trajectory {
             return self.between_marks(t);
         };
         let (x, v) = (y[0] * self.scales.x, y[1] * self.scales.v);
+        let law = match (phase, &self.curves().unloading_law) {
+            (Phase::Unloading, Some(anchored)) => anchored,
+            _ => &self.law,
+        };
         let f = if x > 0.0 {
-            self.law.phase_force(x, v, phase)
+            law.phase_force(x, v, phase)
         } else {
             0.0
         };

@@ -29,7 +29,8 @@ impl Thornton {
             Cap::Strip => self.strip_plastic_time(rtol),
         };
         // Unloading from rest at x_max: the elastic law k_u·(x − x_res)ⁿ, its energy given back.
-        let span = self.x_max - self.x_residual;
+        // The span from F_max itself: x_max − x_res cancels where the dent is nearly all of x_max.
+        let span = (f_max / self.k_unload).powf(1.0 / law.n);
         let unloading = PowerLaw {
             k: self.k_unload,
             n: law.n,
@@ -80,6 +81,9 @@ impl Thornton {
         let panels = u_max.ceil().max(1.0) as usize;
         let width = u_max / panels as f64;
         let nodes = nodes_for_gap(rtol, 0.25 * PI, width);
+        // The last panel's time integrand, its (u_max − u)^{−1/2} divided out, also has a branch
+        // point at u = −u_max (ΔW ∝ u_max² − u² near u = 0): as near as a + u_max to its start.
+        let last_nodes = nodes_for_gap(rtol, (0.25 * PI).min(u_max + u_max - width), width);
         let work = |a: f64, b: f64| singular_at_end(|u, _, _| work_rate(u), a, b, 0.0, nodes);
         // tail[i]: the work over panels i.. (over F_y·x_y).
         let mut tail = vec![0.0; panels + 1];
@@ -96,8 +100,11 @@ impl Thornton {
                     let rest = if to_b > 0.0 { work(u, b) } else { 0.0 };
                     scale * dxi_du(u) / (rest + tail[i + 1]).sqrt()
                 };
-                let alpha = if i + 1 == panels { -0.5 } else { 0.0 };
-                singular_at_end(integrand, a, b, alpha, nodes)
+                if i + 1 == panels {
+                    singular_at_end(integrand, a, b, -0.5, last_nodes)
+                } else {
+                    singular_at_end(integrand, a, b, 0.0, nodes)
+                }
             })
             .sum()
     }

@@ -35,6 +35,10 @@ pub struct Thornton {
     x_residual: f64,
 }
 
+/// The smallest v_y/v₀ calibration searches: e ∝ q^{1/4} (spheres) or q^{n/(n+2)} (strips) is
+/// then ~10⁻²⁵ or less.
+const LOWEST_Q: f64 = 1e-100;
+
 /// The refusal of a contact whose n is not Hertz's (spheres, by hand without a scene).
 fn exponent_refused(n: f64) -> ModelError {
     ModelError::OutOfDomain {
@@ -58,6 +62,14 @@ impl Thornton {
                 Cap::Circle
             }
         };
+        if !(v_yield > 0.0 && v_yield.is_finite()) {
+            return Err(ModelError::OutOfDomain {
+                formula: "Thornton (1997) elastic–perfectly-plastic law",
+                detail: format!(
+                    "v_yield = {v_yield} m/s: the yield velocity must be finite and > 0"
+                ),
+            });
+        }
         let (k, n, m, v0) = (params.law.k, params.law.n, params.mass, params.v0);
         let elastic = v_yield >= v0;
         let x_yield = params.law.max_approach(m, v_yield.min(v0));
@@ -72,7 +84,7 @@ impl Thornton {
             let xi = cap.approach_for_work(plastic, n);
             (x_yield * xi, f_yield * cap.force_ratio(xi, n))
         };
-        if !(x_max.is_finite() && f_max.is_finite()) {
+        if !(x_max.is_finite() && f_max.is_finite() && (x_max / x_yield).is_finite()) {
             return Err(ModelError::OutOfDomain {
                 formula: "Thornton (1997) elastic–perfectly-plastic law",
                 detail: format!(
@@ -168,21 +180,27 @@ impl Thornton {
     }
 
     /// The v_y at which the law's e(V) at `v0` is `e` (calibration, docs/physics.md §6.4):
-    /// Thornton's closed form inverted on spheres, [`capped_restitution`] on line contacts.
-    pub fn v_yield_for_restitution(params: &ImpactParams, e: f64) -> f64 {
+    /// Thornton's closed form inverted on spheres, [`capped_restitution`] on line contacts;
+    /// `None` where even v_y = 10⁻¹⁰⁰·v₀ rebounds above `e`.
+    pub fn v_yield_for_restitution(params: &ImpactParams, e: f64) -> Option<f64> {
         let v0 = params.v0;
         if e >= 1.0 {
-            return v0;
+            return Some(v0);
         }
         let q = match params.contact {
             Contact::Line { .. } => brent(
                 |q| capped_restitution(Cap::Strip, q, params.law.n) - e,
-                1e-100,
+                LOWEST_Q,
                 1.0,
             ),
-            _ => brent(|q| thornton_restitution(q) - e, 1e-100, 1.0),
+            _ => brent(|q| thornton_restitution(q) - e, LOWEST_Q, 1.0),
         };
-        q.unwrap_or(1.0) * v0
+        q.map(|q| q * v0)
+    }
+
+    /// The lowest restitution calibration can reach: at v_y = 10⁻¹⁰⁰·v₀.
+    pub fn lowest_restitution(params: &ImpactParams) -> f64 {
+        Self::restitution_of(params, LOWEST_Q * params.v0)
     }
 
     /// The restitution the law gives at `params` with yield velocity `v_yield`: Thornton's closed
@@ -326,6 +344,6 @@ impl ForceLaw for Thornton {
     /// Three conservative phases: closed forms on spheres, a quadrature of the capped loading's
     /// time on strips ([`exact`]).
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
-        Some(self.exact_impact(rtol))
+        Some(self.exact_impact(rtol)).filter(ExactImpact::is_valid)
     }
 }
