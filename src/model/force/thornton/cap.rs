@@ -53,16 +53,11 @@ impl Cap {
                 d + 0.75 * d * d
             }
             Cap::Strip => {
-                let top = xi.powf(0.5 * n).max(1.0).acosh();
+                let top = strip_u(xi, n);
                 if !top.is_finite() {
                     return f64::INFINITY;
                 }
-                // π/2 − gd u = arctan(1/sinh u): no cancellation where it is ~2e^{−u}.
-                let integrand = |u: f64, _: f64, _: f64| {
-                    let (c, s) = (u.cosh(), u.sinh());
-                    let cap = c * (c * s.recip().atan()) + s;
-                    2.0 / PI * cap * (2.0 / n) * c.powf(2.0 / n - 1.0) * s
-                };
+                let integrand = |u: f64, _: f64, _: f64| strip_work_rate(u, n);
                 let panels = top.ceil().max(1.0);
                 let width = top / panels;
                 (0..panels as usize)
@@ -95,6 +90,25 @@ impl Cap {
             }
         }
     }
+}
+
+/// u = arccosh β with β = ξ^{n/2}: the strip's variable, in which its work and times are analytic.
+pub(crate) fn strip_u(xi: f64, n: f64) -> f64 {
+    xi.powf(0.5 * n).max(1.0).acosh()
+}
+
+/// dξ/du = (2/n)·cosh^{2/n−1}u·sinh u, ξ = cosh^{2/n}u.
+pub(crate) fn strip_dxi_du(u: f64, n: f64) -> f64 {
+    let exponent = 2.0 / n;
+    exponent * u.cosh().powf(exponent - 1.0) * u.sinh()
+}
+
+/// d(work over F_y·x_y)/du on the strip: (F/F_y)·dξ/du with F/F_y = (2/π)·(β²·arcsin(1/β) +
+/// √(β² − 1)), β = cosh u, arcsin(1/β) = π/2 − gd u written as arctan(1/sinh u) (no
+/// cancellation where it is ~2e^{−u}).
+pub(crate) fn strip_work_rate(u: f64, n: f64) -> f64 {
+    let (c, s) = (u.cosh(), u.sinh());
+    2.0 / PI * (c * (c * s.recip().atan()) + s) * strip_dxi_du(u, n)
 }
 
 /// Thornton's e(V) above the yield velocity, q = V_y/V ∈ (0, 1]:

@@ -7,7 +7,7 @@
 use std::f64::consts::PI;
 
 use super::Thornton;
-use super::cap::Cap;
+use super::cap::{Cap, strip_dxi_du, strip_u, strip_work_rate};
 use crate::model::exact::ExactImpact;
 use crate::model::exact::elastic::elastic;
 use crate::model::exact::gauss_jacobi::{nodes_for_gap, singular_at_end};
@@ -22,7 +22,7 @@ impl Thornton {
             return elastic(params);
         }
         let (m, v0, law) = (params.mass, params.v0, params.law);
-        let f_max = self.f_yield * self.cap.force_ratio(self.x_max / self.x_yield, law.n);
+        let f_max = self.f_max;
         let t_elastic = law.loading_time_at(m, v0, self.x_yield);
         let t_plastic = match self.cap {
             Cap::Circle => self.circle_plastic_time(f_max),
@@ -70,21 +70,15 @@ impl Thornton {
     /// Gauss–Legendre integral over the rest of its own panel: positive terms, no cancellation.
     fn strip_plastic_time(&self, rtol: f64) -> f64 {
         let (m, n) = (self.params.mass, self.params.law.n);
-        let exponent = 2.0 / n;
-        let u_max = (self.x_max / self.x_yield).powf(0.5 * n).max(1.0).acosh();
-        // dξ/du = (2/n)·cosh^{2/n−1}u·sinh u, and F/F_y = (2/π)·(β²·arcsin(1/β) + √(β² − 1)).
-        let dxi_du = |u: f64| exponent * u.cosh().powf(exponent - 1.0) * u.sinh();
-        let work_rate = |u: f64| {
-            let (c, s) = (u.cosh(), u.sinh());
-            2.0 / PI * (c * (c * s.recip().atan()) + s) * dxi_du(u)
-        };
+        let u_max = strip_u(self.x_max / self.x_yield, n);
         let panels = u_max.ceil().max(1.0) as usize;
         let width = u_max / panels as f64;
         let nodes = nodes_for_gap(rtol, 0.25 * PI, width);
         // The last panel's time integrand, its (u_max − u)^{−1/2} divided out, also has a branch
         // point at u = −u_max (ΔW ∝ u_max² − u² near u = 0): as near as a + u_max to its start.
         let last_nodes = nodes_for_gap(rtol, (0.25 * PI).min(u_max + u_max - width), width);
-        let work = |a: f64, b: f64| singular_at_end(|u, _, _| work_rate(u), a, b, 0.0, nodes);
+        let work =
+            |a: f64, b: f64| singular_at_end(|u, _, _| strip_work_rate(u, n), a, b, 0.0, nodes);
         // tail[i]: the work over panels i.. (over F_y·x_y).
         let mut tail = vec![0.0; panels + 1];
         for i in (0..panels).rev() {
@@ -98,7 +92,7 @@ impl Thornton {
                 let b = if i + 1 == panels { u_max } else { b };
                 let integrand = |u: f64, _: f64, to_b: f64| {
                     let rest = if to_b > 0.0 { work(u, b) } else { 0.0 };
-                    scale * dxi_du(u) / (rest + tail[i + 1]).sqrt()
+                    scale * strip_dxi_du(u, n) / (rest + tail[i + 1]).sqrt()
                 };
                 if i + 1 == panels {
                     singular_at_end(integrand, a, b, -0.5, last_nodes)

@@ -31,6 +31,8 @@ pub struct Thornton {
     x_yield: f64,
     f_yield: f64,
     x_max: f64,
+    /// F_max, N: the loading force at x_max, where unloading starts.
+    f_max: f64,
     k_unload: f64,
     x_residual: f64,
 }
@@ -74,25 +76,14 @@ impl Thornton {
         let elastic = v_yield >= v0;
         let x_yield = params.law.max_approach(m, v_yield.min(v0));
         let f_yield = k * x_yield.powf(n);
-        let (x_max, f_max) = if elastic || x_yield == 0.0 {
-            let x_max = params.law.max_approach(m, v0);
-            (x_max, params.law.force(x_max))
+        let x_max = if elastic || x_yield == 0.0 {
+            params.law.max_approach(m, v0)
         } else {
             // ½mv₀² = k·x_y^{n+1}/(n+1) + the plastic work from x_y to x_max.
             let unit = f_yield * x_yield;
             let plastic = (0.5 * m * v0 * v0 - k * x_yield.powf(n + 1.0) / (n + 1.0)) / unit;
-            let xi = cap.approach_for_work(plastic, n);
-            (x_yield * xi, f_yield * cap.force_ratio(xi, n))
+            x_yield * cap.approach_for_work(plastic, n)
         };
-        if !(x_max.is_finite() && f_max.is_finite() && (x_max / x_yield).is_finite()) {
-            return Err(ModelError::OutOfDomain {
-                formula: "Thornton (1997) elastic–perfectly-plastic law",
-                detail: format!(
-                    "the impact energy ½·m·v₀² = {:e} J is beyond what the law can store in f64",
-                    0.5 * m * v0 * v0
-                ),
-            });
-        }
         let law = Thornton {
             params: *params,
             model,
@@ -101,23 +92,31 @@ impl Thornton {
             x_yield: if elastic { x_max } else { x_yield },
             f_yield,
             x_max,
+            f_max: f_yield,
             k_unload: k,
             x_residual: 0.0,
-        };
-        Ok(if elastic {
-            law
-        } else {
-            law.unloading_from(x_max)
-        })
+        }
+        .unloading_from(x_max);
+        if !(x_max.is_finite() && law.f_max.is_finite() && (x_max / x_yield).is_finite()) {
+            return Err(ModelError::OutOfDomain {
+                formula: "Thornton (1997) elastic–perfectly-plastic law",
+                detail: format!(
+                    "the impact energy ½·m·v₀² = {:e} J is beyond what the law can store in f64",
+                    0.5 * m * v0 * v0
+                ),
+            });
+        }
+        Ok(law)
     }
 
-    /// The law unloading from the turning point `x_max`, m: Hertz's if it lies below first
+    /// The law unloading from the turning point `x_max`, m: Hertz's if it lies at or below first
     /// yield, else k_u = k·λⁿ⁻¹ with λ = k·x_maxⁿ/F_max and x_res = x_max − (F_max/k_u)^{1/n}.
     fn unloading_from(self, x_max: f64) -> Self {
         let (k, n) = (self.params.law.k, self.params.law.n);
         if x_max <= self.x_yield {
             return Thornton {
                 x_max: self.x_yield,
+                f_max: self.f_yield,
                 k_unload: k,
                 x_residual: 0.0,
                 ..self
@@ -129,6 +128,7 @@ impl Thornton {
         let x_residual = x_max - (f_max / k_unload).powf(1.0 / n);
         Thornton {
             x_max,
+            f_max,
             k_unload,
             x_residual: x_residual.max(0.0),
             ..self
@@ -187,26 +187,22 @@ impl Thornton {
         if e >= 1.0 {
             return Some(v0);
         }
-        let q = match params.contact {
-            Contact::Line { .. } => brent(
-                |q| capped_restitution(Cap::Strip, q, params.law.n) - e,
-                LOWEST_Q,
-                1.0,
-            ),
-            _ => brent(|q| thornton_restitution(q) - e, LOWEST_Q, 1.0),
-        };
-        q.map(|q| q * v0)
+        brent(|q| Self::restitution_at(params, q) - e, LOWEST_Q, 1.0).map(|q| q * v0)
     }
 
     /// The lowest restitution calibration can reach: at v_y = 10⁻¹⁰⁰·v₀.
     pub fn lowest_restitution(params: &ImpactParams) -> f64 {
-        Self::restitution_of(params, LOWEST_Q * params.v0)
+        Self::restitution_at(params, LOWEST_Q)
     }
 
     /// The restitution the law gives at `params` with yield velocity `v_yield`: Thornton's closed
     /// form on spheres, [`capped_restitution`] on line contacts.
     pub fn restitution_of(params: &ImpactParams, v_yield: f64) -> f64 {
-        let q = v_yield / params.v0;
+        Self::restitution_at(params, v_yield / params.v0)
+    }
+
+    /// [`Thornton::restitution_of`] at q = v_y/v₀.
+    fn restitution_at(params: &ImpactParams, q: f64) -> f64 {
         match params.contact {
             Contact::Line { .. } => capped_restitution(Cap::Strip, q, params.law.n),
             _ => thornton_restitution(q),
