@@ -18,12 +18,12 @@ use crate::model::exact::ExactImpact;
 use crate::model::force::{AnyLaw, ForceLaw};
 use crate::model::ode::{Method, OdeError};
 
-use super::phases::{self, Run, RunOptions};
+use super::phases::{self, RunOptions};
 use super::scale::Scales;
-use super::summary::summarize;
 use super::tolerance::integrator_tolerances;
 use super::{
-    ImpactError, ImpactSolution, ImpactSummary, MethodUsed, SolveOptions, TensileCutoff, Trajectory,
+    ImpactError, ImpactSolution, ImpactSummary, MethodUsed, SolveOptions, TensileCutoff,
+    Trajectory, integrated_solution,
 };
 
 /// Below this rtol DOP853 costs fewer force evaluations than DOPRI5 for the same promise (both
@@ -87,7 +87,7 @@ pub(super) fn solve<L: ForceLaw>(
         max_steps: opts.max_steps.min(EXPLICIT_BUDGET),
     };
     let spent = match phases::run(law, sc, &first) {
-        Ok(run) => return Ok(finish(law, any, sc, run, explicit)),
+        Ok(run) => return Ok(integrated_solution(law, any, sc, run, explicit)),
         // Stability-limited steps ran out of DOPRI5's budget (not the caller's): stiff.
         Err(ImpactError::Integration {
             source: OdeError::StepBudgetExhausted { steps, .. },
@@ -114,27 +114,7 @@ pub(super) fn solve<L: ForceLaw>(
     let per_step = if explicit == Method::Dop853 { 12 } else { 6 };
     run.stats.steps += spent;
     run.force_evals += per_step * spent;
-    Ok(finish(law, any, sc, run, Method::Radau5))
-}
-
-fn finish<L: ForceLaw>(
-    law: &L,
-    any: AnyLaw,
-    sc: &Scales,
-    run: Run,
-    method: Method,
-) -> ImpactSolution {
-    let x_turn = run.x_turn(sc);
-    let (law, any) = (
-        &law.unloading_at_turn(x_turn),
-        any.unloading_at_turn(x_turn),
-    );
-    let summary = summarize(law, sc, &run, MethodUsed::Integrator(method));
-    let trajectory = Trajectory::integrated(any, *sc, run, &summary);
-    ImpactSolution {
-        summary,
-        trajectory,
-    }
+    Ok(integrated_solution(law, any, sc, run, Method::Radau5))
 }
 
 /// The exact numbers. No step was taken and no force evaluated, and the exit speed comes from

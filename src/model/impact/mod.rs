@@ -278,18 +278,30 @@ fn solve_with<L: ForceLaw>(
                 max_steps: opts.max_steps,
             };
             let run = phases::run(law, scales, &ro)?;
-            let x_turn = run.x_turn(scales);
-            let (law, any) = (
-                &law.unloading_at_turn(x_turn),
-                any.unloading_at_turn(x_turn),
-            );
-            let summary = summary::summarize(law, scales, &run, MethodUsed::Integrator(method));
-            let trajectory = Trajectory::integrated(any, *scales, run, &summary);
-            Ok(ImpactSolution {
-                summary,
-                trajectory,
-            })
+            Ok(integrated_solution(law, any, scales, run, method))
         }
+    }
+}
+
+/// The summary and curves of an integrated `run`, with a hysteresis's unloading anchored where
+/// the run turned ([`ForceLaw::unloading_at_turn`]), as the run itself unloaded.
+fn integrated_solution<L: ForceLaw>(
+    law: &L,
+    any: AnyLaw,
+    sc: &scale::Scales,
+    run: phases::Run,
+    method: Method,
+) -> ImpactSolution {
+    let x_turn = run.x_turn(sc);
+    let (law, any) = (
+        &law.unloading_at_turn(x_turn),
+        any.unloading_at_turn(x_turn),
+    );
+    let summary = summary::summarize(law, sc, &run, MethodUsed::Integrator(method));
+    let trajectory = Trajectory::integrated(any, *sc, run, &summary);
+    ImpactSolution {
+        summary,
+        trajectory,
     }
 }
 
