@@ -8,13 +8,8 @@ use std::f64::consts::PI;
 use hertz_tui::model::Scene;
 use hertz_tui::model::engine::{self, ENGINES, EngineError, Translation};
 use hertz_tui::model::ode::{self, Direction, Event, Method, OdeSystem, State};
-use hertz_tui::model::presets::Registry;
 
-fn scene(name: &str) -> Scene {
-    Registry::builtin()
-        .and_then(|r| r.scene(name))
-        .unwrap_or_else(|e| panic!("{name}: {e}"))
-}
+use crate::laws_common::preset as scene;
 
 fn fig5() -> Scene {
     scene("fig5-steel-sphere-r10-plate")

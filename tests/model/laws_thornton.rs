@@ -7,11 +7,10 @@ use std::f64::consts::PI;
 use hertz_tui::model::force::thornton::{Thornton, thornton_restitution};
 use hertz_tui::model::force::{Contact, ForceModel, ImpactParams};
 use hertz_tui::model::impact::{SolveOptions, solve_impact, solve_law};
-use hertz_tui::model::presets::Registry;
 use hertz_tui::model::pressure::YIELD_FACTOR;
 use hertz_tui::model::{Scene, Shape};
 
-use crate::laws_common::{dop853, e_out_with, sphere};
+use crate::laws_common::{dop853, e_out_with, preset, sphere};
 
 const THORNTON: ForceModel = ForceModel::with_id("thornton");
 
@@ -66,16 +65,9 @@ fn the_yield_velocity_inverted_from_e_realises_it() {
     }
 }
 
-fn preset(name: &str) -> Scene {
-    Registry::builtin()
-        .and_then(|r| r.scene(name))
-        .unwrap_or_else(|e| panic!("{name}: {e}"))
-}
-
+/// `scene` at `v0`, its own e kept.
 fn params_at(scene: &Scene, v0: f64) -> ImpactParams {
-    let mut scene = scene.clone();
-    scene.impact.v0 = v0;
-    scene.impact_params(&scene.quasistatic().unwrap())
+    crate::laws_common::params_at(scene, v0, scene.impact.restitution)
 }
 
 #[test]

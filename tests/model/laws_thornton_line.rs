@@ -10,26 +10,12 @@ use hertz_tui::model::force::thornton::{Cap, Thornton, capped_restitution, thorn
 use hertz_tui::model::force::{Contact, ForceLaw, ForceModel, ImpactParams, Phase};
 use hertz_tui::model::impact::{MethodChoice, SolveOptions, solve_impact};
 use hertz_tui::model::ode::Method;
-use hertz_tui::model::presets::Registry;
 use hertz_tui::model::{Scene, Shape};
 
-use crate::laws_common::dop853;
+use crate::laws_common::{dop853, params_at, preset};
 
 const THORNTON: ForceModel = ForceModel::with_id("thornton");
 const CYLINDER_SCENES: [&str; 2] = ["steel-cylinder-r20-l100-plate", "steel-cylinders-r20-l100"];
-
-fn preset(name: &str) -> Scene {
-    Registry::builtin()
-        .and_then(|r| r.scene(name))
-        .unwrap_or_else(|e| panic!("{name}: {e}"))
-}
-
-fn params_at(scene: &Scene, v0: f64, e: f64) -> ImpactParams {
-    let mut scene = scene.clone();
-    scene.impact.v0 = v0;
-    scene.impact.restitution = e;
-    scene.impact_params(&scene.quasistatic().unwrap())
-}
 
 fn v_yield_of(p: &ImpactParams) -> f64 {
     THORNTON.law(p).unwrap().damping().unwrap().value

@@ -4,16 +4,10 @@
 //! table prints in front of its power of v₀.
 
 use hertz_tui::model::cylinder::{self, PowerFit};
-use hertz_tui::model::presets::Registry;
 use hertz_tui::model::quasistatic::ContactGeometry;
 use hertz_tui::model::{PowerLaw, Quasistatic, Scene};
 
-fn scene(name: &str) -> Scene {
-    Registry::builtin()
-        .expect("built-in presets load")
-        .scene(name)
-        .expect("built-in scene loads")
-}
+use crate::laws_common::preset as scene;
 
 fn evaluate(name: &str) -> (Scene, Quasistatic) {
     let scene = scene(name);
