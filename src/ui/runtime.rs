@@ -14,7 +14,7 @@ use std::thread;
 use std::time::Duration;
 
 use color_eyre::eyre::{WrapErr, eyre};
-use ratatui::DefaultTerminal;
+use ratatui::backend::CrosstermBackend;
 use ratatui::crossterm::event::{
     self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
 };
@@ -25,6 +25,7 @@ use super::action::Action;
 use super::app::App;
 use super::keymap::action_for_event;
 use super::render;
+use super::screen::Screen;
 use super::study_worker::{StudyReport, StudyWorker};
 use super::update::update;
 use super::worker::{Report, Worker};
@@ -59,9 +60,12 @@ fn spawn_input(events: Sender<Wake>) -> std::io::Result<()> {
 /// key repeat, so a held key draws about once per repeat burst and a single key at once.
 const KEY_BURST_WAIT: Duration = Duration::from_millis(8);
 
+/// The explorer's screen: crossterm on standard output.
+pub type TerminalScreen = Screen<CrosstermBackend<std::io::Stdout>>;
+
 /// Runs `app` in `terminal` until it quits, with bracketed paste (and mouse capture while the app
 /// wants it) on meanwhile; both are turned off again on every exit.
-pub fn event_loop(terminal: &mut DefaultTerminal, app: App) -> color_eyre::Result<()> {
+pub fn event_loop(terminal: &mut TerminalScreen, app: App) -> color_eyre::Result<()> {
     execute!(std::io::stdout(), EnableBracketedPaste).wrap_err("cannot enable bracketed paste")?;
     let result = run(terminal, app);
     release_terminal_modes();
@@ -79,7 +83,7 @@ pub fn release_terminal_modes() {
 
 /// Draws one frame inside a synchronized update, so the terminal shows it whole.
 pub fn draw_synchronized<B>(
-    terminal: &mut ratatui::Terminal<B>,
+    terminal: &mut Screen<B>,
     writer: &mut impl Write,
     app: &App,
 ) -> color_eyre::Result<()>
@@ -115,7 +119,7 @@ fn burst(first: Wake, wakes: &Receiver<Wake>) -> Vec<Wake> {
 }
 
 /// Sleeps in `recv` between events: no busy loop.
-fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
+fn run(terminal: &mut TerminalScreen, mut app: App) -> color_eyre::Result<()> {
     let mut mouse = false;
     let (events, wakes) = mpsc::channel();
     spawn_input(events.clone()).wrap_err("cannot start the input thread")?;
@@ -181,7 +185,6 @@ mod tests {
     use crate::ui::style::MarkerStyle;
     use crate::ui::style::Theme;
     use crate::ui::testing::fig5_scene;
-    use ratatui::Terminal;
     use ratatui::backend::TestBackend;
     use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
@@ -200,7 +203,7 @@ mod tests {
             MarkerStyle::Braille,
             Theme { color: false },
         );
-        let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
+        let mut terminal = Screen::new(TestBackend::new(100, 30)).unwrap();
         let mut out: Vec<u8> = Vec::new();
         draw_synchronized(&mut terminal, &mut out, &app).unwrap();
         assert_eq!(

@@ -1,0 +1,103 @@
+//! The terminal the explorer draws into: ratatui's `Terminal` for frames, resizing and the cursor,
+//! with the buffer diff done by [`diff`], which finds the cells to rewrite in about a fifth of the
+//! instructions ratatui's own diff takes on the explorer's frames, and the same cells.
+//!
+//! ratatui hands a frame's writes to the backend as a lazy diff. The `Terminal` here draws into a
+//! [`Deferred`] backend that drops that diff unread and holds the cursor back; [`Screen::draw`]
+//! then diffs the finished frame against what the terminal shows, writes the changed cells, and
+//! replays the cursor, in ratatui's order.
+
+mod deferred;
+mod diff;
+#[cfg(test)]
+mod tests;
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use ratatui::backend::Backend;
+use ratatui::buffer::Buffer;
+use ratatui::{Frame, Terminal};
+
+use deferred::{CursorOp, Deferred};
+
+/// A full-screen terminal over the backend `B` (crossterm for the explorer, a test backend in
+/// tests and benches).
+#[derive(Debug)]
+pub struct Screen<B: Backend> {
+    terminal: Terminal<Deferred<B>>,
+    /// Raised by the backend when the terminal is cleared (a resize, or an explicit clear).
+    cleared: Arc<AtomicBool>,
+    /// What the terminal shows now.
+    shown: Buffer,
+    /// The cells of the last frame that differed from what was shown (kept to reuse its memory).
+    changed: Vec<usize>,
+}
+
+impl<B: Backend> Screen<B> {
+    /// A screen over `backend`, taken to show nothing yet (as ratatui takes a new terminal).
+    pub fn new(backend: B) -> Result<Self, B::Error> {
+        let cleared = Arc::new(AtomicBool::new(false));
+        let mut terminal = Terminal::new(Deferred::new(backend, Arc::clone(&cleared)))?;
+        let shown = Buffer::empty(terminal.get_frame().area());
+        Ok(Self {
+            terminal,
+            cleared,
+            shown,
+            changed: Vec::new(),
+        })
+    }
+
+    /// Draws one frame: `render` fills it; the cells that changed are written, then the cursor is
+    /// placed (or hidden) as `render` asked, and the backend is flushed.
+    pub fn draw(&mut self, render: impl FnOnce(&mut Frame)) -> Result<(), B::Error> {
+        self.terminal.backend_mut().drawing = true;
+        let drawn = self.terminal.draw(render).map(|frame| {
+            let next = frame.buffer;
+            // A cleared or resized terminal shows nothing: diff against a blank frame, as ratatui
+            // does.
+            if self.cleared.swap(false, Ordering::Relaxed) || self.shown.area != next.area {
+                self.shown = Buffer::empty(next.area);
+            }
+            diff::diff_into(&mut self.shown, next, &mut self.changed);
+        });
+        let backend = self.terminal.backend_mut();
+        backend.drawing = false;
+        if let Err(e) = drawn {
+            backend.cursor_ops.clear();
+            return Err(e);
+        }
+        let area = self.shown.area;
+        let width = usize::from(area.width.max(1));
+        let cells = &self.shown.content;
+        backend.inner.draw(self.changed.iter().map(|&i| {
+            // The index of a cell of the frame: its position fits in u16 as the area does.
+            let x = area.x + (i % width) as u16;
+            let y = area.y + (i / width) as u16;
+            (x, y, &cells[i])
+        }))?;
+        for op in backend.cursor_ops.drain(..) {
+            match op {
+                CursorOp::Hide => backend.inner.hide_cursor()?,
+                CursorOp::Show => backend.inner.show_cursor()?,
+                CursorOp::MoveTo(position) => backend.inner.set_cursor_position(position)?,
+            }
+        }
+        backend.inner.flush()
+    }
+
+    /// The terminal's size now.
+    pub fn size(&self) -> Result<ratatui::layout::Size, B::Error> {
+        self.terminal.size()
+    }
+
+    /// The backend (for tests: a `TestBackend`'s buffer is what the terminal shows).
+    pub fn backend(&self) -> &B {
+        &self.terminal.backend().inner
+    }
+
+    /// The backend, to change it between frames (a test backend's size, say).
+    pub fn backend_mut(&mut self) -> &mut B {
+        &mut self.terminal.backend_mut().inner
+    }
+}

@@ -1,0 +1,240 @@
+//! The screen writes what ratatui's own `Terminal` writes: the same cells, the same cursor, frame
+//! after frame, on random frames (wide characters, emoji, skipped cells, diff options and styles
+//! included) and on the explorer's own frames.
+
+use proptest::prelude::*;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::buffer::{Buffer, CellDiffOption, CellWidth};
+use ratatui::layout::{Position, Rect};
+use ratatui::style::{Color, Modifier};
+use std::num::NonZeroU16;
+
+use super::Screen;
+use super::diff::{diff_into, known_narrow};
+use crate::model::presets::Registry;
+use crate::ui::action::Action;
+use crate::ui::app::App;
+use crate::ui::field::Nudge;
+use crate::ui::render;
+use crate::ui::style::{MarkerStyle, Theme};
+use crate::ui::testing::fig5_scene;
+use crate::ui::update::update;
+
+#[test]
+fn the_known_narrow_symbols_are_one_column_wide_by_ratatuis_measure() {
+    let inside = ('\u{2500}'..='\u{259F}').chain('\u{2800}'..='\u{28FF}');
+    for c in inside {
+        let s = c.to_string();
+        assert!(known_narrow(&s), "{c:?} ({:X}) is recognised", c as u32);
+        assert_eq!(s.cell_width(), 1, "{c:?} ({:X}) is one column", c as u32);
+    }
+    // Just outside: geometric shapes (some of them emoji, two columns), arrows, CJK.
+    for c in [
+        '\u{24FF}', '\u{25A0}', '\u{25FD}', '\u{27FF}', '\u{2900}', 'µ', '漢',
+    ] {
+        assert!(
+            !known_narrow(&c.to_string()),
+            "{c:?} is measured, not assumed"
+        );
+    }
+}
+
+/// A cell's content drawn from symbols of every width ratatui distinguishes.
+const SYMBOLS: [&str; 14] = [
+    " ",
+    "a",
+    "Z",
+    "⣿",
+    "⠁",
+    "─",
+    "│",
+    "µ",
+    "·",
+    "漢",
+    "😀",
+    "❤\u{FE0F}",
+    "e\u{301}",
+    "ﾞ",
+];
+const NARROW: usize = 9;
+
+#[derive(Debug, Clone)]
+struct CellSpec {
+    symbol: usize,
+    fg: u8,
+    bg: u8,
+    bold: bool,
+    option: u8,
+}
+
+fn cell_spec(symbols: usize) -> impl Strategy<Value = CellSpec> {
+    (0..symbols, 0u8..4, 0u8..3, any::<bool>(), 0u8..12).prop_map(
+        |(symbol, fg, bg, bold, option)| CellSpec {
+            symbol,
+            fg,
+            bg,
+            bold,
+            option,
+        },
+    )
+}
+
+fn color(i: u8) -> Color {
+    [
+        Color::Reset,
+        Color::Red,
+        Color::Rgb(1, 2, 3),
+        Color::Indexed(7),
+    ][usize::from(i % 4)]
+}
+
+/// Draws `specs` into `buf` by ratatui's own `set_string` (which pads wide symbols as ratatui
+/// does), then sets the rarer cell options.
+fn fill(buf: &mut Buffer, specs: &[CellSpec], options: bool) {
+    let area = buf.area;
+    for (i, spec) in specs.iter().enumerate().take(area.area() as usize) {
+        let x = (i % usize::from(area.width)) as u16;
+        let y = (i / usize::from(area.width)) as u16;
+        let mut style = ratatui::style::Style::new()
+            .fg(color(spec.fg))
+            .bg(color(spec.bg));
+        if spec.bold {
+            style = style.add_modifier(Modifier::BOLD);
+        }
+        buf.set_string(x, y, SYMBOLS[spec.symbol], style);
+    }
+    if options {
+        for (cell, spec) in buf.content.iter_mut().zip(specs) {
+            match spec.option {
+                0 => cell.diff_option = CellDiffOption::AlwaysUpdate,
+                1 => cell.diff_option = CellDiffOption::Skip,
+                2 => cell.diff_option = CellDiffOption::ForcedWidth(NonZeroU16::MIN),
+                #[allow(deprecated)]
+                3 => cell.skip = true,
+                _ => {}
+            }
+        }
+    }
+}
+
+/// One frame: its cells, where it puts the cursor (if anywhere), and whether the terminal was
+/// resized before it.
+type FrameSpec = (Vec<CellSpec>, Option<(u16, u16)>, bool);
+
+/// One to five frames of 7×3 cells: a cursor or none, and a size that sometimes changes.
+fn frames(symbols: usize) -> impl Strategy<Value = Vec<FrameSpec>> {
+    prop::collection::vec(
+        (
+            prop::collection::vec(cell_spec(symbols), 21),
+            prop::option::of((0u16..7, 0u16..3)),
+            prop::bool::weighted(0.15),
+        ),
+        1..6,
+    )
+}
+
+fn compare(frames: Vec<FrameSpec>, options: bool) {
+    let mut terminal = Terminal::new(TestBackend::new(7, 3)).unwrap();
+    let mut screen = Screen::new(TestBackend::new(7, 3)).unwrap();
+    for (k, (specs, cursor, resize)) in frames.into_iter().enumerate() {
+        if resize {
+            let (w, h) = if k % 2 == 0 { (6, 3) } else { (7, 2) };
+            terminal.backend_mut().resize(w, h);
+            screen.backend_mut().resize(w, h);
+        }
+        let draw = |frame: &mut ratatui::Frame| {
+            let area = frame.area();
+            fill(frame.buffer_mut(), &specs, options);
+            if let Some((x, y)) = cursor {
+                frame.set_cursor_position(Position::new(
+                    x.min(area.width - 1),
+                    y.min(area.height - 1),
+                ));
+            }
+        };
+        terminal.draw(draw).unwrap();
+        screen.draw(draw).unwrap();
+        assert_eq!(screen.backend(), terminal.backend(), "frame {k}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// Narrow cells only: the fast path.
+    #[test]
+    fn narrow_frames_are_written_as_ratatui_writes_them(frames in frames(NARROW)) {
+        compare(frames, false);
+    }
+
+    /// Every kind of cell: wide characters, emoji, combining marks and cell options.
+    #[test]
+    fn any_frames_are_written_as_ratatui_writes_them(frames in frames(SYMBOLS.len())) {
+        compare(frames, true);
+    }
+
+    /// The cells written are the ones ratatui's diff writes, in its order, and the shown frame
+    /// becomes the next one.
+    #[test]
+    fn the_diff_is_ratatuis(
+        before in prop::collection::vec(cell_spec(SYMBOLS.len()), 21),
+        after in prop::collection::vec(cell_spec(SYMBOLS.len()), 21),
+        narrow in any::<bool>(),
+        options in any::<bool>(),
+    ) {
+        let area = Rect::new(0, 0, 7, 3);
+        let pick = |specs: Vec<CellSpec>| -> Vec<CellSpec> {
+            specs.into_iter().map(|mut s| { if narrow { s.symbol %= NARROW; } s }).collect()
+        };
+        let (mut shown, mut next) = (Buffer::empty(area), Buffer::empty(area));
+        fill(&mut shown, &pick(before), options);
+        fill(&mut next, &pick(after), options);
+        let expected: Vec<usize> = shown.diff(&next).into_iter().map(|(x, y, _)| next.index_of(x, y)).collect();
+        let mut changed = vec![99];
+        diff_into(&mut shown, &next, &mut changed);
+        prop_assert_eq!(changed, expected);
+        prop_assert_eq!(shown, next);
+    }
+}
+
+#[test]
+fn the_explorer_is_written_as_ratatui_writes_it() {
+    let mut app = App::new(
+        fig5_scene(),
+        Registry::builtin().unwrap(),
+        MarkerStyle::Braille,
+        Theme { color: true },
+    );
+    update(&mut app, Action::Resize(120, 36));
+    let mut terminal = Terminal::new(TestBackend::new(120, 36)).unwrap();
+    let mut screen = Screen::new(TestBackend::new(120, 36)).unwrap();
+    let steps = [
+        None,
+        Some(Action::Nudge(Nudge::Up)),
+        Some(Action::Nudge(Nudge::Down)),
+        Some(Action::Help),
+        Some(Action::Cancel),
+        Some(Action::Enter),
+        Some(Action::MoveCursor(false)),
+        Some(Action::Cancel),
+    ];
+    for (k, step) in steps.into_iter().enumerate() {
+        if let Some(action) = step {
+            update(&mut app, action);
+        }
+        for job in app.take_jobs() {
+            update(&mut app, Action::Solved(Ok(crate::ui::worker::solve(&job))));
+        }
+        terminal.draw(|frame| render::draw(frame, &app)).unwrap();
+        screen.draw(|frame| render::draw(frame, &app)).unwrap();
+        assert_eq!(screen.backend(), terminal.backend(), "step {k}");
+    }
+    // A resize: both clear and redraw everything.
+    terminal.backend_mut().resize(100, 30);
+    screen.backend_mut().resize(100, 30);
+    update(&mut app, Action::Resize(100, 30));
+    terminal.draw(|frame| render::draw(frame, &app)).unwrap();
+    screen.draw(|frame| render::draw(frame, &app)).unwrap();
+    assert_eq!(screen.backend(), terminal.backend(), "after the resize");
+}
