@@ -88,16 +88,15 @@ pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> Strin
     }
     let digits = digits.max(1);
     // The exponent of the rounded value, so that a carry (999.96 → 1.000e3) moves the prefix.
-    let (mantissa, exponent) = rounded(value, digits);
+    let rounded = Rounded::new(value, digits);
+    let exponent = rounded.exponent;
     let engineering = exponent.div_euclid(3) * 3;
     let index = (engineering - SMALLEST_EXPONENT) / 3;
     let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
         Some(prefix) => prefix,
-        None => return join(&scientific(value, digits, zeros), "", unit),
+        None => return join(&rounded.scientific(zeros), "", unit),
     };
-    let shift = exponent - engineering;
-    let decimals = (digits as i32 - 1 - shift).max(0) as usize;
-    let number = format!("{:.decimals$}", mantissa * 10f64.powi(shift));
+    let number = rounded.positional(exponent - engineering);
     join(trim(&number, zeros), prefix.symbol, unit)
 }
 
@@ -110,13 +109,7 @@ pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
     if value == 0.0 {
         return "0".into();
     }
-    let digits = digits.max(1);
-    let (mantissa, exponent) = rounded(value, digits);
-    if !PLAIN.contains(&(mantissa.abs() * 10f64.powi(exponent))) {
-        return scientific(value, digits, zeros);
-    }
-    let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
-    trim(&format!("{value:.decimals$}"), zeros).to_string()
+    Rounded::new(value, digits.max(1)).significant(value, zeros)
 }
 
 /// `value` in scientific notation with `digits` significant digits: 1.465e10, 9.100e-12.
@@ -127,13 +120,7 @@ pub fn scientific(value: f64, digits: usize, zeros: Zeros) -> String {
     if value == 0.0 {
         return "0".into();
     }
-    let text = format!("{:.*e}", digits.max(1) - 1, value);
-    match (zeros, text.split_once('e')) {
-        (Zeros::Trim, Some((mantissa, exponent))) => {
-            format!("{}e{exponent}", trim(mantissa, Zeros::Trim))
-        }
-        _ => text,
-    }
+    Rounded::new(value, digits.max(1)).scientific(zeros)
 }
 
 /// The shortest text that reads back as exactly `value`: for an input that must not look like
@@ -162,15 +149,86 @@ fn non_finite(value: f64) -> String {
     }
 }
 
-/// `value` rounded to `digits` significant digits, as a mantissa in ±[1, 10) and its decimal
-/// exponent; by the formatter's exact decimal rounding, so tiny and huge values need no scale.
-fn rounded(value: f64, digits: usize) -> (f64, i32) {
-    let text = format!("{:.*e}", digits - 1, value);
-    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-    (
-        mantissa.parse().unwrap_or(value),
-        exponent.parse().unwrap_or(0),
-    )
+/// A finite non-zero value rounded to a number of significant digits, by the formatter's exact
+/// decimal rounding (so tiny and huge values need no scale): formatted once in scientific
+/// notation, from which the plain and engineering forms take their digits.
+#[derive(Debug, Clone)]
+pub struct Rounded {
+    /// `-2.388e-5`: the formatter's scientific text.
+    text: String,
+    /// Where the mantissa ends (the `e`).
+    e: usize,
+    /// The decimal exponent of the first digit.
+    pub exponent: i32,
+}
+
+impl Rounded {
+    /// `value` (finite, non-zero) rounded to `digits` ≥ 1 significant digits.
+    pub fn new(value: f64, digits: usize) -> Self {
+        let text = format!("{:.*e}", digits - 1, value);
+        let e = text.find('e').unwrap_or(text.len());
+        let exponent = text.get(e + 1..).and_then(|x| x.parse().ok()).unwrap_or(0);
+        Self { text, e, exponent }
+    }
+
+    /// Scientific notation: `1.465e10`, or `1.5e-12` with the mantissa's trailing zeros trimmed.
+    pub fn scientific(&self, zeros: Zeros) -> String {
+        let mantissa = &self.text[..self.e];
+        if zeros == Zeros::Trim && mantissa.contains('.') {
+            let kept = trim(mantissa, Zeros::Trim);
+            format!("{kept}{}", &self.text[self.e..])
+        } else {
+            self.text.clone()
+        }
+    }
+
+    /// [`significant`]'s text of `value`, which this is the rounding of: plain for a rounded
+    /// magnitude in [1e-4, 1e7), scientific outside.
+    pub fn significant(&self, value: f64, zeros: Zeros) -> String {
+        if !(-4..=6).contains(&self.exponent) {
+            return self.scientific(zeros);
+        }
+        let digits = self.digits().count() as i32;
+        if self.exponent >= digits {
+            // More integer digits than significant ones: all of them, as `{:.0}` prints them.
+            return format!("{value:.0}");
+        }
+        let number = self.positional(self.exponent);
+        trim(&number, zeros).to_string()
+    }
+
+    /// The digits written with `exponent` as the first digit's decimal exponent, as many
+    /// decimals as the digits reach (none past the point when they end before it, zeros filling
+    /// up to it): for `2.388`, `23.88` at 1, `0.02388` at -2; for `3`, `300` at 2.
+    fn positional(&self, exponent: i32) -> String {
+        let mut out = String::with_capacity(self.text.len() + 8);
+        if self.text.starts_with('-') {
+            out.push('-');
+        }
+        let mut digits = self.digits();
+        if exponent < 0 {
+            out.push_str("0.");
+            for _ in 0..(-exponent - 1) {
+                out.push('0');
+            }
+            out.extend(digits);
+            return out;
+        }
+        for _ in 0..=exponent {
+            out.push(digits.next().unwrap_or('0'));
+        }
+        let mut rest = digits.peekable();
+        if rest.peek().is_some() {
+            out.push('.');
+            out.extend(rest);
+        }
+        out
+    }
+
+    /// The mantissa's digits, without sign and point.
+    fn digits(&self) -> impl Iterator<Item = char> + '_ {
+        self.text[..self.e].chars().filter(char::is_ascii_digit)
+    }
 }
 
 fn trim(number: &str, zeros: Zeros) -> &str {
@@ -275,6 +333,77 @@ mod tests {
         assert_eq!(round_trip(f64::NAN), NOT_A_NUMBER);
         for value in [0.4999999999, 1e-9, 1e300, 7800.0, -1.25e-5] {
             assert_eq!(round_trip(value).parse::<f64>().unwrap(), value);
+        }
+    }
+
+    /// The formatting as it was before [`Rounded`]: the value formatted in scientific notation,
+    /// parsed back, and formatted again plain. Slower, and the oracle of the property test below.
+    mod reference {
+        use super::super::{ENGINEERING, PLAIN, SMALLEST_EXPONENT, Zeros, join, trim};
+
+        pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> String {
+            let (mantissa, exponent) = rounded(value, digits);
+            let engineering = exponent.div_euclid(3) * 3;
+            let index = (engineering - SMALLEST_EXPONENT) / 3;
+            let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
+                Some(prefix) => prefix,
+                None => return join(&scientific(value, digits, zeros), "", unit),
+            };
+            let shift = exponent - engineering;
+            let decimals = (digits as i32 - 1 - shift).max(0) as usize;
+            let number = format!("{:.decimals$}", mantissa * 10f64.powi(shift));
+            join(trim(&number, zeros), prefix.symbol, unit)
+        }
+
+        pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
+            let (mantissa, exponent) = rounded(value, digits);
+            if !PLAIN.contains(&(mantissa.abs() * 10f64.powi(exponent))) {
+                return scientific(value, digits, zeros);
+            }
+            let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+            trim(&format!("{value:.decimals$}"), zeros).to_string()
+        }
+
+        pub fn scientific(value: f64, digits: usize, zeros: Zeros) -> String {
+            let text = format!("{:.*e}", digits - 1, value);
+            match (zeros, text.split_once('e')) {
+                (Zeros::Trim, Some((mantissa, exponent))) => {
+                    format!("{}e{exponent}", trim(mantissa, Zeros::Trim))
+                }
+                _ => text,
+            }
+        }
+
+        fn rounded(value: f64, digits: usize) -> (f64, i32) {
+            let text = format!("{:.*e}", digits - 1, value);
+            let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+            (mantissa.parse().unwrap(), exponent.parse().unwrap())
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig { cases: 4000, ..Default::default() })]
+
+        /// Every finite non-zero double (drawn from its bits, so every exponent is as likely), at
+        /// 1 to 9 digits, both zero policies: the same text as formatting twice gave.
+        #[test]
+        fn formatting_once_gives_what_formatting_twice_gave(
+            bits in proptest::prelude::any::<u64>(),
+            near in proptest::prelude::any::<bool>(),
+            digits in 1usize..10,
+            trim_zeros in proptest::prelude::any::<bool>(),
+        ) {
+            let mut value = f64::from_bits(bits);
+            if near {
+                // Where the prefixes and the plain range change, and where rounding carries.
+                let scale = 10f64.powi((bits % 40) as i32 - 20);
+                value = (1.0 - 1e-6 * ((bits >> 8) % 100) as f64) * scale;
+            }
+            proptest::prop_assume!(value.is_finite() && value != 0.0);
+            let zeros = if trim_zeros { Trim } else { Keep };
+            proptest::prop_assert_eq!(significant(value, digits, zeros), reference::significant(value, digits, zeros));
+            proptest::prop_assert_eq!(scientific(value, digits, zeros), reference::scientific(value, digits, zeros));
+            proptest::prop_assert_eq!(engineering(value, "m", digits, zeros), reference::engineering(value, "m", digits, zeros));
         }
     }
 }

@@ -180,12 +180,20 @@ pub fn sig(value: f64, sig: usize) -> String {
 pub fn fit(value: f64, digits: usize, width: usize) -> String {
     let fits = |s: &String| s.chars().count() <= width;
     if value.is_finite() {
-        for d in (1..=digits.max(1)).rev() {
-            let plain = sig(value, d);
+        if value == 0.0 {
+            let zero = sig(value, digits);
+            if fits(&zero) {
+                return zero;
+            }
+        }
+        for d in (1..=digits.max(1)).rev().filter(|_| value != 0.0) {
+            // Both forms from one rounding.
+            let rounded = format::Rounded::new(value, d);
+            let plain = rounded.significant(value, Zeros::Trim);
             if fits(&plain) {
                 return plain;
             }
-            let scientific = format::scientific(value, d, Zeros::Trim);
+            let scientific = rounded.scientific(Zeros::Trim);
             if fits(&scientific) {
                 return scientific;
             }
