@@ -6,7 +6,6 @@ use std::borrow::Cow;
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
 
 use crate::ui::app::{App, Mode};
 use crate::ui::style::Role;
@@ -14,6 +13,7 @@ use crate::ui::units;
 use crate::ui::views::{self, Hints};
 
 use super::common::draw_lines;
+use super::text::render_right;
 
 /// Key hints of the modes other than normal: (key, action).
 fn mode_hints(mode: &Mode) -> Hints {
@@ -182,11 +182,10 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
                 .collect()
         }
     };
-    let right = Line::from(right).right_aligned();
     let [l, r] =
         Layout::horizontal([Constraint::Length(left_width + 1), Constraint::Fill(1)]).areas(area);
     draw_lines(frame.buffer_mut(), l, &[left]);
-    frame.render_widget(Paragraph::new(right), r);
+    render_right(frame.buffer_mut(), r, Line::from(right));
 }
 
 #[cfg(test)]

@@ -121,6 +121,34 @@ pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
     }
 }
 
+/// What a `Paragraph` of `line` aligned right draws into `area` (one row of it), without the
+/// paragraph's line composer when the line is plain, in no style of its own and fits: then it is
+/// the line drawn against the right edge.
+pub fn render_right(buf: &mut Buffer, area: Rect, line: Line) {
+    let room = area.intersection(buf.area);
+    let width = line.width();
+    let plain = line.style == Style::default() && line.spans.iter().all(|s| all_plain(&s.content));
+    match u16::try_from(width) {
+        Ok(width) if plain && width <= room.width && room.height > 0 => {
+            let at = Rect {
+                x: room.right() - width,
+                width,
+                height: 1,
+                ..room
+            };
+            render_line(
+                buf,
+                at,
+                &Line {
+                    alignment: None,
+                    ..line
+                },
+            );
+        }
+        _ => ratatui::widgets::Paragraph::new(line.right_aligned()).render(area, buf),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -220,6 +248,38 @@ mod tests {
                 render_line(&mut ours, area, &line);
                 let mut theirs = busy_buffer(buf_area);
                 (&line).render(area, &mut theirs);
+                assert_eq!(ours, theirs, "{line:?} in {area:?}");
+            }
+        }
+    }
+
+    /// The same lines, right-aligned, into areas wide, exact, narrow, empty and off the buffer:
+    /// `render_right` draws what a right-aligned `Paragraph` of the line draws.
+    #[test]
+    fn render_right_draws_what_a_right_aligned_paragraph_draws() {
+        let buf_area = Rect::new(1, 1, 30, 3);
+        let mut all = lines();
+        all.push(Line::from(vec![
+            Span::styled("m", Style::new().fg(Color::Cyan)),
+            Span::raw(" mouse  "),
+            Span::styled("q", Style::new().fg(Color::Cyan)),
+            Span::raw(" quit  "),
+        ]));
+        for line in all {
+            let width = line.width() as u16;
+            for area in [
+                Rect::new(1, 1, 30, 1),
+                Rect::new(4, 2, width, 1),
+                Rect::new(4, 2, width.saturating_sub(1), 1),
+                Rect::new(25, 3, 20, 1),
+                Rect::new(3, 2, 0, 1),
+                Rect::new(40, 2, 5, 1),
+            ] {
+                let mut ours = busy_buffer(buf_area);
+                render_right(&mut ours, area, line.clone());
+                let mut theirs = busy_buffer(buf_area);
+                ratatui::widgets::Paragraph::new(line.clone().right_aligned())
+                    .render(area, &mut theirs);
                 assert_eq!(ours, theirs, "{line:?} in {area:?}");
             }
         }
