@@ -65,14 +65,14 @@ pub struct Series<K = ForceModel> {
 }
 
 impl<K> Series<K> {
-    /// `n` samples of the solution (evenly in t, the true extrema inserted by the trajectory).
+    /// `n` samples of the solution's drawn curves (evenly in t, the true extrema inserted by the
+    /// trajectory).
     pub fn sample(model: K, solution: &ImpactSolution, n: usize) -> Series<K> {
         let s = &solution.summary;
-        let at_peak = solution.trajectory.at(s.t_f_max);
         Series {
             model,
-            samples: solution.trajectory.samples(n),
-            force_peak_x: (at_peak.x, s.f_max),
+            samples: solution.trajectory.drawn_samples(n),
+            force_peak_x: (solution.trajectory.peak_state().0, s.f_max),
             force_peak_t: (s.t_f_max, s.f_max),
             deepest: (s.x_max, 0.0),
         }
