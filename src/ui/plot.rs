@@ -118,14 +118,6 @@ impl ChartKind {
         }
     }
 
-    fn point(self, s: &Sample) -> (f64, f64) {
-        match self {
-            ChartKind::ForceDisplacement => (s.x, s.f),
-            ChartKind::ForceTime => (s.t, s.f),
-            ChartKind::VelocityDisplacement => (s.x, s.v),
-        }
-    }
-
     fn peak<K>(self, series: &Series<K>) -> (f64, f64) {
         match self {
             ChartKind::ForceDisplacement => series.force_peak_x,
@@ -139,6 +131,58 @@ fn finite(p: &(f64, f64)) -> bool {
     p.0.is_finite() && p.1.is_finite()
 }
 
+/// The smallest (x, y) box holding the origin and every point covered.
+#[derive(Debug, Clone, Copy, Default)]
+struct Ranges {
+    x: (f64, f64),
+    y: (f64, f64),
+}
+
+impl Ranges {
+    /// Widens the box to finite point `(x, y)`: plain comparisons (f64::min's NaN handling costs
+    /// more, and there is no NaN here).
+    #[inline]
+    fn cover(&mut self, (x, y): (f64, f64)) {
+        if x < self.x.0 {
+            self.x.0 = x;
+        } else if x > self.x.1 {
+            self.x.1 = x;
+        }
+        if y < self.y.0 {
+            self.y.0 = y;
+        } else if y > self.y.1 {
+            self.y.1 = y;
+        }
+    }
+}
+
+/// The finite points `point` makes of `samples`, `ranges` widened to them (a loop per chart kind,
+/// so that picking the coordinates costs no branch per sample). Samples are all finite but in a
+/// failure: the points are made without a test each, and the rare non-finite ones dropped after.
+#[inline]
+fn finite_points(
+    samples: &[Sample],
+    ranges: &mut Ranges,
+    point: impl Fn(&Sample) -> (f64, f64),
+) -> Vec<(f64, f64)> {
+    let mut points: Vec<(f64, f64)> = samples.iter().map(point).collect();
+    // A copy in registers, not through the reference, for the loop.
+    let mut covered = *ranges;
+    let mut all_finite = true;
+    for &p in &points {
+        if finite(&p) {
+            covered.cover(p);
+        } else {
+            all_finite = false;
+        }
+    }
+    *ranges = covered;
+    if !all_finite {
+        points.retain(finite);
+    }
+    points
+}
+
 /// The chart of `kind` over `series`, with at most the given numbers of axis labels. Non-finite
 /// points are dropped (never drawn, never NaN on an axis).
 pub fn plot<K: Copy, S: Borrow<Series<K>>>(
@@ -147,44 +191,37 @@ pub fn plot<K: Copy, S: Borrow<Series<K>>>(
     max_x_labels: usize,
     max_y_labels: usize,
 ) -> Plot<K> {
-    // Curves in SI first, to find the ranges.
+    // Curves in SI first, to find the ranges. Axes always include 0: the contact starts at x = 0,
+    // t = 0 and F = 0.
+    let mut ranges = Ranges::default();
     let raw: Vec<Curve<K>> = series
         .iter()
         .map(Borrow::borrow)
         .map(|s| {
-            // Sized once: a collect through the filter would grow it a doubling at a time.
-            let mut points = Vec::with_capacity(s.samples.len());
-            points.extend(
-                s.samples
-                    .iter()
-                    .map(|sample| kind.point(sample))
-                    .filter(finite),
-            );
+            let points = match kind {
+                ChartKind::ForceDisplacement => {
+                    finite_points(&s.samples, &mut ranges, |q| (q.x, q.f))
+                }
+                ChartKind::ForceTime => finite_points(&s.samples, &mut ranges, |q| (q.t, q.f)),
+                ChartKind::VelocityDisplacement => {
+                    finite_points(&s.samples, &mut ranges, |q| (q.x, q.v))
+                }
+            };
+            let peak = kind.peak(s);
+            if finite(&peak) {
+                ranges.cover(peak);
+            }
             Curve {
                 model: s.model,
                 points,
-                peak: kind.peak(s),
+                peak,
             }
         })
         .collect();
-    // Axes always include 0: the contact starts at x = 0, t = 0 and F = 0. The points are
-    // finite, so plain comparisons find the ranges (f64::min's NaN handling costs more).
-    let (mut x_lo, mut x_hi, mut y_lo, mut y_hi) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for c in &raw {
-        let peak = finite(&c.peak).then_some(&c.peak);
-        for &(x, y) in c.points.iter().chain(peak) {
-            if x < x_lo {
-                x_lo = x;
-            } else if x > x_hi {
-                x_hi = x;
-            }
-            if y < y_lo {
-                y_lo = y;
-            } else if y > y_hi {
-                y_hi = y;
-            }
-        }
-    }
+    let Ranges {
+        x: (x_lo, x_hi),
+        y: (y_lo, y_hi),
+    } = ranges;
     let ((x_name, x_unit), (y_name, y_unit)) = kind.axes();
     let x = nice_axis(x_lo, x_hi, x_unit, max_x_labels);
     let y = nice_axis(y_lo, y_hi, y_unit, max_y_labels);
@@ -348,6 +385,23 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// An infinite force is dropped from the force charts and leaves their axes finite; v(x)
+    /// keeps that sample.
+    #[test]
+    fn infinite_points_are_dropped_and_leave_the_axes_alone() {
+        let mut s = series(ForceModel::Proposed);
+        s.samples[3].f = f64::INFINITY;
+        let p = plot(ChartKind::ForceDisplacement, &[s.clone()], 6, 5);
+        assert_eq!(p.curves[0].points.len(), 5);
+        assert!(
+            p.y.bounds[1].is_finite() && p.y.bounds[1] < 1000.0,
+            "{:?}",
+            p.y
+        );
+        let v = plot(ChartKind::VelocityDisplacement, &[s], 6, 5);
+        assert_eq!(v.curves[0].points.len(), 6);
     }
 
     #[test]
