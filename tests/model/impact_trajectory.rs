@@ -199,3 +199,50 @@ fn drawn_samples_are_the_trajectory_to_far_below_a_dot() {
         }
     }
 }
+
+/// Samples spaced by bounds: consecutive ones at most Δt apart in time and Δx in approach on every
+/// law and method, the extrema inserted exactly and the last at the contact's end; the count kept
+/// within its bounds when the spacing asks for fewer or more.
+#[test]
+fn samples_within_bounds_keep_them_and_the_extrema() {
+    let p = fig5(0.6);
+    for model in ForceModel::ALL {
+        for method in [
+            MethodChoice::Auto,
+            MethodChoice::Integrator(Method::Dopri5),
+            MethodChoice::Integrator(Method::Rk4),
+        ] {
+            let opts = SolveOptions {
+                method,
+                ..SolveOptions::default()
+            };
+            let sol = solve_impact(model, &p, &opts).unwrap();
+            let (s, traj) = (&sol.summary, &sol.trajectory);
+            let what = format!("{model} {method}");
+            let (dt, dx) = (s.t_contact / 150.0, s.x_max / 70.0);
+            let samples = traj.drawn_samples_within(dt, dx, 2..=10_000);
+            for w in samples.windows(2) {
+                assert!(w[1].t >= w[0].t, "{what}: time order");
+                assert!(w[1].t - w[0].t <= dt * (1.0 + 1e-12), "{what}: Δt");
+                assert!((w[1].x - w[0].x).abs() <= dx * (1.0 + 1e-9), "{what}: Δx");
+            }
+            for mark in traj.extrema() {
+                assert!(samples.contains(mark), "{what}: {mark:?}");
+            }
+            let last = samples.last().unwrap();
+            assert_eq!((last.t, last.x), (s.t_contact, s.x_residual), "{what}");
+            assert!(
+                samples.len() < 151 + 70 * 2 * 2,
+                "{what}: {}",
+                samples.len()
+            );
+            // Bounds asking for a million samples get the most allowed; asking for none, the
+            // fewest (plus the extrema either way).
+            let extrema = traj.extrema().len();
+            let many = traj.drawn_samples_within(dt * 1e-6, dx, 2..=500).len();
+            assert!((500..=501 + extrema).contains(&many), "{what}: {many}");
+            let few = traj.drawn_samples_within(1.0, 1.0, 40..=500).len();
+            assert!((40..=41 + extrema).contains(&few), "{what}: {few}");
+        }
+    }
+}

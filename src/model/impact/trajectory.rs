@@ -370,6 +370,61 @@ impl Trajectory {
         out
     }
 
+    /// Samples of the drawn curves ([`Trajectory::drawn_samples`]) for a chart, from first contact
+    /// to the end, consecutive ones at most `dt` apart in time and `dx` in approach, with the
+    /// exact extrema inserted in time order; between `count`'s bounds of them (the steps widened
+    /// or narrowed to t_end/(count − 1) where `dt` and `dx` ask for more or fewer).
+    ///
+    /// From a sample of speed |v| the next is as far as both bounds allow: in a step Δt ≤ dt the
+    /// approach moves at most (|v| + a·dt)·Δt, a = F_max/m bounding the acceleration (|F| ≤
+    /// F_max), so the fast stretches after first contact and before the end are sampled densely
+    /// in time and the slow ones around maximum compression no denser than `dt` — where evenly
+    /// spaced samples would all be as dense as the fastest stretch needs.
+    pub fn drawn_samples_within(
+        &self,
+        dt: f64,
+        dx: f64,
+        count: std::ops::RangeInclusive<usize>,
+    ) -> Vec<Sample> {
+        let t_end = self.t_end;
+        if !(t_end.is_finite() && t_end > 0.0) {
+            return self.drawn_samples(*count.start());
+        }
+        let curves = self.drawn_curves();
+        let intervals = |n: usize| n.max(2) as f64 - 1.0;
+        let (shortest, longest) = (
+            t_end / intervals(*count.end()),
+            dt.min(t_end / intervals(*count.start())),
+        );
+        let a = self.extrema.f_max.abs() / self.scales.mass;
+        let mut out = Vec::with_capacity(*count.start() + self.marks().len());
+        let mut marks = self.marks().iter().peekable();
+        let mut cursor = Cursor::default();
+        let mut t = 0.0;
+        loop {
+            while let Some(mark) = marks.next_if(|m| m.t < t) {
+                out.push(*mark);
+            }
+            // A sample that falls exactly on a mark is the mark.
+            let v = match marks.peek() {
+                Some(mark) if mark.t == t => mark.v,
+                _ => {
+                    let sample = self.sample_on(curves, t, &mut cursor);
+                    out.push(sample);
+                    sample.v
+                }
+            };
+            if t >= t_end {
+                break;
+            }
+            // NaN bounds (a zero x_max) leave the other bound; `max` keeps the count finite.
+            let step = (dx / (v.abs() + a * longest)).min(longest).max(shortest);
+            t = if t + step < t_end { t + step } else { t_end };
+        }
+        out.extend(marks.copied());
+        out
+    }
+
     /// The state (x, ẋ) at the force peak: an exact solution's exact one, else its curves'.
     pub fn peak_state(&self) -> (f64, f64) {
         self.extrema.peak
