@@ -471,29 +471,40 @@ fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, limit: Rect) 
 }
 
 fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: MarkerStyle) {
-    let along = glyphs_along(theme, marker);
-    for (i, cell) in canvas.cells.iter().enumerate() {
-        let x = plot.x + (i % usize::from(plot.width)) as u16;
-        let y = plot.y + (i / usize::from(plot.width)) as u16;
-        let styled = |ink: Ink, bold: bool| {
-            let style = theme.ink(ink);
+    // Without braille or colour the dots are only the line between glyphs: keep them light so
+    // the glyphs read.
+    let dim_dots = glyphs_along(theme, marker) && marker != MarkerStyle::Braille;
+    // Neighbouring cells mostly share an ink: its style is kept for the next.
+    let mut last: Option<((Ink, bool, bool), Style)> = None;
+    let mut styled = |ink: Ink, bold: bool, dim: bool| match last {
+        Some((key, style)) if key == (ink, bold, dim) => style,
+        _ => {
+            let mut style = theme.ink(ink);
             if bold {
-                style.add_modifier(Modifier::BOLD)
-            } else {
-                style
+                style = style.add_modifier(Modifier::BOLD);
             }
-        };
-        if let Some((glyph, ink, bold)) = cell.glyph {
-            buf[(x, y)].set_char(glyph).set_style(styled(ink, bold));
-        } else if let (Some(symbol), Some((ink, bold))) = (cell_symbol(cell, marker), cell.ink) {
-            // Without braille or colour the dots are only the line between glyphs: keep them
-            // light so the glyphs read.
-            let style = if along && marker != MarkerStyle::Braille {
-                styled(ink, false).add_modifier(Modifier::DIM)
-            } else {
-                styled(ink, bold)
-            };
-            buf[(x, y)].set_char(symbol).set_style(style);
+            if dim {
+                style = style.add_modifier(Modifier::DIM);
+            }
+            last = Some(((ink, bold, dim), style));
+            style
+        }
+    };
+    for (y, row) in (plot.y..).zip(canvas.cells.chunks(usize::from(plot.width).max(1))) {
+        for (x, cell) in (plot.x..).zip(row) {
+            if let Some((glyph, ink, bold)) = cell.glyph {
+                buf[(x, y)]
+                    .set_char(glyph)
+                    .set_style(styled(ink, bold, false));
+            } else if let (Some(symbol), Some((ink, bold))) = (cell_symbol(cell, marker), cell.ink)
+            {
+                let style = if dim_dots {
+                    styled(ink, false, true)
+                } else {
+                    styled(ink, bold, false)
+                };
+                buf[(x, y)].set_char(symbol).set_style(style);
+            }
         }
     }
 }
