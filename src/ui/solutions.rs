@@ -75,7 +75,7 @@ impl Default for Solutions {
 
 /// `solution`'s curves sampled for charts `dots` wide.
 fn sampled(model: ForceModel, solution: &ImpactSolution, dots: ChartDots) -> Arc<Series> {
-    Arc::new(Series::sample(model, solution, dots.samples_for(solution)))
+    Arc::new(Series::for_charts(model, solution, dots))
 }
 
 fn index(model: ForceModel) -> usize {
@@ -238,8 +238,11 @@ mod tests {
             .unwrap();
         assert!(s.accept(failed(&failing, "no")));
         let count = |s: &Solutions| s.samples(ForceModel::HuntCrossley).unwrap().samples.len();
-        let extrema = solution.trajectory.extrema().len();
-        let expected = |dots: ChartDots| dots.samples_for(&solution) + extrema - 1;
+        let expected = |dots: ChartDots| {
+            Series::for_charts(ForceModel::HuntCrossley, &solution, dots)
+                .samples
+                .len()
+        };
         assert_eq!(count(&s), expected(ChartDots::UNKNOWN_SCREEN));
         let wide = ChartDots {
             time: 700,

@@ -23,7 +23,64 @@ struct Curves {
     unloading_law: Option<AnyLaw>,
 }
 
+/// Where a walk through increasing times stands in each phase's segments (`None`: not yet in it).
+#[derive(Debug, Clone, Copy, Default)]
+struct Cursor {
+    loading: Option<usize>,
+    unloading: Option<usize>,
+}
+
+/// `output`'s state at scaled time `tau` as [`DenseOutput::eval`] gives it (clamped to the output,
+/// on the first segment ending at or after it): that segment searched for the first time, then
+/// walked to from the segment `at` of the previous, earlier time.
+fn eval_from(output: &DenseOutput, tau: f64, at: &mut Option<usize>) -> State {
+    let segments = output.segments();
+    let Some(last) = segments.last() else {
+        return State::zeros();
+    };
+    let tau = tau.max(output.t_start()).min(output.t_end());
+    let i = match *at {
+        None => segments.partition_point(|s| s.t_end() < tau),
+        Some(mut i) => {
+            while segments.get(i).is_some_and(|s| s.t_end() < tau) {
+                i += 1;
+            }
+            i
+        }
+    };
+    *at = Some(i);
+    segments.get(i).unwrap_or(last).eval(tau)
+}
+
 impl Curves {
+    /// Scaled state and phase at scaled time `tau`, `None` without curves; `cursor` is where the
+    /// previous (earlier) time was found.
+    fn state_at(&self, tau: f64, scales: &Scales, cursor: &mut Cursor) -> Option<(State, Phase)> {
+        if self.loading.is_empty() || self.unloading.is_empty() {
+            return None;
+        }
+        Some(if tau <= self.t_switch {
+            let y = eval_from(&self.loading, tau, &mut cursor.loading);
+            (scales.xv(&y), Phase::Loading)
+        } else if tau <= self.unloading.t_end() {
+            // Unloading is integrated in (X, V) itself (see `phases::Run`).
+            (
+                eval_from(&self.unloading, tau, &mut cursor.unloading),
+                Phase::Unloading,
+            )
+        } else {
+            // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
+            // below the integrator's resolution and it cut contact off): the bodies coast.
+            let t_curve = self.unloading.t_end();
+            let end = self.unloading.eval(t_curve);
+            let coast = end[1] * (tau - t_curve);
+            (
+                State::new((end[0] + coast).max(0.0), end[1]),
+                Phase::Unloading,
+            )
+        })
+    }
+
     fn new(run: Run, law: &AnyLaw, scales: &Scales) -> Self {
         Curves {
             unloading_law: Some(law.unloading_at_turn(run.x_turn(scales))),
@@ -38,9 +95,11 @@ impl Curves {
 ///
 /// Holds both phases' dense outputs (scaled variables) and the force law, so any t in the contact
 /// can be evaluated; and the extrema of the summary, so that sampled charts peak where the numbers
-/// say (for exact solutions, the exact values). For an exact solution the curves are integrated by
-/// DOP853 at tight tolerance on first use, so that solves whose curves nobody draws (sweeps,
-/// reference values) cost only the exact solution.
+/// say (for exact solutions, the exact values). For an exact solution the curves are integrated on
+/// first use, so that solves whose curves nobody draws (sweeps, reference values) cost only the
+/// exact solution: by DOP853 at tight tolerance when sampled ([`Trajectory::at`],
+/// [`Trajectory::samples`]: within 1e-9 of the truth), by DOPRI5 at a chart's when drawn
+/// ([`Trajectory::drawn_samples`]: within 2e-5 of the curve's scale, tested).
 #[derive(Debug, Clone)]
 pub struct Trajectory {
     law: AnyLaw,
@@ -48,6 +107,11 @@ pub struct Trajectory {
     curves: OnceLock<Curves>,
     /// How to integrate the curves when they are first needed (exact solutions).
     pending: Option<RunOptions>,
+    /// Exact solutions: how to integrate the curves charts draw, when first drawn — looser than
+    /// `pending`, for a tolerance far below a chart's dot rather than the 1e-9 the sampled
+    /// trajectory promises. Integrated solutions draw their own curves.
+    drawn: Option<RunOptions>,
+    drawn_curves: OnceLock<Curves>,
     /// End of contact, s.
     t_end: f64,
     /// The summary's extrema, turned into marks when first asked for: a solve whose curves
@@ -88,17 +152,19 @@ impl Trajectory {
         traj
     }
 
-    /// The curves of an exact solution `summary`, integrated with `curve` when first sampled;
-    /// `peak` is the state (x, ẋ) at the force peak.
+    /// The curves of an exact solution `summary`, integrated with `curve` when first sampled
+    /// and with `drawn` when first drawn ([`Trajectory::drawn_samples`]); `peak` is the state
+    /// (x, ẋ) at the force peak.
     pub(crate) fn deferred(
         law: AnyLaw,
         scales: Scales,
-        curve: RunOptions,
+        [curve, drawn]: [RunOptions; 2],
         summary: &ImpactSummary,
         peak: (f64, f64),
     ) -> Self {
         let mut traj = Self::bare(law, scales, summary, peak);
         traj.pending = Some(curve);
+        traj.drawn = Some(drawn);
         traj
     }
 
@@ -108,6 +174,8 @@ impl Trajectory {
             scales,
             curves: OnceLock::new(),
             pending: None,
+            drawn: None,
+            drawn_curves: OnceLock::new(),
             t_end: summary.t_contact,
             extrema: Extrema {
                 t_f_max: summary.t_f_max,
@@ -187,38 +255,33 @@ impl Trajectory {
     /// The curves, integrating them first if this trajectory was deferred. A failed integration
     /// leaves them empty, and the trajectory falls back to its extrema.
     fn curves(&self) -> &Curves {
-        self.curves.get_or_init(|| match &self.pending {
+        self.curves
+            .get_or_init(|| self.integrate(self.pending.as_ref()))
+    }
+
+    /// The curves charts draw: an exact solution's own, looser ones; else [`Trajectory::curves`].
+    fn drawn_curves(&self) -> &Curves {
+        match &self.drawn {
+            Some(drawn) => self
+                .drawn_curves
+                .get_or_init(|| self.integrate(Some(drawn))),
+            None => self.curves(),
+        }
+    }
+
+    fn integrate(&self, how: Option<&RunOptions>) -> Curves {
+        match how {
             Some(ro) => phases::run(&self.law, &self.scales, ro)
                 .map(|run| Curves::new(run, &self.law, &self.scales))
                 .unwrap_or_default(),
             None => Curves::default(),
-        })
+        }
     }
 
     /// Scaled state and phase at time t (s), `None` without curves.
     fn state_at(&self, t: f64) -> Option<(State, Phase)> {
-        let curves = self.curves();
-        if curves.loading.is_empty() || curves.unloading.is_empty() {
-            return None;
-        }
-        let tau = t / self.scales.t;
-        let xv = |y: State| self.scales.xv(&y);
-        Some(if tau <= curves.t_switch {
-            (xv(curves.loading.eval(tau)), Phase::Loading)
-        } else if tau <= curves.unloading.t_end() {
-            // Unloading is integrated in (X, V) itself (see `phases::Run`).
-            (curves.unloading.eval(tau), Phase::Unloading)
-        } else {
-            // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
-            // below the integrator's resolution and it cut contact off): the bodies coast.
-            let t_curve = curves.unloading.t_end();
-            let end = curves.unloading.eval(t_curve);
-            let coast = end[1] * (tau - t_curve);
-            (
-                State::new((end[0] + coast).max(0.0), end[1]),
-                Phase::Unloading,
-            )
-        })
+        self.curves()
+            .state_at(t / self.scales.t, &self.scales, &mut Cursor::default())
     }
 
     /// Approach velocity at first contact, m/s.
@@ -233,12 +296,17 @@ impl Trajectory {
 
     /// The state and force at time t in [0, t_end] (clamped to it).
     pub fn at(&self, t: f64) -> Sample {
+        self.sample_on(self.curves(), t, &mut Cursor::default())
+    }
+
+    /// [`Trajectory::at`] on `curves`, from `cursor`'s segments on (times in increasing order).
+    fn sample_on(&self, curves: &Curves, t: f64, cursor: &mut Cursor) -> Sample {
         let t = t.clamp(0.0, self.t_end);
-        let Some((y, phase)) = self.state_at(t) else {
+        let Some((y, phase)) = curves.state_at(t / self.scales.t, &self.scales, cursor) else {
             return self.between_marks(t);
         };
         let (x, v) = (y[0] * self.scales.x, y[1] * self.scales.v);
-        let law = match (phase, &self.curves().unloading_law) {
+        let law = match (phase, &curves.unloading_law) {
             (Phase::Unloading, Some(anchored)) => anchored,
             _ => &self.law,
         };
@@ -263,10 +331,23 @@ impl Trajectory {
     }
 
     /// `n` samples evenly spaced in t over the contact, with the exact extrema
-    /// (x_max, F_max, contact end) inserted in time order.
+    /// (x_max, F_max, contact end) inserted in time order: each [`Trajectory::at`] its time.
     pub fn samples(&self, n: usize) -> Vec<Sample> {
+        self.samples_on(self.curves(), n)
+    }
+
+    /// [`Trajectory::samples`] for a chart: an exact solution's curves integrated at a tolerance
+    /// far below a dot (`auto::DRAWN_RTOL`) rather than the trajectory's 1e-9;
+    /// an integrated solution's own. The extrema inserted are the same exact ones.
+    pub fn drawn_samples(&self, n: usize) -> Vec<Sample> {
+        self.samples_on(self.drawn_curves(), n)
+    }
+
+    fn samples_on(&self, curves: &Curves, n: usize) -> Vec<Sample> {
         let mut out = Vec::with_capacity(n + self.marks().len());
         let mut marks = self.marks().iter().peekable();
+        // The times increase: the segments are walked once rather than searched for each.
+        let mut cursor = Cursor::default();
         for i in 0..n {
             // The last sample is t_end itself, not a rounded multiple of it.
             let t = if i + 1 == n && n > 1 {
@@ -283,10 +364,70 @@ impl Trajectory {
             if marks.peek().is_some_and(|m| m.t == t) {
                 continue;
             }
-            out.push(self.at(t));
+            out.push(self.sample_on(curves, t, &mut cursor));
         }
         out.extend(marks.copied());
         out
+    }
+
+    /// Samples of the drawn curves ([`Trajectory::drawn_samples`]) for a chart, from first contact
+    /// to the end, consecutive ones at most `dt` apart in time and `dx` in approach, with the
+    /// exact extrema inserted in time order; between `count`'s bounds of them (the steps widened
+    /// or narrowed to t_end/(count − 1) where `dt` and `dx` ask for more or fewer).
+    ///
+    /// From a sample of speed |v| the next is as far as both bounds allow: in a step Δt ≤ dt the
+    /// approach moves at most (|v| + a·dt)·Δt, a = F_max/m bounding the acceleration (|F| ≤
+    /// F_max), so the fast stretches after first contact and before the end are sampled densely
+    /// in time and the slow ones around maximum compression no denser than `dt` — where evenly
+    /// spaced samples would all be as dense as the fastest stretch needs.
+    pub fn drawn_samples_within(
+        &self,
+        dt: f64,
+        dx: f64,
+        count: std::ops::RangeInclusive<usize>,
+    ) -> Vec<Sample> {
+        let t_end = self.t_end;
+        if !(t_end.is_finite() && t_end > 0.0) {
+            return self.drawn_samples(*count.start());
+        }
+        let curves = self.drawn_curves();
+        let intervals = |n: usize| n.max(2) as f64 - 1.0;
+        let (shortest, longest) = (
+            t_end / intervals(*count.end()),
+            dt.min(t_end / intervals(*count.start())),
+        );
+        let a = self.extrema.f_max.abs() / self.scales.mass;
+        let mut out = Vec::with_capacity(*count.start() + self.marks().len());
+        let mut marks = self.marks().iter().peekable();
+        let mut cursor = Cursor::default();
+        let mut t = 0.0;
+        loop {
+            while let Some(mark) = marks.next_if(|m| m.t < t) {
+                out.push(*mark);
+            }
+            // A sample that falls exactly on a mark is the mark.
+            let v = match marks.peek() {
+                Some(mark) if mark.t == t => mark.v,
+                _ => {
+                    let sample = self.sample_on(curves, t, &mut cursor);
+                    out.push(sample);
+                    sample.v
+                }
+            };
+            if t >= t_end {
+                break;
+            }
+            // NaN bounds (a zero x_max) leave the other bound; `max` keeps the count finite.
+            let step = (dx / (v.abs() + a * longest)).min(longest).max(shortest);
+            t = if t + step < t_end { t + step } else { t_end };
+        }
+        out.extend(marks.copied());
+        out
+    }
+
+    /// The state (x, ẋ) at the force peak: an exact solution's exact one, else its curves'.
+    pub fn peak_state(&self) -> (f64, f64) {
+        self.extrema.peak
     }
 
     /// The extrema inserted by [`Trajectory::samples`], in time order.

@@ -106,12 +106,58 @@ struct Canvas {
     width: u16,
     height: u16,
     dx: u16,
-    dy: u16,
+    /// Dots across and down, taken once: every dot set is checked against them.
+    wide: u32,
+    high: u32,
+    /// log₂ of the dots per cell across and down (braille 1 and 2, else 0): a dot's cell by shifts.
+    col_shift: u32,
+    row_shift: u32,
     cells: Vec<Cell>,
 }
 
 /// Bits of the braille dots of a cell, by (column, row) within it (Unicode's 2×4 layout).
 const BRAILLE: [[u8; 2]; 4] = [[0x01, 0x08], [0x02, 0x10], [0x04, 0x20], [0x40, 0x80]];
+
+/// Display values to fractional dots from the bottom-left of one canvas:
+/// [`crate::chart::Axis::fraction`] times the dots less one, with the axes' spans and the
+/// canvas's size taken once per chart rather than once per point.
+#[derive(Debug, Clone, Copy)]
+struct DotMap {
+    /// Per axis: the range's start, its span, and the dots less one.
+    x: (f64, f64, f64),
+    y: (f64, f64, f64),
+    /// Both ranges are increasing (else no value has a place, as `Axis::fraction` says).
+    valid: bool,
+}
+
+impl DotMap {
+    fn new(canvas: &Canvas, chart: &Chart) -> DotMap {
+        let [x_lo, x_hi] = chart.x.range;
+        let [y_lo, y_hi] = chart.y.range;
+        DotMap {
+            x: (x_lo, x_hi - x_lo, f64::from(canvas.wide.max(1) - 1)),
+            y: (y_lo, y_hi - y_lo, f64::from(canvas.high.max(1) - 1)),
+            valid: x_hi > x_lo && y_hi > y_lo,
+        }
+    }
+
+    /// The dot of display point `p`, in fractional dots (may lie outside the canvas); `None` for
+    /// a non-finite point.
+    #[inline]
+    fn at(&self, p: (f64, f64)) -> Option<(f64, f64)> {
+        (self.valid && p.0.is_finite() && p.1.is_finite()).then(|| self.unchecked(p))
+    }
+
+    /// [`DotMap::at`] without its tests: non-finite for a non-finite point, meaningless unless
+    /// `valid`.
+    #[inline]
+    fn unchecked(&self, p: (f64, f64)) -> (f64, f64) {
+        (
+            (p.0 - self.x.0) / self.x.1 * self.x.2,
+            (p.1 - self.y.0) / self.y.1 * self.y.2,
+        )
+    }
+}
 
 impl Canvas {
     fn new(plot: Rect, marker: MarkerStyle) -> Canvas {
@@ -120,38 +166,32 @@ impl Canvas {
             width: plot.width,
             height: plot.height,
             dx,
-            dy,
+            wide: u32::from(plot.width) * u32::from(dx),
+            high: u32::from(plot.height) * u32::from(dy),
+            col_shift: u32::from(dx).trailing_zeros(),
+            row_shift: u32::from(dy).trailing_zeros(),
             cells: vec![Cell::default(); usize::from(plot.width) * usize::from(plot.height)],
         }
     }
 
-    fn dots_wide(&self) -> u32 {
-        u32::from(self.width) * u32::from(self.dx)
+    fn braille(&self) -> bool {
+        self.col_shift == 1 && self.row_shift == 2
     }
 
-    fn dots_high(&self) -> u32 {
-        u32::from(self.height) * u32::from(self.dy)
-    }
-
-    /// The dot of display point `p`, in fractional dots from the bottom-left (may lie outside).
-    fn to_dots(&self, chart: &Chart, p: (f64, f64)) -> Option<(f64, f64)> {
-        let fx = chart.x.fraction(p.0);
-        let fy = chart.y.fraction(p.1);
-        (fx.is_finite() && fy.is_finite()).then(|| {
-            (
-                fx * f64::from(self.dots_wide().max(1) - 1),
-                fy * f64::from(self.dots_high().max(1) - 1),
-            )
-        })
+    /// The index in `cells` of the cell of dot (x, y) on the canvas.
+    #[inline]
+    fn index(&self, x: u32, y: u32) -> usize {
+        let col = (x >> self.col_shift) as usize;
+        let row = usize::from(self.height) - 1 - (y >> self.row_shift) as usize;
+        row * usize::from(self.width) + col
     }
 
     fn cell_mut(&mut self, x: u32, y: u32) -> Option<&mut Cell> {
-        if x >= self.dots_wide() || y >= self.dots_high() {
+        if x >= self.wide || y >= self.high {
             return None;
         }
-        let col = (x / u32::from(self.dx)) as usize;
-        let row = usize::from(self.height) - 1 - (y / u32::from(self.dy)) as usize;
-        self.cells.get_mut(row * usize::from(self.width) + col)
+        let i = self.index(x, y);
+        self.cells.get_mut(i)
     }
 
     /// The dot nearest a fractional dot position (`None` left of or below the canvas).
@@ -164,13 +204,22 @@ impl Canvas {
         let (Ok(x), Ok(y)) = (u32::try_from(x), u32::try_from(y)) else {
             return;
         };
-        let braille = self.dx == 2 && self.dy == 4;
-        if let Some(cell) = self.cell_mut(x, y) {
-            cell.dots |= if braille {
-                BRAILLE[3 - (y % 4) as usize][(x % 2) as usize]
-            } else {
-                1
-            };
+        if x < self.wide && y < self.high {
+            self.set_on_canvas(x, y, ink, bold);
+        }
+    }
+
+    /// Sets dot (x, y), which the caller knows lies on the canvas.
+    #[inline]
+    fn set_on_canvas(&mut self, x: u32, y: u32, ink: Ink, bold: bool) {
+        let bits = if self.braille() {
+            BRAILLE[3 - (y & 3) as usize][(x & 1) as usize]
+        } else {
+            1
+        };
+        let i = self.index(x, y);
+        if let Some(cell) = self.cells.get_mut(i) {
+            cell.dots |= bits;
             cell.ink = Some((ink, bold));
         }
     }
@@ -240,6 +289,14 @@ fn round_half_away(x: f64) -> i64 {
     }
 }
 
+/// [`round_half_away`] for `−0.5 < x < 2³¹`, where truncation towards zero is the floor or, in
+/// (−0.5, 0), the nearest integer itself.
+#[inline]
+fn round_above_minus_half(x: f64) -> i64 {
+    let whole = x as i32;
+    i64::from(whole) + i64::from(x - f64::from(whole) >= 0.5)
+}
+
 /// How curves are told apart: by colour on braille, by glyphs where there is no colour or no
 /// braille (each model's glyph along the whole curve).
 fn glyphs_along(theme: Theme, marker: MarkerStyle) -> bool {
@@ -258,11 +315,106 @@ struct Drawn {
     dot_set: bool,
 }
 
+/// One run of a curve: a line through its points, each point's dot found once; a segment within
+/// one dot sets nothing new when that dot is known to be set (a clipped segment may end beside
+/// it). `spacing`: dots between the glyphs set along it, where colour cannot tell curves apart.
+///
+/// Most points of a curve sampled about a dot apart lie on the canvas and one dot or none from
+/// the last: those take a short path (no finiteness tests, which the bounds test implies; no
+/// line walk) that sets the same dots as the general one below it.
+fn paint_run(
+    canvas: &mut Canvas,
+    map: &DotMap,
+    run: &[(f64, f64)],
+    series: &crate::chart::Series,
+    spacing: Option<f64>,
+) {
+    if !map.valid {
+        return;
+    }
+    let (ink, bold) = (series.ink, series.focused);
+    // A fractional dot strictly inside these bounds rounds to a dot on the canvas.
+    let (x_end, y_end) = (f64::from(canvas.wide) - 0.5, f64::from(canvas.high) - 0.5);
+    let plain = spacing.is_none() && !series.steps;
+    let mut last: Option<Drawn> = None;
+    let mut travelled = spacing.unwrap_or(0.0) / 2.0;
+    for &raw in run {
+        let q = map.unchecked(raw);
+        let (p, dot) = if q.0 > -0.5 && q.0 < x_end && q.1 > -0.5 && q.1 < y_end {
+            let b = (round_above_minus_half(q.0), round_above_minus_half(q.1));
+            if let Some(Drawn {
+                dot: Some(a),
+                dot_set: true,
+                ..
+            }) = last
+                && plain
+                && (b.0 - a.0).abs() <= 1
+                && (b.1 - a.1).abs() <= 1
+            {
+                // The same dot, set already, or a neighbour: a line of one step.
+                if a != b {
+                    canvas.set_on_canvas(b.0 as u32, b.1 as u32, ink, bold);
+                }
+                last = Some(Drawn {
+                    at: q,
+                    dot: Some(b),
+                    dot_set: true,
+                });
+                continue;
+            }
+            (q, Some(b))
+        } else {
+            let Some(p) = map.at(raw) else {
+                continue;
+            };
+            (p, Canvas::nearest(p.0, p.1))
+        };
+        let mut dot_set = true;
+        match last {
+            None => {
+                if let Some(dot) = dot {
+                    canvas.set_dot(dot, ink, bold);
+                }
+            }
+            Some(Drawn {
+                at: from,
+                dot: from_dot,
+                dot_set: from_set,
+            }) => {
+                match (from_dot, dot) {
+                    (Some(a), Some(b)) if a == b && from_set => {}
+                    (Some(a), Some(b)) => canvas.line_dots(a, b, ink, bold),
+                    _ => {
+                        canvas.line_clipped(from, p, ink, bold);
+                        dot_set = false;
+                    }
+                }
+                if let Some(spacing) = spacing {
+                    travelled += (p.0 - from.0).hypot((p.1 - from.1) * 0.5);
+                    if travelled >= spacing {
+                        travelled = 0.0;
+                        canvas.glyph(p, series.glyph, ink, bold);
+                    }
+                }
+            }
+        }
+        last = Some(Drawn {
+            at: p,
+            dot,
+            dot_set,
+        });
+        if series.steps {
+            canvas.glyph(p, series.glyph, ink, bold);
+        }
+    }
+}
+
 fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) {
     let along = glyphs_along(theme, marker);
+    let map = DotMap::new(canvas, chart);
     for rule in &chart.rules {
         let [a, b] = rule.ends(chart);
-        let (Some(a), Some(b)) = (canvas.to_dots(chart, a), canvas.to_dots(chart, b)) else {
+        let (Some(a), Some(b)) = (map.at(a), map.at(b)) else {
             continue;
         };
         // Dotted: every other dot, so curves crossing it stay visible.
@@ -279,67 +431,20 @@ fn paint(canvas: &mut Canvas, chart: &Chart, theme: Theme, marker: MarkerStyle) 
     }
     let spacing = GLYPH_SPACING * f64::from(canvas.dx);
     for series in &chart.series {
-        let bold = series.focused;
         for run in &series.runs {
-            // Each point's dot is found once; a segment within one dot sets nothing new when
-            // that dot is known to be set (a clipped segment may end beside it).
-            let mut last: Option<Drawn> = None;
-            let mut travelled = spacing / 2.0;
-            for &p in run {
-                let Some(p) = canvas.to_dots(chart, p) else {
-                    continue;
-                };
-                let dot = Canvas::nearest(p.0, p.1);
-                let mut dot_set = true;
-                match last {
-                    None => {
-                        if let Some(dot) = dot {
-                            canvas.set_dot(dot, series.ink, bold);
-                        }
-                    }
-                    Some(Drawn {
-                        at: from,
-                        dot: from_dot,
-                        dot_set: from_set,
-                    }) => {
-                        match (from_dot, dot) {
-                            (Some(a), Some(b)) if a == b && from_set => {}
-                            (Some(a), Some(b)) => canvas.line_dots(a, b, series.ink, bold),
-                            _ => {
-                                canvas.line_clipped(from, p, series.ink, bold);
-                                dot_set = false;
-                            }
-                        }
-                        if along {
-                            travelled += (p.0 - from.0).hypot((p.1 - from.1) * 0.5);
-                            if travelled >= spacing {
-                                travelled = 0.0;
-                                canvas.glyph(p, series.glyph, series.ink, bold);
-                            }
-                        }
-                    }
-                }
-                last = Some(Drawn {
-                    at: p,
-                    dot,
-                    dot_set,
-                });
-                if series.steps {
-                    canvas.glyph(p, series.glyph, series.ink, bold);
-                }
-            }
+            paint_run(canvas, &map, run, series, along.then_some(spacing));
         }
     }
     // Peaks and ends over every line, the focused series' last.
     for series in &chart.series {
         for p in series.peak.iter().copied().chain(series.end()) {
-            if let Some(at) = canvas.to_dots(chart, p) {
+            if let Some(at) = map.at(p) {
                 canvas.glyph(at, series.glyph, series.ink, series.focused);
             }
         }
     }
     for mark in &chart.marks {
-        if let Some(at) = canvas.to_dots(chart, mark.at) {
+        if let Some(at) = map.at(mark.at) {
             canvas.glyph(at, mark.glyph, mark.ink, true);
         }
     }
@@ -366,29 +471,40 @@ fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, limit: Rect) 
 }
 
 fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: MarkerStyle) {
-    let along = glyphs_along(theme, marker);
-    for (i, cell) in canvas.cells.iter().enumerate() {
-        let x = plot.x + (i % usize::from(plot.width)) as u16;
-        let y = plot.y + (i / usize::from(plot.width)) as u16;
-        let styled = |ink: Ink, bold: bool| {
-            let style = theme.ink(ink);
+    // Without braille or colour the dots are only the line between glyphs: keep them light so
+    // the glyphs read.
+    let dim_dots = glyphs_along(theme, marker) && marker != MarkerStyle::Braille;
+    // Neighbouring cells mostly share an ink: its style is kept for the next.
+    let mut last: Option<((Ink, bool, bool), Style)> = None;
+    let mut styled = |ink: Ink, bold: bool, dim: bool| match last {
+        Some((key, style)) if key == (ink, bold, dim) => style,
+        _ => {
+            let mut style = theme.ink(ink);
             if bold {
-                style.add_modifier(Modifier::BOLD)
-            } else {
-                style
+                style = style.add_modifier(Modifier::BOLD);
             }
-        };
-        if let Some((glyph, ink, bold)) = cell.glyph {
-            buf[(x, y)].set_char(glyph).set_style(styled(ink, bold));
-        } else if let (Some(symbol), Some((ink, bold))) = (cell_symbol(cell, marker), cell.ink) {
-            // Without braille or colour the dots are only the line between glyphs: keep them
-            // light so the glyphs read.
-            let style = if along && marker != MarkerStyle::Braille {
-                styled(ink, false).add_modifier(Modifier::DIM)
-            } else {
-                styled(ink, bold)
-            };
-            buf[(x, y)].set_char(symbol).set_style(style);
+            if dim {
+                style = style.add_modifier(Modifier::DIM);
+            }
+            last = Some(((ink, bold, dim), style));
+            style
+        }
+    };
+    for (y, row) in (plot.y..).zip(canvas.cells.chunks(usize::from(plot.width).max(1))) {
+        for (x, cell) in (plot.x..).zip(row) {
+            if let Some((glyph, ink, bold)) = cell.glyph {
+                buf[(x, y)]
+                    .set_char(glyph)
+                    .set_style(styled(ink, bold, false));
+            } else if let (Some(symbol), Some((ink, bold))) = (cell_symbol(cell, marker), cell.ink)
+            {
+                let style = if dim_dots {
+                    styled(ink, false, true)
+                } else {
+                    styled(ink, bold, false)
+                };
+                buf[(x, y)].set_char(symbol).set_style(style);
+            }
         }
     }
 }
@@ -814,7 +930,7 @@ mod tests {
             for run in &series.runs {
                 let pts: Vec<(f64, f64)> = run
                     .iter()
-                    .filter_map(|&p| canvas.to_dots(chart, p))
+                    .filter_map(|&p| DotMap::new(canvas, chart).at(p))
                     .collect();
                 if let Some(first) = pts.first() {
                     canvas.set(first.0, first.1, series.ink, series.focused);
@@ -925,15 +1041,28 @@ mod tests {
             99.5,
             -0.5,
             0.499_999_999_999_999_94,
+            -0.499_999_999_999_999_94,
+            131_071.5,
+            2f64.powi(31) - 0.5,
             2f64.powi(52) - 0.5,
         ];
         let large = [2f64.powi(52), 2f64.powi(53) + 2.0, 1e300, f64::MAX];
         let spread = (0..10_000).map(|i| f64::from(i) * 0.0137 - 0.5);
         for x in halves.into_iter().chain(large).chain(spread) {
             assert_eq!(round_half_away(x), x.round() as i64, "{x:e}");
+            if x > -0.5 && x < 2f64.powi(31) {
+                assert_eq!(round_above_minus_half(x), x.round() as i64, "{x:e}");
+            }
             let below = x.next_down();
             if below >= -0.5 {
                 assert_eq!(round_half_away(below), below.round() as i64, "{below:e}");
+            }
+            if below > -0.5 && below < 2f64.powi(31) {
+                assert_eq!(
+                    round_above_minus_half(below),
+                    below.round() as i64,
+                    "{below:e}"
+                );
             }
         }
     }
