@@ -10,41 +10,63 @@
 //! the result is ratatui's in every case.
 
 use ratatui::buffer::{Buffer, Cell, CellDiffOption, CellWidth};
+use ratatui::layout::Rect;
 
-/// Writes into `changed` the indices of the cells of `next` to send to the terminal that now shows
-/// `shown`, in ratatui's order, and makes `shown` equal to `next`.
-pub(super) fn diff_into(shown: &mut Buffer, next: &Buffer, changed: &mut Vec<usize>) {
-    changed.clear();
-    if shown.area == next.area && narrow_diff(shown, next, changed) {
-        for &i in changed.iter() {
-            shown.content[i].clone_from(&next.content[i]);
+/// What the terminal shows, and whether every cell of it is known to be a plain one-column cell
+/// (then the cells a frame leaves as they were need no check of their own).
+#[derive(Debug)]
+pub(super) struct Shown {
+    pub(super) buffer: Buffer,
+    plain: bool,
+}
+
+impl Shown {
+    /// A blank terminal of `area`: blank cells are plain.
+    pub(super) fn blank(area: Rect) -> Self {
+        Self {
+            buffer: Buffer::empty(area),
+            plain: true,
         }
-    } else {
+    }
+
+    /// Writes into `changed` the indices of the cells of `next` to send to the terminal, in
+    /// ratatui's order, and takes `next` as what it shows.
+    pub(super) fn update(&mut self, next: &Buffer, changed: &mut Vec<usize>) {
         changed.clear();
-        changed.extend(
-            shown
-                .diff(next)
-                .into_iter()
-                .map(|(x, y, _)| next.index_of(x, y)),
-        );
-        shown.clone_from(next);
+        let shown = &mut self.buffer;
+        if shown.area == next.area && narrow_diff(shown, self.plain, next, changed) {
+            for &i in changed.iter() {
+                shown.content[i].clone_from(&next.content[i]);
+            }
+            self.plain = true;
+        } else {
+            changed.clear();
+            changed.extend(
+                shown
+                    .diff(next)
+                    .into_iter()
+                    .map(|(x, y, _)| next.index_of(x, y)),
+            );
+            shown.clone_from(next);
+            self.plain = false;
+        }
     }
 }
 
 /// The fast path: the indices of the cells that differ, or `false` as soon as a cell of either
-/// frame is not a plain single-width cell.
-fn narrow_diff(shown: &Buffer, next: &Buffer, changed: &mut Vec<usize>) -> bool {
+/// frame is not a plain single-width cell. With `plain`, every cell of `shown` is known plain, and
+/// so is a cell of `next` equal to it.
+fn narrow_diff(shown: &Buffer, plain: bool, next: &Buffer, changed: &mut Vec<usize>) -> bool {
     for (i, (old, new)) in shown.content.iter().zip(&next.content).enumerate() {
-        let symbol = new.symbol();
-        if !plain_narrow(new, symbol) {
-            return false;
-        }
-        let old_symbol = old.symbol();
-        if !(same_style(old, new) && same_symbol(old_symbol, symbol)) {
-            if !plain_narrow(old, old_symbol) {
+        let (old_symbol, symbol) = (old.symbol(), new.symbol());
+        if same_style(old, new) && same_symbol(old_symbol, symbol) {
+            if !plain && !plain_narrow(new, symbol) {
                 return false;
             }
+        } else if plain_narrow(new, symbol) && (plain || plain_narrow(old, old_symbol)) {
             changed.push(i);
+        } else {
+            return false;
         }
     }
     true

@@ -16,10 +16,10 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use ratatui::backend::Backend;
-use ratatui::buffer::Buffer;
 use ratatui::{Frame, Terminal};
 
 use deferred::{CursorOp, Deferred};
+use diff::Shown;
 
 /// A full-screen terminal over the backend `B` (crossterm for the explorer, a test backend in
 /// tests and benches).
@@ -29,7 +29,7 @@ pub struct Screen<B: Backend> {
     /// Raised by the backend when the terminal is cleared (a resize, or an explicit clear).
     cleared: Arc<AtomicBool>,
     /// What the terminal shows now.
-    shown: Buffer,
+    shown: Shown,
     /// The cells of the last frame that differed from what was shown (kept to reuse its memory).
     changed: Vec<usize>,
 }
@@ -39,7 +39,7 @@ impl<B: Backend> Screen<B> {
     pub fn new(backend: B) -> Result<Self, B::Error> {
         let cleared = Arc::new(AtomicBool::new(false));
         let mut terminal = Terminal::new(Deferred::new(backend, Arc::clone(&cleared)))?;
-        let shown = Buffer::empty(terminal.get_frame().area());
+        let shown = Shown::blank(terminal.get_frame().area());
         Ok(Self {
             terminal,
             cleared,
@@ -56,10 +56,10 @@ impl<B: Backend> Screen<B> {
             let next = frame.buffer;
             // A cleared or resized terminal shows nothing: diff against a blank frame, as ratatui
             // does.
-            if self.cleared.swap(false, Ordering::Relaxed) || self.shown.area != next.area {
-                self.shown = Buffer::empty(next.area);
+            if self.cleared.swap(false, Ordering::Relaxed) || self.shown.buffer.area != next.area {
+                self.shown = Shown::blank(next.area);
             }
-            diff::diff_into(&mut self.shown, next, &mut self.changed);
+            self.shown.update(next, &mut self.changed);
         });
         let backend = self.terminal.backend_mut();
         backend.drawing = false;
@@ -67,9 +67,9 @@ impl<B: Backend> Screen<B> {
             backend.cursor_ops.clear();
             return Err(e);
         }
-        let area = self.shown.area;
+        let area = self.shown.buffer.area;
         let width = usize::from(area.width.max(1));
-        let cells = &self.shown.content;
+        let cells = &self.shown.buffer.content;
         backend.inner.draw(self.changed.iter().map(|&i| {
             // The index of a cell of the frame: its position fits in u16 as the area does.
             let x = area.x + (i % width) as u16;
