@@ -163,9 +163,9 @@ pub struct Rounded {
 }
 
 impl Rounded {
-    /// `value` (finite, non-zero) rounded to `digits` ≥ 1 significant digits.
+    /// `value` (finite, non-zero) rounded to `digits` significant digits (at least one).
     pub fn new(value: f64, digits: usize) -> Self {
-        let text = format!("{:.*e}", digits - 1, value);
+        let text = format!("{:.*e}", digits.max(1) - 1, value);
         let e = text.find('e').unwrap_or(text.len());
         let exponent = text.get(e + 1..).and_then(|x| x.parse().ok()).unwrap_or(0);
         Self { text, e, exponent }

@@ -1,9 +1,6 @@
 //! The backend ratatui's `Terminal` draws into inside [`super::Screen`]: it hands the cell writes
 //! of a frame to the screen's own diff and holds the cursor back until those writes are out.
 
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-
 use ratatui::backend::{Backend, ClearType, WindowSize};
 use ratatui::buffer::Cell;
 use ratatui::layout::{Position, Size};
@@ -25,17 +22,14 @@ pub(super) struct Deferred<B> {
     pub(super) inner: B,
     pub(super) drawing: bool,
     pub(super) cursor_ops: Vec<CursorOp>,
-    /// Raised when the terminal is cleared (a resize, or an explicit clear): it shows nothing.
-    cleared: Arc<AtomicBool>,
 }
 
 impl<B> Deferred<B> {
-    pub(super) fn new(inner: B, cleared: Arc<AtomicBool>) -> Self {
+    pub(super) fn new(inner: B) -> Self {
         Self {
             inner,
             drawing: false,
             cursor_ops: Vec::new(),
-            cleared,
         }
     }
 }
@@ -91,12 +85,10 @@ impl<B: Backend> Backend for Deferred<B> {
     }
 
     fn clear(&mut self) -> Result<(), Self::Error> {
-        self.cleared.store(true, Ordering::Relaxed);
         self.inner.clear()
     }
 
     fn clear_region(&mut self, clear_type: ClearType) -> Result<(), Self::Error> {
-        self.cleared.store(true, Ordering::Relaxed);
         self.inner.clear_region(clear_type)
     }
 

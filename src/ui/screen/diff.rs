@@ -29,6 +29,19 @@ impl Shown {
         }
     }
 
+    /// A terminal of `area` whose cells are unknown (a write failed midway): every cell of the
+    /// next frame differs from them (a control character no frame draws), so all are written.
+    pub(super) fn unknown(area: Rect) -> Self {
+        let mut buffer = Buffer::empty(area);
+        for cell in &mut buffer.content {
+            cell.set_symbol("\u{1}");
+        }
+        Self {
+            buffer,
+            plain: true,
+        }
+    }
+
     /// Writes into `changed` the indices of the cells of `next` to send to the terminal, in
     /// ratatui's order, and takes `next` as what it shows.
     pub(super) fn update(&mut self, next: &Buffer, changed: &mut Vec<usize>) {

@@ -12,9 +12,6 @@ mod diff;
 #[cfg(test)]
 mod tests;
 
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-
 use ratatui::backend::Backend;
 use ratatui::{Frame, Terminal};
 
@@ -26,8 +23,6 @@ use diff::Shown;
 #[derive(Debug)]
 pub struct Screen<B: Backend> {
     terminal: Terminal<Deferred<B>>,
-    /// Raised by the backend when the terminal is cleared (a resize, or an explicit clear).
-    cleared: Arc<AtomicBool>,
     /// What the terminal shows now.
     shown: Shown,
     /// The cells of the last frame that differed from what was shown (kept to reuse its memory).
@@ -37,12 +32,10 @@ pub struct Screen<B: Backend> {
 impl<B: Backend> Screen<B> {
     /// A screen over `backend`, taken to show nothing yet (as ratatui takes a new terminal).
     pub fn new(backend: B) -> Result<Self, B::Error> {
-        let cleared = Arc::new(AtomicBool::new(false));
-        let mut terminal = Terminal::new(Deferred::new(backend, Arc::clone(&cleared)))?;
+        let mut terminal = Terminal::new(Deferred::new(backend))?;
         let shown = Shown::blank(terminal.get_frame().area());
         Ok(Self {
             terminal,
-            cleared,
             shown,
             changed: Vec::new(),
         })
@@ -54,36 +47,21 @@ impl<B: Backend> Screen<B> {
         self.terminal.backend_mut().drawing = true;
         let drawn = self.terminal.draw(render).map(|frame| {
             let next = frame.buffer;
-            // A cleared or resized terminal shows nothing: diff against a blank frame, as ratatui
-            // does.
-            if self.cleared.swap(false, Ordering::Relaxed) || self.shown.buffer.area != next.area {
+            // ratatui clears a resized terminal (and only then): it shows nothing.
+            if self.shown.buffer.area != next.area {
                 self.shown = Shown::blank(next.area);
             }
             self.shown.update(next, &mut self.changed);
         });
         let backend = self.terminal.backend_mut();
         backend.drawing = false;
-        if let Err(e) = drawn {
+        let written = drawn.and_then(|()| write(backend, &self.shown, &self.changed));
+        if written.is_err() {
+            // What the terminal shows is unknown: the next frame is written whole.
             backend.cursor_ops.clear();
-            return Err(e);
+            self.shown = Shown::unknown(self.shown.buffer.area);
         }
-        let area = self.shown.buffer.area;
-        let width = usize::from(area.width.max(1));
-        let cells = &self.shown.buffer.content;
-        backend.inner.draw(self.changed.iter().map(|&i| {
-            // The index of a cell of the frame: its position fits in u16 as the area does.
-            let x = area.x + (i % width) as u16;
-            let y = area.y + (i / width) as u16;
-            (x, y, &cells[i])
-        }))?;
-        for op in backend.cursor_ops.drain(..) {
-            match op {
-                CursorOp::Hide => backend.inner.hide_cursor()?,
-                CursorOp::Show => backend.inner.show_cursor()?,
-                CursorOp::MoveTo(position) => backend.inner.set_cursor_position(position)?,
-            }
-        }
-        backend.inner.flush()
+        written
     }
 
     /// The terminal's size now.
@@ -100,4 +78,37 @@ impl<B: Backend> Screen<B> {
     pub fn backend_mut(&mut self) -> &mut B {
         &mut self.terminal.backend_mut().inner
     }
+}
+
+/// A panic inside `render` leaves a frame unfinished: ratatui's `Terminal`, dropped after this,
+/// shows the cursor again, which must reach the terminal, not wait for a frame.
+impl<B: Backend> Drop for Screen<B> {
+    fn drop(&mut self) {
+        self.terminal.backend_mut().drawing = false;
+    }
+}
+
+/// Writes the `changed` cells of `shown`, replays the frame's cursor requests, flushes.
+fn write<B: Backend>(
+    backend: &mut Deferred<B>,
+    shown: &Shown,
+    changed: &[usize],
+) -> Result<(), B::Error> {
+    let area = shown.buffer.area;
+    let width = usize::from(area.width.max(1));
+    let cells = &shown.buffer.content;
+    backend.inner.draw(changed.iter().map(|&i| {
+        // The index of a cell of the frame: its position fits in u16 as the area does.
+        let x = area.x + (i % width) as u16;
+        let y = area.y + (i / width) as u16;
+        (x, y, &cells[i])
+    }))?;
+    for op in backend.cursor_ops.drain(..) {
+        match op {
+            CursorOp::Hide => backend.inner.hide_cursor()?,
+            CursorOp::Show => backend.inner.show_cursor()?,
+            CursorOp::MoveTo(position) => backend.inner.set_cursor_position(position)?,
+        }
+    }
+    backend.inner.flush()
 }

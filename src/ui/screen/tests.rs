@@ -4,11 +4,12 @@
 
 use proptest::prelude::*;
 use ratatui::Terminal;
-use ratatui::backend::TestBackend;
-use ratatui::buffer::{Buffer, CellDiffOption, CellWidth};
-use ratatui::layout::{Position, Rect};
-use ratatui::style::{Color, Modifier};
+use ratatui::backend::{Backend, ClearType, TestBackend, WindowSize};
+use ratatui::buffer::{Buffer, Cell, CellDiffOption, CellWidth};
+use ratatui::layout::{Position, Rect, Size};
+use ratatui::style::{Color, Modifier, Style};
 use std::num::NonZeroU16;
+use std::sync::{Arc, Mutex};
 
 use super::Screen;
 use super::diff::{Shown, known_narrow};
@@ -134,14 +135,124 @@ fn frames(symbols: usize) -> impl Strategy<Value = Vec<FrameSpec>> {
     )
 }
 
+/// What a backend was asked, in order.
+#[derive(Debug, Clone, PartialEq)]
+enum Call {
+    Draw(u16, u16, Cell),
+    Hide,
+    Show,
+    MoveTo(Position),
+    Clear,
+    ClearRegion(ClearType),
+    Flush,
+}
+
+/// A test backend that logs every call that changes the terminal, and can be made to fail the
+/// next frame's cell writes.
+#[derive(Debug)]
+struct Recorder {
+    inner: TestBackend,
+    log: Arc<Mutex<Vec<Call>>>,
+    fail_next_draw: bool,
+}
+
+impl Recorder {
+    fn new(width: u16, height: u16) -> Self {
+        Self {
+            inner: TestBackend::new(width, height),
+            log: Arc::default(),
+            fail_next_draw: false,
+        }
+    }
+
+    fn calls(&self) -> Vec<Call> {
+        self.log.lock().unwrap().clone()
+    }
+
+    fn record(&self, call: Call) {
+        self.log.lock().unwrap().push(call);
+    }
+}
+
+impl Backend for Recorder {
+    type Error = std::io::Error;
+
+    fn draw<'a, I>(&mut self, content: I) -> std::io::Result<()>
+    where
+        I: Iterator<Item = (u16, u16, &'a Cell)>,
+    {
+        if std::mem::take(&mut self.fail_next_draw) {
+            return Err(std::io::Error::other("the terminal went away"));
+        }
+        let cells: Vec<(u16, u16, Cell)> = content.map(|(x, y, c)| (x, y, c.clone())).collect();
+        for (x, y, c) in &cells {
+            self.record(Call::Draw(*x, *y, c.clone()));
+        }
+        self.inner
+            .draw(cells.iter().map(|(x, y, c)| (*x, *y, c)))
+            .map_err(std::io::Error::other)
+    }
+
+    fn hide_cursor(&mut self) -> std::io::Result<()> {
+        self.record(Call::Hide);
+        self.inner.hide_cursor().map_err(std::io::Error::other)
+    }
+
+    fn show_cursor(&mut self) -> std::io::Result<()> {
+        self.record(Call::Show);
+        self.inner.show_cursor().map_err(std::io::Error::other)
+    }
+
+    fn get_cursor_position(&mut self) -> std::io::Result<Position> {
+        self.inner
+            .get_cursor_position()
+            .map_err(std::io::Error::other)
+    }
+
+    fn set_cursor_position<P: Into<Position>>(&mut self, position: P) -> std::io::Result<()> {
+        let position = position.into();
+        self.record(Call::MoveTo(position));
+        self.inner
+            .set_cursor_position(position)
+            .map_err(std::io::Error::other)
+    }
+
+    fn clear(&mut self) -> std::io::Result<()> {
+        self.record(Call::Clear);
+        self.inner.clear().map_err(std::io::Error::other)
+    }
+
+    fn clear_region(&mut self, clear_type: ClearType) -> std::io::Result<()> {
+        self.record(Call::ClearRegion(clear_type));
+        self.inner
+            .clear_region(clear_type)
+            .map_err(std::io::Error::other)
+    }
+
+    fn size(&self) -> std::io::Result<Size> {
+        self.inner.size().map_err(std::io::Error::other)
+    }
+
+    fn window_size(&mut self) -> std::io::Result<WindowSize> {
+        self.inner.window_size().map_err(std::io::Error::other)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.record(Call::Flush);
+        Ok(())
+    }
+}
+
+/// Draws `frames` through ratatui's `Terminal` and through a `Screen`: the two backends are asked
+/// the same things in the same order (cells, cursor, clears, flushes) and show the same.
 fn compare(frames: Vec<FrameSpec>, options: bool) {
-    let mut terminal = Terminal::new(TestBackend::new(7, 3)).unwrap();
-    let mut screen = Screen::new(TestBackend::new(7, 3)).unwrap();
+    let mut terminal = Terminal::new(Recorder::new(7, 3)).unwrap();
+    let mut screen = Screen::new(Recorder::new(7, 3)).unwrap();
     for (k, (specs, cursor, resize)) in frames.into_iter().enumerate() {
         if resize {
             let (w, h) = if k % 2 == 0 { (6, 3) } else { (7, 2) };
-            terminal.backend_mut().resize(w, h);
-            screen.backend_mut().resize(w, h);
+            terminal.backend_mut().inner.resize(w, h);
+            screen.backend_mut().inner.resize(w, h);
         }
         let draw = |frame: &mut ratatui::Frame| {
             let area = frame.area();
@@ -155,8 +266,74 @@ fn compare(frames: Vec<FrameSpec>, options: bool) {
         };
         terminal.draw(draw).unwrap();
         screen.draw(draw).unwrap();
-        assert_eq!(screen.backend(), terminal.backend(), "frame {k}");
+        assert_eq!(
+            screen.backend().calls(),
+            terminal.backend().calls(),
+            "frame {k}"
+        );
+        assert_eq!(
+            screen.backend().inner,
+            terminal.backend().inner,
+            "frame {k}"
+        );
     }
+}
+
+/// A frame whose writes fail leaves the terminal unknown: the next frame is written whole, so the
+/// terminal shows it exactly, and the failed frame's cursor request is not replayed.
+#[test]
+fn after_a_failed_write_the_next_frame_is_written_whole() {
+    let mut screen = Screen::new(Recorder::new(7, 3)).unwrap();
+    let text = |s: &'static str| {
+        move |frame: &mut ratatui::Frame| {
+            frame.buffer_mut().set_string(0, 0, s, Style::new());
+        }
+    };
+    screen.draw(text("abcdefg")).unwrap();
+    screen.backend_mut().fail_next_draw = true;
+    let failed = screen.draw(|frame| {
+        frame.buffer_mut().set_string(0, 1, "zzz", Style::new());
+        frame.set_cursor_position(Position::new(2, 2));
+    });
+    assert!(failed.is_err());
+    screen.backend().log.lock().unwrap().clear();
+    screen.draw(text("abcdefg")).unwrap();
+    let calls = screen.backend().calls();
+    let drawn = calls.iter().filter(|c| matches!(c, Call::Draw(..))).count();
+    assert_eq!(drawn, 21, "every cell rewritten");
+    assert!(
+        !calls.contains(&Call::MoveTo(Position::new(2, 2))),
+        "{calls:?}"
+    );
+    let mut expected = TestBackend::new(7, 3);
+    expected
+        .draw(
+            Buffer::with_lines(["abcdefg", "       ", "       "])
+                .content
+                .iter()
+                .enumerate()
+                .map(|(i, c)| ((i % 7) as u16, (i / 7) as u16, c)),
+        )
+        .unwrap();
+    assert_eq!(screen.backend().inner.buffer(), expected.buffer());
+}
+
+/// A panic while a frame is rendered: the screen, dropped as the panic unwinds, shows the cursor
+/// again (ratatui's `Terminal` does on drop), rather than leaving the shell without one.
+#[test]
+fn a_panic_in_a_frame_leaves_the_cursor_shown() {
+    let recorder = Recorder::new(7, 3);
+    let log = Arc::clone(&recorder.log);
+    let unwound = std::panic::catch_unwind(std::panic::AssertUnwindSafe(move || {
+        let mut screen = Screen::new(recorder).unwrap();
+        // No cursor asked for: ratatui hides it.
+        screen.draw(|_| {}).unwrap();
+        let _ = screen.draw(|_| panic!("a render bug (expected by this test)"));
+    }));
+    assert!(unwound.is_err());
+    let calls = log.lock().unwrap().clone();
+    assert!(calls.contains(&Call::Hide), "{calls:?}");
+    assert_eq!(calls.last(), Some(&Call::Show), "{calls:?}");
 }
 
 proptest! {
@@ -213,8 +390,8 @@ fn the_explorer_is_written_as_ratatui_writes_it() {
         Theme { color: true },
     );
     update(&mut app, Action::Resize(120, 36));
-    let mut terminal = Terminal::new(TestBackend::new(120, 36)).unwrap();
-    let mut screen = Screen::new(TestBackend::new(120, 36)).unwrap();
+    let mut terminal = Terminal::new(Recorder::new(120, 36)).unwrap();
+    let mut screen = Screen::new(Recorder::new(120, 36)).unwrap();
     let steps = [
         None,
         Some(Action::Nudge(Nudge::Up)),
@@ -234,13 +411,27 @@ fn the_explorer_is_written_as_ratatui_writes_it() {
         }
         terminal.draw(|frame| render::draw(frame, &app)).unwrap();
         screen.draw(|frame| render::draw(frame, &app)).unwrap();
-        assert_eq!(screen.backend(), terminal.backend(), "step {k}");
+        assert_eq!(
+            screen.backend().calls(),
+            terminal.backend().calls(),
+            "step {k}"
+        );
+        assert_eq!(screen.backend().inner, terminal.backend().inner, "step {k}");
     }
     // A resize: both clear and redraw everything.
-    terminal.backend_mut().resize(100, 30);
-    screen.backend_mut().resize(100, 30);
+    terminal.backend_mut().inner.resize(100, 30);
+    screen.backend_mut().inner.resize(100, 30);
     update(&mut app, Action::Resize(100, 30));
     terminal.draw(|frame| render::draw(frame, &app)).unwrap();
     screen.draw(|frame| render::draw(frame, &app)).unwrap();
-    assert_eq!(screen.backend(), terminal.backend(), "after the resize");
+    assert_eq!(
+        screen.backend().calls(),
+        terminal.backend().calls(),
+        "after the resize"
+    );
+    assert_eq!(
+        screen.backend().inner,
+        terminal.backend().inner,
+        "after the resize"
+    );
 }
