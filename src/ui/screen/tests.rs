@@ -243,6 +243,16 @@ impl Backend for Recorder {
     }
 }
 
+/// The screen's backend was asked what the terminal's was, in the same order, and shows the same.
+fn assert_same_writes(screen: &Screen<Recorder>, terminal: &Terminal<Recorder>, what: &str) {
+    assert_eq!(
+        screen.backend().calls(),
+        terminal.backend().calls(),
+        "{what}"
+    );
+    assert_eq!(screen.backend().inner, terminal.backend().inner, "{what}");
+}
+
 /// Draws `frames` through ratatui's `Terminal` and through a `Screen`: the two backends are asked
 /// the same things in the same order (cells, cursor, clears, flushes) and show the same.
 fn compare(frames: Vec<FrameSpec>, options: bool) {
@@ -266,16 +276,7 @@ fn compare(frames: Vec<FrameSpec>, options: bool) {
         };
         terminal.draw(draw).unwrap();
         screen.draw(draw).unwrap();
-        assert_eq!(
-            screen.backend().calls(),
-            terminal.backend().calls(),
-            "frame {k}"
-        );
-        assert_eq!(
-            screen.backend().inner,
-            terminal.backend().inner,
-            "frame {k}"
-        );
+        assert_same_writes(&screen, &terminal, &format!("frame {k}"));
     }
 }
 
@@ -411,12 +412,7 @@ fn the_explorer_is_written_as_ratatui_writes_it() {
         }
         terminal.draw(|frame| render::draw(frame, &app)).unwrap();
         screen.draw(|frame| render::draw(frame, &app)).unwrap();
-        assert_eq!(
-            screen.backend().calls(),
-            terminal.backend().calls(),
-            "step {k}"
-        );
-        assert_eq!(screen.backend().inner, terminal.backend().inner, "step {k}");
+        assert_same_writes(&screen, &terminal, &format!("step {k}"));
     }
     // A resize: both clear and redraw everything.
     terminal.backend_mut().inner.resize(100, 30);
@@ -424,14 +420,5 @@ fn the_explorer_is_written_as_ratatui_writes_it() {
     update(&mut app, Action::Resize(100, 30));
     terminal.draw(|frame| render::draw(frame, &app)).unwrap();
     screen.draw(|frame| render::draw(frame, &app)).unwrap();
-    assert_eq!(
-        screen.backend().calls(),
-        terminal.backend().calls(),
-        "after the resize"
-    );
-    assert_eq!(
-        screen.backend().inner,
-        terminal.backend().inner,
-        "after the resize"
-    );
+    assert_same_writes(&screen, &terminal, "after the resize");
 }
