@@ -284,11 +284,6 @@ impl Trajectory {
             .state_at(t / self.scales.t, &self.scales, &mut Cursor::default())
     }
 
-    /// Approach velocity at first contact, m/s.
-    pub fn v0(&self) -> f64 {
-        self.scales.v
-    }
-
     /// Duration of contact covered, s.
     pub fn t_end(&self) -> f64 {
         self.t_end
