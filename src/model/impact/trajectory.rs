@@ -30,28 +30,6 @@ struct Cursor {
     unloading: Option<usize>,
 }
 
-/// `output`'s state at scaled time `tau` as [`DenseOutput::eval`] gives it (clamped to the output,
-/// on the first segment ending at or after it): that segment searched for the first time, then
-/// walked to from the segment `at` of the previous, earlier time.
-fn eval_from(output: &DenseOutput, tau: f64, at: &mut Option<usize>) -> State {
-    let segments = output.segments();
-    let Some(last) = segments.last() else {
-        return State::zeros();
-    };
-    let tau = tau.max(output.t_start()).min(output.t_end());
-    let i = match *at {
-        None => segments.partition_point(|s| s.t_end() < tau),
-        Some(mut i) => {
-            while segments.get(i).is_some_and(|s| s.t_end() < tau) {
-                i += 1;
-            }
-            i
-        }
-    };
-    *at = Some(i);
-    segments.get(i).unwrap_or(last).eval(tau)
-}
-
 impl Curves {
     /// Scaled state and phase at scaled time `tau`, `None` without curves; `cursor` is where the
     /// previous (earlier) time was found.
@@ -60,12 +38,12 @@ impl Curves {
             return None;
         }
         Some(if tau <= self.t_switch {
-            let y = eval_from(&self.loading, tau, &mut cursor.loading);
+            let y = self.loading.eval_from(tau, &mut cursor.loading);
             (scales.xv(&y), Phase::Loading)
         } else if tau <= self.unloading.t_end() {
             // Unloading is integrated in (X, V) itself (see `phases::Run`).
             (
-                eval_from(&self.unloading, tau, &mut cursor.unloading),
+                self.unloading.eval_from(tau, &mut cursor.unloading),
                 Phase::Unloading,
             )
         } else {

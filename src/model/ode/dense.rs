@@ -235,12 +235,28 @@ impl DenseOutput {
     /// The state at t, clamped to the covered interval; segments are found by binary search, and
     /// step points return the integrator's accepted states exactly.
     pub fn eval(&self, t: f64) -> State {
+        self.eval_from(t, &mut None)
+    }
+
+    /// [`DenseOutput::eval`] for times visited in increasing order: `at` is the segment the
+    /// previous time was found on (`None` before the first), from which the walk goes on instead
+    /// of searching all segments again; it is left on this time's segment.
+    pub fn eval_from(&self, t: f64, at: &mut Option<usize>) -> State {
         let Some(last) = self.segments.last() else {
             return State::zeros();
         };
         // max/min rather than clamp: never panics, even for hand-pushed segments out of order.
         let t = t.max(self.t_start()).min(self.end);
-        let i = self.segments.partition_point(|s| s.t_end() < t);
+        let i = match *at {
+            None => self.segments.partition_point(|s| s.t_end() < t),
+            Some(mut i) => {
+                while self.segments.get(i).is_some_and(|s| s.t_end() < t) {
+                    i += 1;
+                }
+                i
+            }
+        };
+        *at = Some(i);
         self.segments.get(i).unwrap_or(last).eval(t)
     }
 }
