@@ -179,14 +179,8 @@ pub fn sig(value: f64, sig: usize) -> String {
 /// NaN or an infinity, `…` too if those do not fit).
 pub fn fit(value: f64, digits: usize, width: usize) -> String {
     let fits = |s: &String| s.chars().count() <= width;
-    if value.is_finite() {
-        if value == 0.0 {
-            let zero = sig(value, digits);
-            if fits(&zero) {
-                return zero;
-            }
-        }
-        for d in (1..=digits.max(1)).rev().filter(|_| value != 0.0) {
+    if value != 0.0 && value.is_finite() {
+        for d in (1..=digits.max(1)).rev() {
             // Both forms from one rounding.
             let rounded = format::Rounded::new(value, d);
             let plain = rounded.significant(value, Zeros::Trim);
@@ -199,6 +193,7 @@ pub fn fit(value: f64, digits: usize, width: usize) -> String {
             }
         }
     } else {
+        // `0` for either zero (a rounding would keep −0's sign), `—` or `∞` for the others.
         let text = sig(value, digits);
         if fits(&text) {
             return text;
