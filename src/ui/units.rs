@@ -265,6 +265,10 @@ mod tests {
         assert_eq!(fit(9.131e-15, 4, 8), "9.13e-15");
         assert_eq!(fit(-1e300, 4, 3), "…");
         assert_eq!(fit(f64::NAN, 4, 6), "—");
+        // Either zero is `0`, never `-0`; not even that fits in no room.
+        assert_eq!(fit(0.0, 4, 6), "0");
+        assert_eq!(fit(-0.0, 4, 6), "0");
+        assert_eq!(fit(0.0, 4, 0), "");
         for value in [1.234e-9, 9.99e5, 123_456.0, -0.000_123_4, 5e22, 0.0] {
             for width in 1..12 {
                 let text = fit(value, 4, width);
