@@ -22,6 +22,14 @@ pub struct ChartDots {
     pub approach: u32,
 }
 
+/// Dots of t and of x between consecutive samples at most. The straight lines joining them stay
+/// within a fifth of a dot of the curves on every law (tested against curves sampled 24 times as
+/// densely): an impact's curves are smooth between the extrema, which are samples of their own,
+/// and bend over tens of dots, so samples a dot apart were mostly spent where a line draws the
+/// same dots. Where they bend sharply, at first contact and at an end at x = 0, the trajectory
+/// refines the steps itself.
+const STRIDE: f64 = 3.0;
+
 /// Fewest and most samples of one solution, whatever the screen.
 const SAMPLES: std::ops::RangeInclusive<usize> = 32..=8192;
 
@@ -32,15 +40,15 @@ impl ChartDots {
         approach: 200,
     };
 
-    /// The spacing (Δt, Δx) that puts consecutive samples of `solution` at most one dot apart
-    /// across every chart: `time` dots over the contact time on F(t); `approach` dots over x_max
-    /// on F(x) and v(x) (the axis spans at least the solution's own x_max). Lines join the
+    /// The spacing (Δt, Δx) that puts consecutive samples of `solution` at most [`STRIDE`] dots
+    /// apart across every chart: `time` dots over the contact time on F(t); `approach` dots over
+    /// x_max on F(x) and v(x) (the axis spans at least the solution's own x_max). Lines join the
     /// samples, so the curves stay connected; the extrema are added exactly.
     pub fn spacing(self, solution: &ImpactSolution) -> (f64, f64) {
         let s = &solution.summary;
         (
-            s.t_contact / f64::from(self.time),
-            s.x_max / f64::from(self.approach),
+            STRIDE * s.t_contact / f64::from(self.time),
+            STRIDE * s.x_max / f64::from(self.approach),
         )
     }
 }
@@ -352,14 +360,53 @@ mod tests {
         assert!(v.y.bounds[0] <= -0.2 && v.y.bounds[1] >= 0.3);
     }
 
+    /// How far, in dots, the lines joining `samples` pass from the curve's points `dense` on
+    /// the three charts: each point's distance to the nearest line near its time, on F(t),
+    /// F(x) and v(x), in dots of each axis (`dot`: t, x, v, F), the largest of all.
+    fn chord_error(samples: &[Sample], dense: &[Sample], dot: [f64; 4]) -> f64 {
+        let [t, x, v, f] = dot;
+        // A sample's point on F(t), F(x) and v(x), in dots.
+        let charts = |q: &Sample| [(q.t / t, q.f / f), (q.x / x, q.f / f), (q.x / x, q.v / v)];
+        let to_line = |p: (f64, f64), a: (f64, f64), b: (f64, f64)| {
+            let (ab, ap) = ((b.0 - a.0, b.1 - a.1), (p.0 - a.0, p.1 - a.1));
+            let length = ab.0 * ab.0 + ab.1 * ab.1;
+            let s = if length > 0.0 {
+                ((ap.0 * ab.0 + ap.1 * ab.1) / length).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (ap.0 - s * ab.0).hypot(ap.1 - s * ab.1)
+        };
+        let mut worst = 0.0f64;
+        let mut first = 0;
+        for d in dense {
+            while first + 2 < samples.len() && samples[first + 1].t < d.t {
+                first += 1;
+            }
+            // The lines around d's time: from the one before it to a few after (a jump makes
+            // several samples share a time).
+            let near = &samples[first.saturating_sub(1)..(first + 5).min(samples.len())];
+            for (k, p) in charts(d).into_iter().enumerate() {
+                let error = near
+                    .windows(2)
+                    .map(|w| to_line(p, charts(&w[0])[k], charts(&w[1])[k]))
+                    .fold(f64::INFINITY, f64::min);
+                worst = worst.max(error);
+            }
+        }
+        worst
+    }
+
     /// On every law of the paper's Fig. 5 (and e = 0.2, x_pl = 0, where the contact is shortest
-    /// against x_max; and e = 0.95), consecutive samples lie within a dot of each other on every
-    /// chart the resolution was asked for: t over the time plot, x over the approach plots; and
-    /// there are fewer of them than evenly spaced samples would need (the fastest approach,
-    /// v₀, everywhere): a fifth fewer or more on most laws (measured 15 % fewer on the elastic
-    /// law, 25–35 % at e = 0.6, up to 70 % on the strongly damped ones at e = 0.2).
+    /// against x_max; and e = 0.95): consecutive samples lie within [`STRIDE`] dots of each other
+    /// on every chart the resolution was asked for (t over the time plot, x over the approach
+    /// plots); the lines joining them pass within a fifth of a dot of the curves sampled 24 times
+    /// as densely, on F(t), F(x) and v(x) 48 dots high (measured: 0.03–0.06 on the paper's
+    /// models, 0.15 at most, on Tsuji's x^¼ damping at e = 0.2 where the force rises as t^¼);
+    /// and there are at most half as many as evenly spaced samples a dot apart would need (the
+    /// fastest approach, v₀, everywhere).
     #[test]
-    fn samples_are_a_dot_apart_at_most() {
+    fn samples_are_a_stride_apart_and_their_lines_on_the_curves() {
         use crate::model::impact::{SolveOptions, solve_impact};
         use crate::ui::testing::fig5_params;
         let dots = ChartDots {
@@ -371,7 +418,7 @@ mod tests {
         damped.plastic_indentation = 0.0;
         let mut lively = fig5_params(0.3);
         lively.restitution = 0.95;
-        let (mut spared, mut laws) = (0, 0);
+        let mut laws = 0;
         for params in [fig5_params(0.3), damped, lively] {
             for model in ForceModel::ALL {
                 let Ok(solution) = solve_impact(model, &params, &SolveOptions::default()) else {
@@ -389,30 +436,42 @@ mod tests {
                 let t_step = widest(&|q| q.t) / s.t_contact * f64::from(dots.time);
                 let x_step = widest(&|q| q.x) / s.x_max * f64::from(dots.approach);
                 assert!(
-                    t_step <= 1.0 + 1e-9,
+                    t_step <= STRIDE + 1e-9,
                     "{model}: {n} samples, {t_step} dots in t"
                 );
                 assert!(
-                    x_step <= 1.0 + 1e-9,
+                    x_step <= STRIDE + 1e-9,
                     "{model}: {n} samples, {x_step} dots in x"
+                );
+                let (dt, dx) = dots.spacing(&solution);
+                let dense = solution.trajectory.drawn_samples_within(
+                    dt / STRIDE / 8.0,
+                    dx / STRIDE / 8.0,
+                    2..=1_000_000,
+                );
+                let dot = [
+                    s.t_contact / f64::from(dots.time),
+                    s.x_max / f64::from(dots.approach),
+                    params.v0 / 48.0,
+                    s.f_max / 48.0,
+                ];
+                let error = chord_error(&samples, &dense, dot);
+                assert!(
+                    error <= 0.2,
+                    "{model} e = {}: {error} dots",
+                    params.restitution
                 );
                 let sweep = params.v0 * s.t_contact / s.x_max * f64::from(dots.approach);
                 let even = sweep.ceil().max(f64::from(dots.time)) as usize + 1;
                 let extrema = solution.trajectory.extrema().len();
                 assert!(
-                    n <= even + extrema,
+                    2 * n <= even + extrema,
                     "{model}: {n} samples, {even} evenly spaced"
                 );
                 laws += 1;
-                if 5 * n <= 4 * even {
-                    spared += 1;
-                }
             }
         }
-        assert!(
-            2 * spared > laws,
-            "a fifth spared on {spared} of {laws} laws"
-        );
+        assert!(laws > 50, "{laws} laws solved");
     }
 
     #[test]

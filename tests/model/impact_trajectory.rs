@@ -223,11 +223,59 @@ fn samples_within_bounds_keep_them_and_the_extrema() {
             samples.len()
         );
         // Bounds asking for a million samples get the most allowed; asking for none, the
-        // fewest (plus the extrema either way).
+        // fewest (plus the extrema either way, and the steps refined at a steep end: from 1/128
+        // of the widest, doubling, 8 a steep end at most).
         let extrema = traj.extrema().len();
         let many = traj.drawn_samples_within(dt * 1e-6, dx, 2..=500).len();
         assert!((500..=501 + extrema).contains(&many), "{what}: {many}");
         let few = traj.drawn_samples_within(1.0, 1.0, 40..=500).len();
-        assert!((40..=41 + extrema).contains(&few), "{what}: {few}");
+        assert!((40..=41 + extrema + 16).contains(&few), "{what}: {few}");
     });
+}
+
+/// Where the force rises slower than x from first contact (the proposed model's b·x^½·ẋ, Tsuji's
+/// x^¼·ẋ; Kelvin–Voigt's jump c·ẋ) the steps start at 1/128 of the widest and at most double;
+/// where it falls so to an end at x = 0 (the laws kept in tension to the last) they halve towards
+/// it; Hertz-like laws (F ∝ x^1.5 at both ends) take the widest step from the start.
+#[test]
+fn steps_are_refined_where_the_force_is_steep_at_an_end() {
+    let p = fig5(0.6);
+    for (model, start, end) in [
+        (ForceModel::Proposed, true, false),
+        (ForceModel::with_id("hertz-viscous"), true, false),
+        (ForceModel::with_id("hertz-viscous-tension"), true, true),
+        (ForceModel::with_id("kelvin-voigt-tension"), true, true),
+        (ForceModel::HuntCrossley, false, false),
+        (ForceModel::Quasistatic, false, false),
+    ] {
+        let sol = solve_impact(model, &p, &SolveOptions::default()).unwrap();
+        let (s, traj) = (&sol.summary, &sol.trajectory);
+        let dt = s.t_contact / 40.0;
+        let samples = traj.drawn_samples_within(dt, 1.0, 2..=10_000);
+        let steps: Vec<f64> = samples.windows(2).map(|w| w[1].t - w[0].t).collect();
+        let (first, widest) = (steps[0], steps.iter().copied().fold(0.0, f64::max));
+        assert!(widest <= dt * (1.0 + 1e-12), "{model}");
+        if start {
+            assert!(first <= widest / 128.0 * (1.0 + 1e-9), "{model}: {first:e}");
+            for w in steps.windows(2).take(10) {
+                assert!(w[1] <= 2.0 * w[0] * (1.0 + 1e-9), "{model}: {w:?}");
+            }
+        } else {
+            assert!(first > widest / 2.0, "{model}: {first:e}");
+        }
+        // The step before the last (the last is what is left to the end; the end mark and,
+        // after a jump, the curve's own last sample share its time).
+        let last = steps
+            .iter()
+            .rev()
+            .filter(|&&h| h > 0.0)
+            .nth(1)
+            .copied()
+            .unwrap();
+        if end {
+            assert!(last <= widest / 64.0, "{model}: {last:e}");
+        } else {
+            assert!(last > widest / 64.0, "{model}: {last:e}");
+        }
+    }
 }

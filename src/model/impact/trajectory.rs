@@ -352,7 +352,10 @@ impl Trajectory {
     /// approach moves at most (|v| + a·dt)·Δt, a = F_max/m bounding the acceleration (|F| ≤
     /// F_max), so the fast stretches after first contact and before the end are sampled densely
     /// in time and the slow ones around maximum compression no denser than `dt` — where evenly
-    /// spaced samples would all be as dense as the fastest stretch needs.
+    /// spaced samples would all be as dense as the fastest stretch needs. Where the force is
+    /// steep at an end (it rises slower than x from first contact, or falls so to an end at
+    /// x = 0), the steps there are refined geometrically from 1/128 of these bounds; where it
+    /// jumps at the end, the curve's last force is a sample before the end mark.
     pub fn drawn_samples_within(
         &self,
         dt: f64,
@@ -374,13 +377,34 @@ impl Trajectory {
         let mut marks = self.marks().iter().peekable();
         let mut cursor = Cursor::default();
         let mut t = 0.0;
+        // A force that rises slower than x from first contact (a damping term in xⁿ⁻¹·ẋ or
+        // x^((n−1)/2)·ẋ, or one that jumps, c·ẋ) bends most there, and so does one that falls so
+        // to a contact ending at x = 0: steps start at 1/128 of what the bounds allow and double
+        // from there (halve towards the end), so the lines joining the samples hug the curve.
+        let fine = (dx / (self.scales.v + a * longest)).min(longest) / 128.0;
+        let unloading = curves.unloading_law.as_ref().unwrap_or(&self.law);
+        let (x_probe, v_out) = (1e-6 * self.extrema.x_max, self.extrema.v_out);
+        let steep_start = slower_than_x(&self.law, x_probe, self.scales.v, Phase::Loading);
+        let steep_end = self.extrema.x_residual == 0.0
+            && slower_than_x(unloading, x_probe, -v_out, Phase::Unloading);
+        let mut grown = if steep_start { fine } else { f64::INFINITY };
         loop {
             while let Some(mark) = marks.next_if(|m| m.t < t) {
                 out.push(*mark);
             }
-            // A sample that falls exactly on a mark is the mark.
+            // A sample that falls exactly on a mark is the mark; but where the force jumps at
+            // the end of contact (a law in tension to the last: F = c·ẋ at x = 0, none after),
+            // the curve's last force comes first, so that the chart drops straight down.
             let v = match marks.peek() {
-                Some(mark) if mark.t == t => mark.v,
+                Some(mark) if mark.t == t => {
+                    if t >= t_end {
+                        let last = self.sample_on(curves, t, &mut cursor);
+                        if (last.f - mark.f).abs() > 1e-3 * self.extrema.f_max.abs() {
+                            out.push(last);
+                        }
+                    }
+                    mark.v
+                }
                 _ => {
                     let sample = self.sample_on(curves, t, &mut cursor);
                     out.push(sample);
@@ -391,7 +415,12 @@ impl Trajectory {
                 break;
             }
             // NaN bounds (a zero x_max) leave the other bound; `max` keeps the count finite.
-            let step = (dx / (v.abs() + a * longest)).min(longest).max(shortest);
+            let mut step = (dx / (v.abs() + a * longest)).min(longest).min(grown);
+            if steep_end {
+                step = step.min(((t_end - t) / 2.0).max(fine));
+            }
+            let step = step.max(shortest);
+            grown = 2.0 * step;
             // A step that does not move t (zero, or below t's ulp for a subnormal t_end) ends the
             // walk rather than looping.
             let next = t + step;
@@ -414,6 +443,14 @@ impl Trajectory {
     pub fn extrema(&self) -> &[Sample] {
         self.marks()
     }
+}
+
+/// Whether |F| grows slower than x near x = 0 (F ∝ xᵖ with p below about 0.85), from its values
+/// at `x` and 2`x`: false where F vanishes there or is not finite.
+fn slower_than_x(law: &AnyLaw, x: f64, v: f64, phase: Phase) -> bool {
+    let near = law.phase_force(x, v, phase).abs();
+    let far = law.phase_force(2.0 * x, v, phase).abs();
+    far < 1.8 * near
 }
 
 /// Linear interpolation between two samples at time t.

@@ -253,11 +253,15 @@ impl Canvas {
             self.set_dot(b, ink, bold);
             return;
         }
-        for k in 1..=steps {
-            // Integer DDA, rounded to the nearest dot.
-            let x = a.0 + (2 * dx * k + steps).div_euclid(2 * steps);
-            let y = a.1 + (2 * dy * k + steps).div_euclid(2 * steps);
-            self.set_dot((x, y), ink, bold);
+        // Integer DDA, rounded to the nearest dot: step k sets a + ⌊(2·d·k + steps) / (2·steps)⌋
+        // on each axis, walked by its remainder rather than divided (a division a dot was most
+        // of a line's cost). |2·d| ≤ 2·steps, so each step moves the quotient by one at most.
+        let span = 2 * steps;
+        let (mut at, mut rest) = (a, (steps, steps));
+        for _ in 0..steps {
+            (at.0, rest.0) = dda_step(at.0, rest.0, 2 * dx, span);
+            (at.1, rest.1) = dda_step(at.1, rest.1, 2 * dy, span);
+            self.set_dot(at, ink, bold);
         }
     }
 
@@ -268,6 +272,20 @@ impl Canvas {
         if let Some(cell) = self.cell_mut(at.0.round() as u32, at.1.round() as u32) {
             cell.glyph = Some((glyph, ink, bold));
         }
+    }
+}
+
+/// One step of a DDA coordinate: `rest` ∈ [0, span) is the remainder of the walk's numerator
+/// over `span`; adding `increment` (|increment| ≤ span) carries at most one into the coordinate.
+#[inline]
+fn dda_step(at: i64, rest: i64, increment: i64, span: i64) -> (i64, i64) {
+    let rest = rest + increment;
+    if rest >= span {
+        (at + 1, rest - span)
+    } else if rest < 0 {
+        (at - 1, rest + span)
+    } else {
+        (at, rest)
     }
 }
 
@@ -1005,14 +1023,14 @@ mod tests {
         }
     }
 
-    /// Lines from a dot to every dot up to three away, on and off the canvas: the dots of the
-    /// integer DDA walked one step at a time, a neighbour included.
+    /// Lines from a dot to every dot up to 27 away, on and off the canvas: the dots of the
+    /// integer DDA, each divided out on its own, a neighbour included.
     #[test]
     fn lines_set_the_dots_of_their_walk() {
-        let plot = Rect::new(0, 0, 5, 2);
-        let a = (4, 3);
-        for dx in -3..=3 {
-            for dy in -3..=3 {
+        let plot = Rect::new(0, 0, 20, 6);
+        let a = (17, 11);
+        for dx in -27..=27 {
+            for dy in -27..=27 {
                 let b = (a.0 + dx, a.1 + dy);
                 let mut line = Canvas::new(plot, MarkerStyle::Braille);
                 line.line_dots(a, b, Ink::Foreground, false);
