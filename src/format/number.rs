@@ -2,6 +2,8 @@
 //! scientific notation. Values beyond the prefixes (f … T) fall back to scientific notation; a NaN
 //! prints as [`NOT_A_NUMBER`] and an infinity as `∞`, never as a number.
 
+use super::shortest_exp::{shortest_digits, trim_end_zeros};
+
 /// Shown instead of a NaN: a NaN is never printed as a result.
 pub const NOT_A_NUMBER: &str = "—";
 
@@ -149,37 +151,135 @@ fn non_finite(value: f64) -> String {
     }
 }
 
-/// A finite non-zero value rounded to a number of significant digits, by the formatter's exact
-/// decimal rounding (so tiny and huge values need no scale): formatted once in scientific
-/// notation, from which the plain and engineering forms take their digits.
+/// The most significant digits [`Rounded`] keeps: 17 tell every double apart.
+const MAX_DIGITS: usize = 17;
+
+/// Up to this many digits the shortest round-trip digits, rounded, are the exact rounding of the
+/// double (away from the cases [`Rounded::new`] hands to the exact formatter): a normal double
+/// is within 2⁻⁵³ of them, relatively, and a rounding boundary of 15 digits is at least 5·10⁻¹⁶
+/// away from a number of 15 digits or fewer.
+const SHORTEST_EXACT_UP_TO: usize = 15;
+
+/// A finite non-zero value rounded to a number of significant digits, exactly (as the standard
+/// formatter's `{:.*e}` rounds the double's exact value, ties to even), kept as digits on the
+/// stack, from which the scientific, plain and engineering forms are written. The digits are
+/// Żmij's shortest round-trip digits rounded where that is provably the exact rounding (see
+/// [`Rounded::new`]), else the standard formatter's: about a fifth of the instructions.
 #[derive(Debug, Clone)]
 pub struct Rounded {
-    /// `-2.388e-5`: the formatter's scientific text.
-    text: String,
-    /// Where the mantissa ends (the `e`).
-    e: usize,
+    /// The significant digits, ASCII, trailing zeros kept: `len` of them.
+    digits: [u8; MAX_DIGITS],
+    len: usize,
+    negative: bool,
     /// The decimal exponent of the first digit.
     pub exponent: i32,
 }
 
 impl Rounded {
-    /// `value` (finite, non-zero) rounded to `digits` significant digits (at least one).
+    /// `value` (finite, non-zero) rounded to `digits` significant digits (at least one, at most
+    /// [`MAX_DIGITS`]).
+    ///
+    /// From Żmij's shortest digits S of the double v, rounded half up, when that is v's own
+    /// rounding: S and v lie in v's rounding interval, so a rounding boundary (a number of
+    /// `digits` + 1 digits ending in 5) between them would be in it too. With more than
+    /// `digits` + 1 digits in S there is none (S is the shortest in the interval); with exactly
+    /// that many, none either unless S ends in that 5 (S is the nearest of its length), so that
+    /// case goes to the exact formatter; with `digits` or fewer, a boundary is farther from S
+    /// than v can be, for normal doubles up to [`SHORTEST_EXACT_UP_TO`] digits. Subnormals
+    /// (whose interval is wide) and more digits go to the exact formatter.
     pub fn new(value: f64, digits: usize) -> Self {
-        let text = format!("{:.*e}", digits.max(1) - 1, value);
-        let e = text.find('e').unwrap_or(text.len());
-        let exponent = text.get(e + 1..).and_then(|x| x.parse().ok()).unwrap_or(0);
-        Self { text, e, exponent }
+        let wanted = digits.clamp(1, MAX_DIGITS);
+        if wanted > SHORTEST_EXACT_UP_TO || value.abs() < f64::MIN_POSITIVE {
+            return Self::exact(value, wanted);
+        }
+        let mut shortest = [b'0'; MAX_DIGITS];
+        let (negative, len, exponent) = shortest_digits(value, &mut shortest);
+        let mut rounded = Self {
+            digits: [b'0'; MAX_DIGITS],
+            len: wanted,
+            negative,
+            exponent,
+        };
+        if len <= wanted {
+            rounded.digits[..len].copy_from_slice(&shortest[..len]);
+            return rounded;
+        }
+        let next = shortest[wanted];
+        if len == wanted + 1 && next == b'5' {
+            return Self::exact(value, wanted);
+        }
+        rounded.digits[..wanted].copy_from_slice(&shortest[..wanted]);
+        if next >= b'5' {
+            rounded.round_up();
+        }
+        rounded
+    }
+
+    /// The standard formatter's exact rounding, written on the stack.
+    fn exact(value: f64, digits: usize) -> Self {
+        use std::fmt::Write;
+        let mut text = StackText::default();
+        // Sign, 17 digits, the point, `e`, a sign and three digits fit the buffer.
+        let _ = write!(text, "{:.*e}", digits - 1, value);
+        let text = text.as_bytes();
+        let e = text.iter().position(|&b| b == b'e').unwrap_or(text.len());
+        let exponent = std::str::from_utf8(text.get(e + 1..).unwrap_or_default())
+            .ok()
+            .and_then(|x| x.parse().ok())
+            .unwrap_or(0);
+        let mut rounded = Self {
+            digits: [b'0'; MAX_DIGITS],
+            len: 0,
+            negative: text.first() == Some(&b'-'),
+            exponent,
+        };
+        for &d in text[..e].iter().filter(|d| d.is_ascii_digit()) {
+            if rounded.len < MAX_DIGITS {
+                rounded.digits[rounded.len] = d;
+                rounded.len += 1;
+            }
+        }
+        rounded
+    }
+
+    /// Adds one in the last kept digit: 9.999 → 10.00, written 1.000 one decade up.
+    fn round_up(&mut self) {
+        for d in self.digits[..self.len].iter_mut().rev() {
+            if *d == b'9' {
+                *d = b'0';
+            } else {
+                *d += 1;
+                return;
+            }
+        }
+        self.digits[0] = b'1';
+        self.exponent += 1;
+    }
+
+    /// The significant digits, ASCII.
+    fn digits(&self) -> &[u8] {
+        &self.digits[..self.len]
     }
 
     /// Scientific notation: `1.465e10`, or `1.5e-12` with the mantissa's trailing zeros trimmed.
     pub fn scientific(&self, zeros: Zeros) -> String {
-        let mantissa = &self.text[..self.e];
-        if zeros == Zeros::Trim && mantissa.contains('.') {
-            let kept = trim(mantissa, Zeros::Trim);
-            format!("{kept}{}", &self.text[self.e..])
-        } else {
-            self.text.clone()
+        let digits = self.digits();
+        let rest = match zeros {
+            Zeros::Trim => trim_end_zeros(&digits[1..]),
+            Zeros::Keep => &digits[1..],
+        };
+        let mut out = String::with_capacity(rest.len() + 9);
+        if self.negative {
+            out.push('-');
         }
+        out.push(char::from(digits[0]));
+        if !rest.is_empty() {
+            out.push('.');
+            push_ascii(&mut out, rest);
+        }
+        out.push('e');
+        push_integer(&mut out, i64::from(self.exponent));
+        out
     }
 
     /// [`significant`]'s text of `value`, which this is the rounding of: plain for a rounded
@@ -188,10 +288,12 @@ impl Rounded {
         if !(-4..=6).contains(&self.exponent) {
             return self.scientific(zeros);
         }
-        let digits = self.digits().count() as i32;
-        if self.exponent >= digits {
-            // More integer digits than significant ones: all of them, as `{:.0}` prints them.
-            return format!("{value:.0}");
+        if self.exponent >= self.len as i32 {
+            // More integer digits than significant ones: all of them, as `{:.0}` prints them
+            // (the exact value rounded to an integer, ties to even; below 1e7 here).
+            let mut out = String::with_capacity(9);
+            push_integer(&mut out, value.round_ties_even() as i64);
+            return out;
         }
         let number = self.positional(self.exponent);
         trim(&number, zeros).to_string()
@@ -201,34 +303,80 @@ impl Rounded {
     /// decimals as the digits reach (none past the point when they end before it, zeros filling
     /// up to it): for `2.388`, `23.88` at 1, `0.02388` at -2; for `3`, `300` at 2.
     fn positional(&self, exponent: i32) -> String {
-        let mut out = String::with_capacity(self.text.len() + 8);
-        if self.text.starts_with('-') {
+        let digits = self.digits();
+        let mut out = String::with_capacity(digits.len() + 8);
+        if self.negative {
             out.push('-');
         }
-        let mut digits = self.digits();
         if exponent < 0 {
             out.push_str("0.");
             for _ in 0..(-exponent - 1) {
                 out.push('0');
             }
-            out.extend(digits);
+            push_ascii(&mut out, digits);
             return out;
         }
-        for _ in 0..=exponent {
-            out.push(digits.next().unwrap_or('0'));
-        }
-        let mut rest = digits.peekable();
-        if rest.peek().is_some() {
+        let whole = exponent as usize + 1;
+        if whole >= digits.len() {
+            push_ascii(&mut out, digits);
+            for _ in digits.len()..whole {
+                out.push('0');
+            }
+        } else {
+            push_ascii(&mut out, &digits[..whole]);
             out.push('.');
-            out.extend(rest);
+            push_ascii(&mut out, &digits[whole..]);
         }
         out
     }
+}
 
-    /// The mantissa's digits, without sign and point.
-    fn digits(&self) -> impl Iterator<Item = char> + '_ {
-        self.text[..self.e].chars().filter(char::is_ascii_digit)
+/// A short text written on the stack (a [`Rounded::exact`] formatting); what does not fit is
+/// dropped, which the longest `{:.16e}` of a double never needs.
+#[derive(Default)]
+struct StackText {
+    bytes: [u8; 32],
+    len: usize,
+}
+
+impl StackText {
+    fn as_bytes(&self) -> &[u8] {
+        &self.bytes[..self.len]
     }
+}
+
+impl std::fmt::Write for StackText {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        let end = self.len + s.len();
+        let room = self.bytes.get_mut(self.len..end).ok_or(std::fmt::Error)?;
+        room.copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
+}
+
+/// Appends ASCII digits.
+fn push_ascii(out: &mut String, digits: &[u8]) {
+    out.extend(digits.iter().map(|&d| char::from(d)));
+}
+
+/// Appends `n` in decimal, as `{}` writes it.
+fn push_integer(out: &mut String, n: i64) {
+    if n < 0 {
+        out.push('-');
+    }
+    let mut magnitude = n.unsigned_abs();
+    let mut buf = [0u8; 20];
+    let mut start = buf.len();
+    loop {
+        start -= 1;
+        buf[start] = b'0' + (magnitude % 10) as u8;
+        magnitude /= 10;
+        if magnitude == 0 {
+            break;
+        }
+    }
+    push_ascii(out, &buf[start..]);
 }
 
 fn trim(number: &str, zeros: Zeros) -> &str {
@@ -385,12 +533,13 @@ mod tests {
         #![proptest_config(proptest::prelude::ProptestConfig { cases: 4000, ..Default::default() })]
 
         /// Every finite non-zero double (drawn from its bits, so every exponent is as likely, and
-        /// near prefix changes, decimal midpoints and binary fractions), at 1 to 17 digits, both
-        /// zero policies: the same text as the exact formatter, formatting twice, gave.
+        /// near prefix changes, decimal midpoints, binary fractions and subnormals), at 1 to 17
+        /// digits, both zero policies: the same text as the exact formatter, formatting twice,
+        /// gave.
         #[test]
         fn formatting_once_gives_what_formatting_twice_gave(
             bits in proptest::prelude::any::<u64>(),
-            kind in 0u8..4,
+            kind in 0u8..5,
             digits in 1usize..18,
             trim_zeros in proptest::prelude::any::<bool>(),
         ) {
@@ -403,6 +552,8 @@ mod tests {
                 2 => value = (((bits >> 8) % 100_000) as f64 + 0.5) * scale,
                 // Binary fractions, exactly representable midpoints (0.125, 2.5, 1.0625 …).
                 3 => value = ((bits >> 8) % 100_000) as f64 / f64::from(1u32 << ((bits >> 40) % 12)),
+                // Subnormals, whose shortest digits are few and far from the exact value.
+                4 => value = f64::from_bits(bits % (1 << 52)),
                 _ => {}
             }
             proptest::prop_assume!(value.is_finite() && value != 0.0);

@@ -33,6 +33,36 @@ pub fn push_shortest_exp(out: &mut Vec<u8>, value: f64) {
         }
         _ => text,
     };
+    let (lead, rest, power) = layout(body);
+    let Some((&first, lead)) = lead.split_first() else {
+        out.extend_from_slice(b"0e0");
+        return;
+    };
+    out.push(first);
+    if !lead.is_empty() || !rest.is_empty() {
+        out.push(b'.');
+        out.extend_from_slice(lead);
+        out.extend_from_slice(rest);
+    }
+    out.push(b'e');
+    if power < 0 {
+        out.push(b'-');
+    }
+    let e = power.unsigned_abs();
+    let digit = |d: u32| b'0' + (d % 10) as u8;
+    if e >= 100 {
+        out.push(digit(e / 100));
+    }
+    if e >= 10 {
+        out.push(digit(e / 10));
+    }
+    out.push(digit(e));
+}
+
+/// Żmij's text of a finite value, without its sign, as the digits before and after the point of
+/// a number whose first digit has the decimal exponent `power`, trailing zeros trimmed (`lead`
+/// may be left empty only for a zero).
+fn layout(body: &[u8]) -> (&[u8], &[u8], i32) {
     // Żmij writes `1e-7` or `1.2345e+30` (scientific: the exponent is among the last five bytes,
     // `e-324`), or `123.45`, `0.00123`, `1230.0` (fixed: always with a point).
     let tail = body.len().saturating_sub(5);
@@ -64,33 +94,30 @@ pub fn push_shortest_exp(out: &mut Vec<u8>, value: f64) {
     } else {
         lead
     };
-    let Some((&first, lead)) = lead.split_first() else {
-        out.extend_from_slice(b"0e0");
-        return;
+    (lead, rest, power)
+}
+
+/// The shortest round-trip digits of a finite non-zero `value` (Żmij's), at most 17 ASCII digits
+/// without trailing zeros: written into `digits`, returning whether the value is negative, how
+/// many digits there are and the decimal exponent of the first.
+pub(super) fn shortest_digits(value: f64, digits: &mut [u8; 17]) -> (bool, usize, i32) {
+    let mut zmij = zmij::Buffer::new();
+    let text = zmij.format_finite(value).as_bytes();
+    let (negative, body) = match text.split_first() {
+        Some((b'-', rest)) => (true, rest),
+        _ => (false, text),
     };
-    out.push(first);
-    if !lead.is_empty() || !rest.is_empty() {
-        out.push(b'.');
-        out.extend_from_slice(lead);
-        out.extend_from_slice(rest);
-    }
-    out.push(b'e');
-    if power < 0 {
-        out.push(b'-');
-    }
-    let e = power.unsigned_abs();
-    let digit = |d: u32| b'0' + (d % 10) as u8;
-    if e >= 100 {
-        out.push(digit(e / 100));
-    }
-    if e >= 10 {
-        out.push(digit(e / 10));
-    }
-    out.push(digit(e));
+    let (lead, rest, power) = layout(body);
+    let len = (lead.len() + rest.len()).min(digits.len());
+    let (head, tail) = digits.split_at_mut(lead.len().min(len));
+    head.copy_from_slice(&lead[..head.len()]);
+    let tail_len = len - head.len();
+    tail[..tail_len].copy_from_slice(&rest[..tail_len]);
+    (negative, len, power)
 }
 
 /// `digits` without its trailing zeros.
-fn trim_end_zeros(digits: &[u8]) -> &[u8] {
+pub(super) fn trim_end_zeros(digits: &[u8]) -> &[u8] {
     let kept = digits.iter().rposition(|&d| d != b'0').map_or(0, |i| i + 1);
     &digits[..kept]
 }

@@ -54,23 +54,33 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let width = width.max(1);
     let mut lines = Vec::new();
     let mut line = String::new();
-    for word in text.split_whitespace() {
-        let mut word: Vec<char> = word.chars().collect();
-        while word.len() > width {
+    // Characters in `line`.
+    let mut used = 0;
+    for mut word in text.split_whitespace() {
+        let mut length = word.chars().count();
+        while length > width {
             if !line.is_empty() {
                 lines.push(std::mem::take(&mut line));
+                used = 0;
             }
-            lines.push(word.drain(..width).collect());
+            let cut = word
+                .char_indices()
+                .nth(width)
+                .map_or(word.len(), |(i, _)| i);
+            lines.push(word[..cut].to_string());
+            word = &word[cut..];
+            length -= width;
         }
-        let word: String = word.into_iter().collect();
-        let needed = line.chars().count() + usize::from(!line.is_empty()) + word.chars().count();
-        if needed > width && !line.is_empty() {
+        if used + usize::from(!line.is_empty()) + length > width && !line.is_empty() {
             lines.push(std::mem::take(&mut line));
+            used = 0;
         }
         if !line.is_empty() {
             line.push(' ');
+            used += 1;
         }
-        line.push_str(&word);
+        line.push_str(word);
+        used += length;
     }
     if !line.is_empty() {
         lines.push(line);
@@ -144,6 +154,48 @@ mod tests {
         );
         assert_eq!(wrap("abcdefghij", 4), ["abcd", "efgh", "ij"]);
         assert!(wrap("", 10).is_empty());
+    }
+
+    /// The wrapping as it was, a `Vec<char>` a word: the oracle of the test below.
+    fn wrap_by_chars(text: &str, width: usize) -> Vec<String> {
+        let width = width.max(1);
+        let mut lines = Vec::new();
+        let mut line = String::new();
+        for word in text.split_whitespace() {
+            let mut word: Vec<char> = word.chars().collect();
+            while word.len() > width {
+                if !line.is_empty() {
+                    lines.push(std::mem::take(&mut line));
+                }
+                lines.push(word.drain(..width).collect());
+            }
+            let word: String = word.into_iter().collect();
+            let needed =
+                line.chars().count() + usize::from(!line.is_empty()) + word.chars().count();
+            if needed > width && !line.is_empty() {
+                lines.push(std::mem::take(&mut line));
+            }
+            if !line.is_empty() {
+                line.push(' ');
+            }
+            line.push_str(&word);
+        }
+        if !line.is_empty() {
+            lines.push(line);
+        }
+        lines
+    }
+
+    proptest::proptest! {
+        /// Words of ASCII and wider characters, of every length up to several widths, runs of
+        /// spaces and newlines, widths from none up: the lines the char-vector wrapping gave.
+        #[test]
+        fn wrap_gives_what_wrapping_by_chars_gave(
+            text in "[a-cµ–⚠ \n]{0,60}",
+            width in 0usize..12,
+        ) {
+            proptest::prop_assert_eq!(wrap(&text, width), wrap_by_chars(&text, width));
+        }
     }
 
     /// Styled spans, a line style patched over them, text longer than the area and more lines

@@ -8,7 +8,7 @@ use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Span;
 
-use super::text::put_text;
+use super::text::{patch_style, put_text};
 
 /// Columns between neighbours.
 const SPACING: u16 = 1;
@@ -39,7 +39,7 @@ pub fn draw_table(
             .saturating_add(SPACING)
             .min(area.right());
     }
-    buf.set_style(Rect { height: 1, ..area }, header_style);
+    patch_style(buf, Rect { height: 1, ..area }, header_style);
     for (&(x, width), text) in columns.iter().zip(header) {
         put_text(buf, (x, area.y), text, width, Style::default());
     }

@@ -4,7 +4,7 @@
 //! text into graphemes and measuring each (a tenth of the explorer's frame). Any other text takes
 //! ratatui's own path.
 
-use ratatui::buffer::Buffer;
+use ratatui::buffer::{Buffer, Cell};
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Line;
@@ -30,8 +30,16 @@ pub fn is_plain(c: char) -> bool {
         | '\u{2717}')
 }
 
+/// The printable ASCII characters in order, from the space: each one's symbol is a slice of it.
+const PRINTABLE: &str = " !\"#$%&'()*+,-./0123456789:;<=>?@ABCDEFGHIJKLMNOPQRSTUVWXYZ[\\]^_`abcdefghijklmnopqrstuvwxyz{|}~";
+
+/// Whether `text` is all printable ASCII (all plain), checked a byte at a time.
+fn printable_ascii(text: &str) -> bool {
+    text.bytes().all(|b| matches!(b, b' '..=b'~'))
+}
+
 fn all_plain(text: &str) -> bool {
-    text.chars().all(is_plain)
+    printable_ascii(text) || text.chars().all(is_plain)
 }
 
 /// Sets the plain `text` from (x, y) into at most `width` cells (and no further than the
@@ -43,16 +51,56 @@ fn put_plain(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style
         return x;
     }
     let start = usize::from(y - area.y) * usize::from(area.width) + usize::from(x - area.x);
+    let cells = buf.content[start..].iter_mut().take(usize::from(room));
     let mut written = 0;
-    for (cell, c) in buf.content[start..]
-        .iter_mut()
-        .take(usize::from(room))
-        .zip(text.chars())
-    {
-        cell.set_char(c).set_style(style);
-        written += 1;
+    if printable_ascii(text) {
+        for (cell, b) in cells.zip(text.bytes()) {
+            set_ascii(cell, b);
+            cell.set_style(style);
+            written += 1;
+        }
+    } else {
+        for (cell, c) in cells.zip(text.chars()) {
+            match u8::try_from(c) {
+                Ok(b @ b' '..=b'~') => set_ascii(cell, b),
+                _ => {
+                    cell.set_char(c);
+                }
+            }
+            cell.set_style(style);
+            written += 1;
+        }
     }
     x + written
+}
+
+/// Sets the printable ASCII `b` as the cell's symbol, as `Cell::set_char` does, without making a
+/// new symbol where the cell shows it already (a space on a cleared cell, mostly).
+fn set_ascii(cell: &mut Cell, b: u8) {
+    if cell.symbol().as_bytes() != [b] {
+        let i = usize::from(b - b' ');
+        cell.set_symbol(&PRINTABLE[i..=i]);
+    }
+}
+
+/// What `buf.set_style(area, style)` does (each cell of `area` within the buffer patched with
+/// `style`), a row slice at a time rather than a checked index a cell; nothing for the default
+/// style, which patches nothing.
+pub fn patch_style(buf: &mut Buffer, area: Rect, style: Style) {
+    let area = area.intersection(buf.area);
+    if area.is_empty() || style == Style::default() {
+        return;
+    }
+    let (width, left) = (
+        usize::from(buf.area.width),
+        usize::from(area.x - buf.area.x),
+    );
+    for y in area.top()..area.bottom() {
+        let start = usize::from(y - buf.area.y) * width + left;
+        for cell in &mut buf.content[start..start + usize::from(area.width)] {
+            cell.set_style(style);
+        }
+    }
 }
 
 /// `text` from (x, y) in at most `width` cells, patched with `style`, as a `Span` of it renders
@@ -103,7 +151,7 @@ pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
         return;
     }
     let area = Rect { height: 1, ..area };
-    buf.set_style(area, line.style);
+    patch_style(buf, area, line.style);
     let mut x = area.x;
     for span in &line.spans {
         if x >= area.right() {
@@ -191,6 +239,42 @@ mod tests {
             '\u{ad}', '\u{301}', '\u{200b}', '中', '\u{fe0f}', '\u{25fd}', '\n',
         ] {
             assert!(!is_plain(c), "{c:?}");
+        }
+    }
+
+    /// Each printable ASCII character's symbol is the character.
+    #[test]
+    fn printable_holds_each_ascii_character_at_its_place() {
+        let expected: String = (b' '..=b'~').map(char::from).collect();
+        assert_eq!(PRINTABLE, expected);
+    }
+
+    /// Areas inside, across and off the buffer, styles that set and clear: the cells
+    /// `Buffer::set_style` gives.
+    #[test]
+    fn patch_style_patches_what_buffer_set_style_patches() {
+        let buf_area = Rect::new(1, 1, 30, 4);
+        let styles = [
+            Style::default(),
+            Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
+            Style::new()
+                .bg(Color::Blue)
+                .remove_modifier(Modifier::REVERSED),
+        ];
+        for style in styles {
+            for area in [
+                Rect::new(1, 1, 30, 4),
+                Rect::new(4, 2, 12, 2),
+                Rect::new(25, 3, 20, 5),
+                Rect::new(3, 2, 0, 1),
+                Rect::new(40, 2, 5, 1),
+            ] {
+                let mut ours = busy_buffer(buf_area);
+                patch_style(&mut ours, area, style);
+                let mut theirs = busy_buffer(buf_area);
+                theirs.set_style(area, style);
+                assert_eq!(ours, theirs, "{style:?} in {area:?}");
+            }
         }
     }
 
