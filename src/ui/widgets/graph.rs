@@ -104,7 +104,6 @@ struct Cell {
 /// The canvas of a plot area, in dots.
 struct Canvas {
     width: u16,
-    height: u16,
     dx: u16,
     /// Dots across and down, taken once: every dot set is checked against them.
     wide: u32,
@@ -112,6 +111,9 @@ struct Canvas {
     /// log₂ of the dots per cell across and down (braille 1 and 2, else 0): a dot's cell by shifts.
     col_shift: u32,
     row_shift: u32,
+    /// The bit a dot sets in its cell, by (y mod 4, x mod 2): braille's layout, else a single bit.
+    bits: [[u8; 2]; 4],
+    /// Row by row from the bottom, as the dots count (`blit` turns them over).
     cells: Vec<Cell>,
 }
 
@@ -164,25 +166,25 @@ impl Canvas {
         let (dx, dy) = dots(marker);
         Canvas {
             width: plot.width,
-            height: plot.height,
             dx,
             wide: u32::from(plot.width) * u32::from(dx),
             high: u32::from(plot.height) * u32::from(dy),
             col_shift: u32::from(dx).trailing_zeros(),
             row_shift: u32::from(dy).trailing_zeros(),
+            bits: if marker == MarkerStyle::Braille {
+                [BRAILLE[3], BRAILLE[2], BRAILLE[1], BRAILLE[0]]
+            } else {
+                [[1; 2]; 4]
+            },
             cells: vec![Cell::default(); usize::from(plot.width) * usize::from(plot.height)],
         }
-    }
-
-    fn braille(&self) -> bool {
-        self.col_shift == 1 && self.row_shift == 2
     }
 
     /// The index in `cells` of the cell of dot (x, y) on the canvas.
     #[inline]
     fn index(&self, x: u32, y: u32) -> usize {
         let col = (x >> self.col_shift) as usize;
-        let row = usize::from(self.height) - 1 - (y >> self.row_shift) as usize;
+        let row = (y >> self.row_shift) as usize;
         row * usize::from(self.width) + col
     }
 
@@ -212,11 +214,7 @@ impl Canvas {
     /// Sets dot (x, y), which the caller knows lies on the canvas.
     #[inline]
     fn set_on_canvas(&mut self, x: u32, y: u32, ink: Ink, bold: bool) {
-        let bits = if self.braille() {
-            BRAILLE[3 - (y & 3) as usize][(x & 1) as usize]
-        } else {
-            1
-        };
+        let bits = self.bits[(y & 3) as usize][(x & 1) as usize];
         let i = self.index(x, y);
         if let Some(cell) = self.cells.get_mut(i) {
             cell.dots |= bits;
@@ -508,7 +506,8 @@ fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: Mar
             style
         }
     };
-    for (y, row) in (plot.y..).zip(canvas.cells.chunks(usize::from(plot.width).max(1))) {
+    let rows = canvas.cells.chunks(usize::from(plot.width).max(1));
+    for (y, row) in (plot.y..).zip(rows.rev()) {
         for (x, cell) in (plot.x..).zip(row) {
             if let Some((glyph, ink, bold)) = cell.glyph {
                 buf[(x, y)]
