@@ -276,6 +276,7 @@ fn solve_with<L: ForceLaw>(
                         .map_or(scales.t_contact / 1000.0, |dt| dt / scales.t),
                 ),
                 max_steps: opts.max_steps,
+                known: None,
             };
             let run = phases::run(law, scales, &ro)?;
             Ok(integrated_solution(law, any, scales, run, method))

@@ -34,6 +34,18 @@ pub(crate) struct RunOptions {
     /// Fixed step in units of x_e/v₀ (fixed-step methods only).
     pub dt: Option<f64>,
     pub max_steps: usize,
+    /// Where the phases end when that is known already (an exact solution's curves): then they
+    /// run to these times instead of watching for the events.
+    pub known: Option<KnownEnds>,
+}
+
+/// The ends of an impact known before it is integrated: scaled times of maximum compression and
+/// of the end of contact, and how contact ends.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct KnownEnds {
+    pub t_turn: f64,
+    pub t_end: f64,
+    pub end: End,
 }
 
 /// Both phases of one integrated impact.
@@ -99,7 +111,9 @@ fn impact_error(method: Method, err: OdeError, t_ref: f64, growth: Option<f64>) 
 
 /// Integrates loading until ẋ = 0, then unloading until x = 0 or the law's force reaches 0
 /// (whichever the law's rules watch), within [`TIME_LIMIT_CONTACTS`] elastic contact times and
-/// `max_steps` accepted plus rejected steps in all.
+/// `max_steps` accepted plus rejected steps in all. With [`RunOptions::known`] ends, each phase
+/// runs to its known end instead, watching no event (an exact solution's curves: the event
+/// landings, each step retaken until the event's time is found to rounding, were half their cost).
 pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<Run, ImpactError> {
     let t_limit = TIME_LIMIT_CONTACTS * sc.t_contact;
     let no_separation = ImpactError::NoSeparation {
@@ -134,14 +148,20 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         },
     ];
     let mut sys = ImpactSystem::new(law, Phase::Loading, *sc);
+    // Maximum compression is watched for unless known (then its event is skipped); the
+    // breakpoint where there is one, after it.
+    let skip = usize::from(ro.known.is_some());
     let events = if breakpoint.is_some() {
-        &loading_events[..]
+        &loading_events[skip..]
     } else {
-        &loading_events[..1]
+        &loading_events[skip..1]
     };
+    if let Some(known) = ro.known {
+        opts.t_max = known.t_turn;
+    }
     let mut loading = ode::integrate(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
         .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
-    if loading.stop == (Stop::Event { index: 1 }) {
+    if breakpoint.is_some() && loading.stop == (Stop::Event { index: 1 - skip }) {
         let spent = loading.stats.steps + loading.stats.rejected_steps;
         let exhausted = |steps: usize, t: f64| ImpactError::Integration {
             method: ro.method,
@@ -162,7 +182,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             &mut sys,
             loading.t,
             loading.y,
-            &loading_events[..1],
+            &loading_events[skip..1],
             &rest,
         )
         .map_err(|e| match e {
@@ -178,7 +198,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         loading.y = tail.y;
         loading.stop = tail.stop;
     }
-    if loading.stop == Stop::TimeLimit {
+    if loading.stop == Stop::TimeLimit && ro.known.is_none() {
         return Err(no_separation);
     }
     let mut force_evals = sys.force_evals;
@@ -237,10 +257,13 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             direction: Direction::Falling,
         },
     ];
-    let unloading_events = if watch_tension {
-        &all_events[..]
-    } else {
-        &all_events[..1]
+    let unloading_events = match ro.known {
+        Some(known) => {
+            opts.t_max = known.t_end;
+            &all_events[..0]
+        }
+        None if watch_tension => &all_events[..],
+        None => &all_events[..1],
     };
     let mut sys = ImpactSystem::new(law, Phase::Unloading, usc);
     sys.x_offset = offset;
@@ -259,6 +282,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     force_evals += sys.force_evals;
     stats += unloading.stats;
     let end = match unloading.stop {
+        Stop::TimeLimit if let Some(known) = ro.known => known.end,
         Stop::TimeLimit => return Err(no_separation),
         Stop::Event { index: 0 } => End::Approach,
         Stop::Event { .. } => End::Tension,
