@@ -263,6 +263,23 @@ impl Canvas {
         }
     }
 
+    /// [`Canvas::line_dots`] between two dots the caller knows lie on the canvas, so that every
+    /// dot of the walk does too (it stays in their bounding box): no dot is checked.
+    fn line_on_canvas(&mut self, a: (u32, u32), b: (u32, u32), ink: Ink, bold: bool) {
+        let (dx, dy) = (
+            i64::from(b.0) - i64::from(a.0),
+            i64::from(b.1) - i64::from(a.1),
+        );
+        let steps = dx.abs().max(dy.abs());
+        let span = 2 * steps;
+        let (mut at, mut rest) = ((i64::from(a.0), i64::from(a.1)), (steps, steps));
+        for _ in 0..steps {
+            (at.0, rest.0) = dda_step(at.0, rest.0, 2 * dx, span);
+            (at.1, rest.1) = dda_step(at.1, rest.1, 2 * dy, span);
+            self.set_on_canvas(at.0 as u32, at.1 as u32, ink, bold);
+        }
+    }
+
     fn glyph(&mut self, at: (f64, f64), glyph: char, ink: Ink, bold: bool) {
         if at.0 < -0.5 || at.1 < -0.5 {
             return;
@@ -335,9 +352,9 @@ struct Drawn {
 /// one dot sets nothing new when that dot is known to be set (a clipped segment may end beside
 /// it). `spacing`: dots between the glyphs set along it, where colour cannot tell curves apart.
 ///
-/// Most points of a curve sampled about a dot apart lie on the canvas and one dot or none from
-/// the last: those take a short path (no finiteness tests, which the bounds test implies; no
-/// line walk) that sets the same dots as the general one below it.
+/// Most points of a curve lie on the canvas, as did the last: those take a short path (no
+/// finiteness tests, which the bounds test implies; a neighbouring dot set directly, a longer line
+/// walked without a check a dot) that sets the same dots as the general one below it.
 fn paint_run(
     canvas: &mut Canvas,
     map: &DotMap,
@@ -364,12 +381,21 @@ fn paint_run(
                 ..
             }) = last
                 && plain
-                && (b.0 - a.0).abs() <= 1
-                && (b.1 - a.1).abs() <= 1
             {
-                // The same dot, set already, or a neighbour: a line of one step.
-                if a != b {
-                    canvas.set_on_canvas(b.0 as u32, b.1 as u32, ink, bold);
+                let b_on = (b.0 as u32, b.1 as u32);
+                if (b.0 - a.0).abs() <= 1 && (b.1 - a.1).abs() <= 1 {
+                    // The same dot, set already, or a neighbour: a line of one step.
+                    if a != b {
+                        canvas.set_on_canvas(b_on.0, b_on.1, ink, bold);
+                    }
+                } else if let (Ok(x), Ok(y)) = (u32::try_from(a.0), u32::try_from(a.1))
+                    && x < canvas.wide
+                    && y < canvas.high
+                {
+                    // Both ends on the canvas: the line between them is too.
+                    canvas.line_on_canvas((x, y), b_on, ink, bold);
+                } else {
+                    canvas.line_dots(a, b, ink, bold);
                 }
                 last = Some(Drawn {
                     at: q,
@@ -969,7 +995,8 @@ mod tests {
     }
 
     /// Dense wandering curves of two inks, in and out of the plot on every side (some points
-    /// NaN): the painter's cells equal the segment-by-segment painting's.
+    /// NaN), steps of one dot to several: the painter's cells equal the segment-by-segment
+    /// painting's.
     #[test]
     fn skipping_segments_within_a_dot_changes_no_cell() {
         let mut seed = 0x2545_f491_4f6c_dd1du64;
@@ -989,10 +1016,12 @@ mod tests {
             c.series.insert(0, other);
             for series in &mut c.series {
                 let (mut x, mut y) = (next() * 10.0, next() * 400.0);
+                // Steps of up to 2, 4, 6 or 8 dots, so lines of several dots are walked too.
+                let reach = f64::from(1 + trial % 4);
                 let run = (0..600)
                     .map(|i| {
-                        x += (next() - 0.5) * 0.4;
-                        y += (next() - 0.5) * 30.0;
+                        x += (next() - 0.5) * 0.4 * reach;
+                        y += (next() - 0.5) * 30.0 * reach;
                         if i % 97 == 13 { (f64::NAN, y) } else { (x, y) }
                     })
                     .collect();
