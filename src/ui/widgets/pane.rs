@@ -11,7 +11,7 @@ use ratatui::widgets::{Block, Borders, Widget};
 
 use crate::ui::style::{Role, Theme};
 
-use super::text::{patch_style, render_line};
+use super::text::{line_width, patch_style, render_line};
 
 /// A pane's frame and its titles: one at the top left, and optionally one at the bottom left.
 #[derive(Debug, Clone)]
@@ -95,7 +95,7 @@ impl<'a> Pane<'a> {
         if room == 0 {
             return;
         }
-        let width = title.width().min(usize::from(u16::MAX)) as u16;
+        let width = line_width(title).min(usize::from(u16::MAX)) as u16;
         let title_area = Rect::new(area.x.saturating_add(side), y, width.min(room), 1);
         patch_style(buf, title_area, self.title_style);
         render_line(buf, title_area, title);

@@ -83,6 +83,21 @@ fn set_ascii(cell: &mut Cell, b: u8) {
     }
 }
 
+/// The columns `line` takes, as `Line::width` measures them, counting the characters of a plain
+/// span (each takes one) rather than looking up each one's width.
+pub fn line_width(line: &Line) -> usize {
+    line.spans
+        .iter()
+        .map(|s| {
+            if all_plain(&s.content) {
+                s.content.chars().count()
+            } else {
+                s.width()
+            }
+        })
+        .sum()
+}
+
 /// What `buf.set_style(area, style)` does (each cell of `area` within the buffer patched with
 /// `style`), a row slice at a time rather than a checked index a cell; nothing for the default
 /// style, which patches nothing.
@@ -174,7 +189,7 @@ pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
 /// the line drawn against the right edge.
 pub fn render_right(buf: &mut Buffer, area: Rect, line: Line) {
     let room = area.intersection(buf.area);
-    let width = line.width();
+    let width = line_width(&line);
     let plain = line.style == Style::default() && line.spans.iter().all(|s| all_plain(&s.content));
     match u16::try_from(width) {
         Ok(width) if plain && width <= room.width && room.height > 0 => {
@@ -239,6 +254,17 @@ mod tests {
             '\u{ad}', '\u{301}', '\u{200b}', '中', '\u{fe0f}', '\u{25fd}', '\n',
         ] {
             assert!(!is_plain(c), "{c:?}");
+        }
+    }
+
+    /// All the plain characters in one text, and the test lines: as wide as ratatui measures.
+    #[test]
+    fn line_width_is_what_ratatui_measures() {
+        let all: String = plain_chars().into_iter().collect();
+        let line = Line::from(all.as_str());
+        assert_eq!(line_width(&line), line.width());
+        for line in lines() {
+            assert_eq!(line_width(&line), line.width(), "{line:?}");
         }
     }
 
