@@ -86,7 +86,7 @@ pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> Strin
         return non_finite(value);
     }
     if value == 0.0 {
-        return join("0", "", unit);
+        return with_unit("0".to_string(), "", unit);
     }
     let digits = digits.max(1);
     // The exponent of the rounded value, so that a carry (999.96 → 1.000e3) moves the prefix.
@@ -96,10 +96,11 @@ pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> Strin
     let index = (engineering - SMALLEST_EXPONENT) / 3;
     let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
         Some(prefix) => prefix,
-        None => return join(&rounded.scientific(zeros), "", unit),
+        None => return with_unit(rounded.scientific(zeros), "", unit),
     };
-    let number = rounded.positional(exponent - engineering);
-    join(trim(&number, zeros), prefix.symbol, unit)
+    let mut number = rounded.positional(exponent - engineering);
+    trim_in_place(&mut number, zeros);
+    with_unit(number, prefix.symbol, unit)
 }
 
 /// `value` with `digits` significant digits: plain for 1e-4 ≤ |value| < 1e7 (0.6123, 32.67,
@@ -295,8 +296,9 @@ impl Rounded {
             push_integer(&mut out, value.round_ties_even() as i64);
             return out;
         }
-        let number = self.positional(self.exponent);
-        trim(&number, zeros).to_string()
+        let mut number = self.positional(self.exponent);
+        trim_in_place(&mut number, zeros);
+        number
     }
 
     /// The digits written with `exponent` as the first digit's decimal exponent, as many
@@ -387,12 +389,21 @@ fn trim(number: &str, zeros: Zeros) -> &str {
     }
 }
 
-fn join(number: &str, prefix: &str, unit: &str) -> String {
-    if prefix.is_empty() && unit.is_empty() {
-        number.to_string()
-    } else {
-        format!("{number} {prefix}{unit}")
+/// `number` without the trailing zeros [`trim`] drops.
+fn trim_in_place(number: &mut String, zeros: Zeros) {
+    let kept = trim(number, zeros).len();
+    number.truncate(kept);
+}
+
+/// `number prefix+unit` (`23.88 µm`), or the number alone when both are empty.
+pub fn with_unit(mut number: String, prefix: &str, unit: &str) -> String {
+    if !(prefix.is_empty() && unit.is_empty()) {
+        number.reserve(1 + prefix.len() + unit.len());
+        number.push(' ');
+        number.push_str(prefix);
+        number.push_str(unit);
     }
+    number
 }
 
 #[cfg(test)]
@@ -487,7 +498,7 @@ mod tests {
     /// The formatting as it was before [`Rounded`]: the value formatted in scientific notation,
     /// parsed back, and formatted again plain. Slower, and the oracle of the property test below.
     mod reference {
-        use super::super::{ENGINEERING, PLAIN, SMALLEST_EXPONENT, Zeros, join, trim};
+        use super::super::{ENGINEERING, PLAIN, SMALLEST_EXPONENT, Zeros, trim, with_unit};
 
         pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> String {
             let (mantissa, exponent) = rounded(value, digits);
@@ -495,12 +506,12 @@ mod tests {
             let index = (engineering - SMALLEST_EXPONENT) / 3;
             let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
                 Some(prefix) => prefix,
-                None => return join(&scientific(value, digits, zeros), "", unit),
+                None => return with_unit(scientific(value, digits, zeros), "", unit),
             };
             let shift = exponent - engineering;
             let decimals = (digits as i32 - 1 - shift).max(0) as usize;
             let number = format!("{:.decimals$}", mantissa * 10f64.powi(shift));
-            join(trim(&number, zeros), prefix.symbol, unit)
+            with_unit(trim(&number, zeros).to_string(), prefix.symbol, unit)
         }
 
         pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
