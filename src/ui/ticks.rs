@@ -154,7 +154,7 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
             }
         })
         .collect();
-    let mut labels: Vec<String> = values.iter().map(|v| format!("{v:.decimals$}")).collect();
+    let mut labels: Vec<String> = values.iter().map(|&v| format::fixed(v, decimals)).collect();
     let wrong = |(label, value): (&String, &f64)| {
         label.chars().count() > PLAIN_LABEL
             || label
