@@ -86,7 +86,7 @@ pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> Strin
         return non_finite(value);
     }
     if value == 0.0 {
-        return join("0", "", unit);
+        return with_unit("0".to_string(), "", unit);
     }
     let digits = digits.max(1);
     // The exponent of the rounded value, so that a carry (999.96 → 1.000e3) moves the prefix.
@@ -96,10 +96,11 @@ pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> Strin
     let index = (engineering - SMALLEST_EXPONENT) / 3;
     let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
         Some(prefix) => prefix,
-        None => return join(&rounded.scientific(zeros), "", unit),
+        None => return with_unit(rounded.scientific(zeros), "", unit),
     };
-    let number = rounded.positional(exponent - engineering);
-    join(trim(&number, zeros), prefix.symbol, unit)
+    let mut number = rounded.positional(exponent - engineering);
+    trim_in_place(&mut number, zeros);
+    with_unit(number, prefix.symbol, unit)
 }
 
 /// `value` with `digits` significant digits: plain for 1e-4 ≤ |value| < 1e7 (0.6123, 32.67,
@@ -140,6 +141,24 @@ pub fn round_trip(value: f64) -> String {
     }
 }
 
+/// `value` with `decimals` digits after the point, exactly as `format!("{value:.decimals$}")`
+/// writes it (the double's exact value rounded, ties to even): from its shortest digits rounded
+/// where that is its rounding (as [`Rounded::new`] argues, up to 15 digits kept), else by the
+/// standard formatter (zeros, subnormals, values rounding to nothing, ties, more digits).
+pub fn fixed(value: f64, decimals: usize) -> String {
+    if value.is_finite() && value.abs() >= f64::MIN_POSITIVE {
+        let shortest = Shortest::of(value);
+        // The significant digits the decimals keep.
+        let kept = i64::from(shortest.exponent) + 1 + decimals as i64;
+        if let Ok(kept @ 1..=SHORTEST_EXACT_UP_TO) = usize::try_from(kept)
+            && let Some(rounded) = shortest.rounded(kept)
+        {
+            return rounded.with_decimals(decimals);
+        }
+    }
+    format!("{value:.decimals$}")
+}
+
 /// `—` for a NaN, `∞` or `−∞` for an infinity.
 fn non_finite(value: f64) -> String {
     if value.is_nan() {
@@ -175,6 +194,54 @@ pub struct Rounded {
     pub exponent: i32,
 }
 
+/// Żmij's shortest round-trip digits of a normal non-zero double, from which [`Rounded`]s are
+/// made.
+struct Shortest {
+    digits: [u8; MAX_DIGITS],
+    len: usize,
+    negative: bool,
+    /// The decimal exponent of the first digit.
+    exponent: i32,
+}
+
+impl Shortest {
+    fn of(value: f64) -> Self {
+        let mut digits = [b'0'; MAX_DIGITS];
+        let (negative, len, exponent) = shortest_digits(value, &mut digits);
+        Self {
+            digits,
+            len,
+            negative,
+            exponent,
+        }
+    }
+
+    /// These digits rounded half up to `wanted` (1 to [`SHORTEST_EXACT_UP_TO`]) significant
+    /// digits, which is the double's own rounding (see [`Rounded::new`]); `None` where it may not
+    /// be: the digit after the cut is the last and a 5.
+    fn rounded(&self, wanted: usize) -> Option<Rounded> {
+        let mut rounded = Rounded {
+            digits: [b'0'; MAX_DIGITS],
+            len: wanted,
+            negative: self.negative,
+            exponent: self.exponent,
+        };
+        if self.len <= wanted {
+            rounded.digits[..self.len].copy_from_slice(&self.digits[..self.len]);
+            return Some(rounded);
+        }
+        let next = self.digits[wanted];
+        if self.len == wanted + 1 && next == b'5' {
+            return None;
+        }
+        rounded.digits[..wanted].copy_from_slice(&self.digits[..wanted]);
+        if next >= b'5' {
+            rounded.round_up();
+        }
+        Some(rounded)
+    }
+}
+
 impl Rounded {
     /// `value` (finite, non-zero) rounded to `digits` significant digits (at least one, at most
     /// [`MAX_DIGITS`]).
@@ -192,27 +259,10 @@ impl Rounded {
         if wanted > SHORTEST_EXACT_UP_TO || value.abs() < f64::MIN_POSITIVE {
             return Self::exact(value, wanted);
         }
-        let mut shortest = [b'0'; MAX_DIGITS];
-        let (negative, len, exponent) = shortest_digits(value, &mut shortest);
-        let mut rounded = Self {
-            digits: [b'0'; MAX_DIGITS],
-            len: wanted,
-            negative,
-            exponent,
-        };
-        if len <= wanted {
-            rounded.digits[..len].copy_from_slice(&shortest[..len]);
-            return rounded;
-        }
-        let next = shortest[wanted];
-        if len == wanted + 1 && next == b'5' {
-            return Self::exact(value, wanted);
-        }
-        rounded.digits[..wanted].copy_from_slice(&shortest[..wanted]);
-        if next >= b'5' {
-            rounded.round_up();
-        }
-        rounded
+        let shortest = Shortest::of(value);
+        shortest
+            .rounded(wanted)
+            .unwrap_or_else(|| Self::exact(value, wanted))
     }
 
     /// The standard formatter's exact rounding, written on the stack.
@@ -261,6 +311,33 @@ impl Rounded {
         &self.digits[..self.len]
     }
 
+    /// The digits written with exactly `decimals` digits after the point (none and no point for
+    /// none), zeros filling in where the digits end or start after it.
+    fn with_decimals(&self, decimals: usize) -> String {
+        let digits = self.digits();
+        // The digit at place 10^p, counting from the first at 10^exponent.
+        let digit = |p: i32| {
+            usize::try_from(self.exponent - p)
+                .ok()
+                .and_then(|i| digits.get(i))
+                .map_or('0', |&d| char::from(d))
+        };
+        let mut out = String::with_capacity(self.exponent.max(0) as usize + decimals + 3);
+        if self.negative {
+            out.push('-');
+        }
+        for p in (0..=self.exponent.max(0)).rev() {
+            out.push(digit(p));
+        }
+        if decimals > 0 {
+            out.push('.');
+            for p in 1..=decimals as i32 {
+                out.push(digit(-p));
+            }
+        }
+        out
+    }
+
     /// Scientific notation: `1.465e10`, or `1.5e-12` with the mantissa's trailing zeros trimmed.
     pub fn scientific(&self, zeros: Zeros) -> String {
         let digits = self.digits();
@@ -295,8 +372,9 @@ impl Rounded {
             push_integer(&mut out, value.round_ties_even() as i64);
             return out;
         }
-        let number = self.positional(self.exponent);
-        trim(&number, zeros).to_string()
+        let mut number = self.positional(self.exponent);
+        trim_in_place(&mut number, zeros);
+        number
     }
 
     /// The digits written with `exponent` as the first digit's decimal exponent, as many
@@ -387,12 +465,21 @@ fn trim(number: &str, zeros: Zeros) -> &str {
     }
 }
 
-fn join(number: &str, prefix: &str, unit: &str) -> String {
-    if prefix.is_empty() && unit.is_empty() {
-        number.to_string()
-    } else {
-        format!("{number} {prefix}{unit}")
+/// `number` without the trailing zeros [`trim`] drops.
+fn trim_in_place(number: &mut String, zeros: Zeros) {
+    let kept = trim(number, zeros).len();
+    number.truncate(kept);
+}
+
+/// `number prefix+unit` (`23.88 µm`), or the number alone when both are empty.
+pub fn with_unit(mut number: String, prefix: &str, unit: &str) -> String {
+    if !(prefix.is_empty() && unit.is_empty()) {
+        number.reserve(1 + prefix.len() + unit.len());
+        number.push(' ');
+        number.push_str(prefix);
+        number.push_str(unit);
     }
+    number
 }
 
 #[cfg(test)]
@@ -487,7 +574,7 @@ mod tests {
     /// The formatting as it was before [`Rounded`]: the value formatted in scientific notation,
     /// parsed back, and formatted again plain. Slower, and the oracle of the property test below.
     mod reference {
-        use super::super::{ENGINEERING, PLAIN, SMALLEST_EXPONENT, Zeros, join, trim};
+        use super::super::{ENGINEERING, PLAIN, SMALLEST_EXPONENT, Zeros, trim, with_unit};
 
         pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> String {
             let (mantissa, exponent) = rounded(value, digits);
@@ -495,12 +582,12 @@ mod tests {
             let index = (engineering - SMALLEST_EXPONENT) / 3;
             let prefix = match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
                 Some(prefix) => prefix,
-                None => return join(&scientific(value, digits, zeros), "", unit),
+                None => return with_unit(scientific(value, digits, zeros), "", unit),
             };
             let shift = exponent - engineering;
             let decimals = (digits as i32 - 1 - shift).max(0) as usize;
             let number = format!("{:.decimals$}", mantissa * 10f64.powi(shift));
-            join(trim(&number, zeros), prefix.symbol, unit)
+            with_unit(trim(&number, zeros).to_string(), prefix.symbol, unit)
         }
 
         pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
@@ -526,6 +613,34 @@ mod tests {
             let text = format!("{:.*e}", digits - 1, value);
             let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
             (mantissa.parse().unwrap(), exponent.parse().unwrap())
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig { cases: 4000, ..Default::default() })]
+
+        /// Doubles from their bits, tick values as a chart computes them ((first + i)·step, with
+        /// their floating-point error), decimal midpoints, values near a carry and subnormals, at
+        /// 0 to 20 decimals: what `format!("{v:.decimals$}")` writes.
+        #[test]
+        fn fixed_writes_what_the_formatter_writes(
+            bits in proptest::prelude::any::<u64>(),
+            kind in 0u8..5,
+            decimals in 0usize..21,
+        ) {
+            let scale = 10f64.powi((bits % 30) as i32 - 15);
+            let value = match kind {
+                1 => {
+                    let step = [1.0, 2.0, 2.5, 5.0][(bits >> 8) as usize % 4] * scale;
+                    (((bits >> 16) % 200) as f64 - 100.0) * step
+                }
+                2 => (((bits >> 8) % 100_000) as f64 + 0.5) * scale,
+                3 => (1.0 - 1e-6 * ((bits >> 8) % 100) as f64) * scale,
+                4 => f64::from_bits(bits % (1 << 52)),
+                _ => f64::from_bits(bits),
+            };
+            proptest::prop_assume!(value.is_finite());
+            proptest::prop_assert_eq!(fixed(value, decimals), format!("{value:.decimals$}"));
         }
     }
 

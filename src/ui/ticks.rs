@@ -164,7 +164,7 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
         .map(|&value| {
             let label = whole.then(|| whole_label(value, decimals)).flatten();
             let label = label.unwrap_or_else(|| {
-                let label = format!("{value:.decimals$}");
+                let label = format::fixed(value, decimals);
                 wrong |= label
                     .parse::<f64>()
                     .is_ok_and(|shown| (shown - value).abs() > step * 1e-6);

@@ -209,7 +209,7 @@ pub fn fit(value: f64, digits: usize, width: usize) -> String {
 /// `value_si` shown in `unit` with a fixed `prefix`, e.g. `10 mm`.
 pub fn with_prefix(value_si: f64, unit: Unit, prefix: Prefix, digits: usize) -> String {
     let number = sig(value_si / (prefix.factor * unit.si_per_unit), digits);
-    join(&number, prefix.symbol, unit.symbol)
+    format::with_unit(number, prefix.symbol, unit.symbol)
 }
 
 /// The engineering prefix that brings `magnitude_si` (in SI base units) into [1, 1000) of `unit`.
@@ -235,15 +235,7 @@ pub fn engineering(value_si: f64, unit: Unit, digits: usize) -> String {
     } else if unit.prefixable {
         format::engineering(value, unit.symbol, digits, Zeros::Trim)
     } else {
-        join(&sig(value, digits), "", unit.symbol)
-    }
-}
-
-fn join(number: &str, prefix: &str, symbol: &str) -> String {
-    if prefix.is_empty() && symbol.is_empty() {
-        number.to_string()
-    } else {
-        format!("{number} {prefix}{symbol}")
+        format::with_unit(sig(value, digits), "", unit.symbol)
     }
 }
 

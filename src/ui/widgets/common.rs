@@ -88,6 +88,14 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// Appends `text` left-aligned in `width` characters, as `{text:<width$}` writes it (padded with
+/// spaces, never cut).
+pub fn push_padded(out: &mut String, text: &str, width: usize) {
+    out.push_str(text);
+    let pad = width.saturating_sub(text.chars().count());
+    out.extend(std::iter::repeat_n(' ', pad));
+}
+
 /// Spans laid out in lines of at most `width` columns, breaking only between items; items are
 /// separated by `gap` on a line. Lines past `max_lines` are dropped.
 pub fn flow<'a>(
@@ -228,6 +236,17 @@ mod tests {
             let mut theirs = Buffer::empty(buf_area);
             Paragraph::new(lines.clone()).render(area, &mut theirs);
             assert_eq!(ours, theirs, "{area:?}");
+        }
+    }
+
+    #[test]
+    fn padding_is_what_the_formatter_pads() {
+        for text in ["", "v₀", "mass", "Hunt–Crossley (eq 19)"] {
+            for width in 0..25 {
+                let mut ours = String::from(">");
+                push_padded(&mut ours, text, width);
+                assert_eq!(ours, format!(">{text:<width$}"), "{text} in {width}");
+            }
         }
     }
 

@@ -14,7 +14,7 @@ use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
 use crate::ui::style::{Role, Theme, sample};
 
-use super::common::{NameForm, draw_lines, pane, span};
+use super::common::{NameForm, draw_lines, pane, push_padded, span};
 
 /// One row of the list: a family heading or a model.
 enum Row {
@@ -142,12 +142,13 @@ fn model_line(
         name_style = name_style.add_modifier(Modifier::BOLD);
     }
     let busy = if app.solutions.is_pending(model) {
-        "…"
+        " …"
     } else {
-        " "
+        "  "
     };
     let fit = if fits.contains(&model) { "✓" } else { " " };
-    let padded = format!("{name:<name_width$}");
+    let mut padded = String::with_capacity(name.len() + name_width);
+    push_padded(&mut padded, name, name_width);
     let mut line = Line::from(vec![
         span(focus, theme.style(Role::Key)),
         span(check, theme.style(Role::Normal)),
@@ -155,7 +156,7 @@ fn model_line(
         span(sample(model_glyph(model)), theme.model_style(model)),
         span(" ", theme.style(Role::Normal)),
         span(padded, name_style),
-        span(format!(" {busy}"), theme.style(Role::Warning)),
+        span(busy, theme.style(Role::Warning)),
         span(fit, theme.style(Role::Good)),
     ]);
     if app.cursor == Cursor::Model(model) {

@@ -3,7 +3,7 @@
 //! compares them), without the `Block`'s restyling of every cell of its area with its default
 //! style, a no-op that cost more than the borders themselves (a tenth of the explorer's frame).
 
-use ratatui::buffer::Buffer;
+use ratatui::buffer::{Buffer, Cell};
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Line;
@@ -11,7 +11,7 @@ use ratatui::widgets::{Block, Borders, Widget};
 
 use crate::ui::style::{Role, Theme};
 
-use super::text::{patch_style, render_line};
+use super::text::{line_width, patch_style, render_line};
 
 /// A pane's frame and its titles: one at the top left, and optionally one at the bottom left.
 #[derive(Debug, Clone)]
@@ -79,12 +79,14 @@ impl<'a> Pane<'a> {
         inner
     }
 
-    /// Sets the border cell (x, y), which lies in the buffer.
-    fn border(&self, buf: &mut Buffer, (x, y): (u16, u16), symbol: &str) {
-        let index =
-            usize::from(y - buf.area.y) * usize::from(buf.area.width) + usize::from(x - buf.area.x);
-        if let Some(cell) = buf.content.get_mut(index) {
-            cell.set_symbol(symbol).set_style(self.border_style);
+    /// Sets `symbol` in the border cells `cells`, patched with the border style.
+    fn border<'c>(&self, cells: impl Iterator<Item = &'c mut Cell>, symbol: &str) {
+        let patch = self.border_style != Style::default();
+        for cell in cells {
+            cell.set_symbol(symbol);
+            if patch {
+                cell.set_style(self.border_style);
+            }
         }
     }
 
@@ -95,7 +97,7 @@ impl<'a> Pane<'a> {
         if room == 0 {
             return;
         }
-        let width = title.width().min(usize::from(u16::MAX)) as u16;
+        let width = line_width(title).min(usize::from(u16::MAX)) as u16;
         let title_area = Rect::new(area.x.saturating_add(side), y, width.min(room), 1);
         patch_style(buf, title_area, self.title_style);
         render_line(buf, title_area, title);
@@ -115,27 +117,30 @@ impl Widget for &Pane<'_> {
             return;
         }
         let (left, top) = (area.x, area.y);
-        let (right, bottom) = (area.right() - 1, area.bottom() - 1);
-        // Sides, then corners over them, as `Block` draws them.
+        let bottom = area.bottom() - 1;
+        let stride = usize::from(buf.area.width);
+        let at =
+            |x: u16, y: u16| usize::from(y - buf.area.y) * stride + usize::from(x - buf.area.x);
+        let (top_left, bottom_left) = (at(left, top), at(left, bottom));
+        let (columns, rows) = (usize::from(area.width), usize::from(area.height));
+        let cells = &mut buf.content;
+        // Sides, then the top and bottom rows over them, then the corners, as `Block` draws them.
         if self.roomy {
-            for y in top..=bottom {
-                self.border(buf, (left, y), "│");
-            }
+            self.border(cells[top_left..].iter_mut().step_by(stride).take(rows), "│");
         }
-        for x in left..=right {
-            self.border(buf, (x, top), "─");
-        }
+        self.border(cells[top_left..top_left + columns].iter_mut(), "─");
         if self.roomy {
-            for y in top..=bottom {
-                self.border(buf, (right, y), "│");
-            }
-            for x in left..=right {
-                self.border(buf, (x, bottom), "─");
-            }
-            self.border(buf, (right, bottom), "┘");
-            self.border(buf, (right, top), "┐");
-            self.border(buf, (left, bottom), "└");
-            self.border(buf, (left, top), "┌");
+            let top_right = top_left + columns - 1;
+            self.border(
+                cells[top_right..].iter_mut().step_by(stride).take(rows),
+                "│",
+            );
+            self.border(cells[bottom_left..bottom_left + columns].iter_mut(), "─");
+            let bottom_right = bottom_left + columns - 1;
+            self.border(std::iter::once(&mut cells[bottom_right]), "┘");
+            self.border(std::iter::once(&mut cells[top_right]), "┐");
+            self.border(std::iter::once(&mut cells[bottom_left]), "└");
+            self.border(std::iter::once(&mut cells[top_left]), "┌");
         }
         self.title_on(buf, area, top, &self.title);
         if let Some(title) = &self.bottom {

@@ -13,7 +13,7 @@ use crate::ui::units;
 use crate::ui::views::{self, Hints};
 
 use super::common::draw_lines;
-use super::text::render_right;
+use super::text::{line_width, render_right};
 
 /// Key hints of the modes other than normal: (key, action).
 fn mode_hints(mode: &Mode) -> Hints {
@@ -153,7 +153,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         left.push(Span::styled(" · invalid scene", theme.style(Role::Error)));
     }
     let left = Line::from(left);
-    let left_width = (left.width() as u16).min(area.width);
+    let left_width = (line_width(&left) as u16).min(area.width);
     let room = usize::from(area.width.saturating_sub(left_width + 1));
     let right: Vec<Span> = match &app.message {
         Some(message) => vec![Span::styled(

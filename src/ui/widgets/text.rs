@@ -38,13 +38,42 @@ fn printable_ascii(text: &str) -> bool {
     text.bytes().all(|b| matches!(b, b' '..=b'~'))
 }
 
-fn all_plain(text: &str) -> bool {
-    printable_ascii(text) || text.chars().all(is_plain)
+/// How a text can be set a character a cell.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    /// Printable ASCII only: set a byte at a time.
+    Ascii,
+    /// Plain characters, some beyond ASCII.
+    Plain,
+    /// Some character is not plain: ratatui's path.
+    Other,
 }
 
-/// Sets the plain `text` from (x, y) into at most `width` cells (and no further than the
-/// buffer's right edge), each patched with `style`; returns the column after the last.
-fn put_plain(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style: Style) -> u16 {
+/// The kind of `text`: its ASCII start checked a byte at a time, the rest (if any) a character
+/// at a time.
+fn kind(text: &str) -> Kind {
+    match text.bytes().position(|b| !matches!(b, b' '..=b'~')) {
+        None => Kind::Ascii,
+        // The bytes before are ASCII, so a character starts here.
+        Some(i) if text[i..].chars().all(is_plain) => Kind::Plain,
+        Some(_) => Kind::Other,
+    }
+}
+
+fn all_plain(text: &str) -> bool {
+    kind(text) != Kind::Other
+}
+
+/// Sets the plain `text` (all printable ASCII if `ascii`) from (x, y) into at most `width` cells
+/// (and no further than the buffer's right edge), each patched with `style`; returns the column
+/// after the last.
+fn put_plain(
+    buf: &mut Buffer,
+    (x, y): (u16, u16),
+    (text, ascii): (&str, bool),
+    width: u16,
+    style: Style,
+) -> u16 {
     let area = buf.area;
     let room = area.right().saturating_sub(x).min(width);
     if room == 0 || !area.contains((x, y).into()) {
@@ -52,11 +81,15 @@ fn put_plain(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style
     }
     let start = usize::from(y - area.y) * usize::from(area.width) + usize::from(x - area.x);
     let cells = buf.content[start..].iter_mut().take(usize::from(room));
+    // The default style patches nothing.
+    let patch = style != Style::default();
     let mut written = 0;
-    if printable_ascii(text) {
+    if ascii {
         for (cell, b) in cells.zip(text.bytes()) {
             set_ascii(cell, b);
-            cell.set_style(style);
+            if patch {
+                cell.set_style(style);
+            }
             written += 1;
         }
     } else {
@@ -67,7 +100,9 @@ fn put_plain(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, style
                     cell.set_char(c);
                 }
             }
-            cell.set_style(style);
+            if patch {
+                cell.set_style(style);
+            }
             written += 1;
         }
     }
@@ -81,6 +116,21 @@ fn set_ascii(cell: &mut Cell, b: u8) {
         let i = usize::from(b - b' ');
         cell.set_symbol(&PRINTABLE[i..=i]);
     }
+}
+
+/// The columns `line` takes, as `Line::width` measures them, counting the characters of a plain
+/// span (each takes one) rather than looking up each one's width.
+pub fn line_width(line: &Line) -> usize {
+    line.spans
+        .iter()
+        .map(|s| {
+            if all_plain(&s.content) {
+                s.content.chars().count()
+            } else {
+                s.width()
+            }
+        })
+        .sum()
 }
 
 /// What `buf.set_style(area, style)` does (each cell of `area` within the buffer patched with
@@ -110,8 +160,15 @@ pub fn put_text(buf: &mut Buffer, (x, y): (u16, u16), text: &str, width: u16, st
     if area.is_empty() {
         return;
     }
-    if all_plain(text) {
-        put_plain(buf, (area.x, area.y), text, area.width, style);
+    let kind = kind(text);
+    if kind != Kind::Other {
+        put_plain(
+            buf,
+            (area.x, area.y),
+            (text, kind == Kind::Ascii),
+            area.width,
+            style,
+        );
     } else {
         ratatui::text::Span::styled(text, style).render(area, buf);
     }
@@ -127,8 +184,15 @@ pub fn set_line(buf: &mut Buffer, x: u16, y: u16, line: &Line, max_width: u16) -
             break;
         }
         let style = line.style.patch(span.style);
-        let end = if all_plain(&span.content) {
-            put_plain(buf, (x, y), &span.content, remaining, style)
+        let kind = kind(&span.content);
+        let end = if kind != Kind::Other {
+            put_plain(
+                buf,
+                (x, y),
+                (&span.content, kind == Kind::Ascii),
+                remaining,
+                style,
+            )
         } else {
             buf.set_stringn(x, y, span.content.as_ref(), usize::from(remaining), style)
                 .0
@@ -160,7 +224,7 @@ pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
         put_plain(
             buf,
             (x, area.y),
-            &span.content,
+            (&span.content, printable_ascii(&span.content)),
             area.right() - x,
             span.style,
         );
@@ -174,7 +238,7 @@ pub fn render_line(buf: &mut Buffer, area: Rect, line: &Line) {
 /// the line drawn against the right edge.
 pub fn render_right(buf: &mut Buffer, area: Rect, line: Line) {
     let room = area.intersection(buf.area);
-    let width = line.width();
+    let width = line_width(&line);
     let plain = line.style == Style::default() && line.spans.iter().all(|s| all_plain(&s.content));
     match u16::try_from(width) {
         Ok(width) if plain && width <= room.width && room.height > 0 => {
@@ -240,6 +304,30 @@ mod tests {
         ] {
             assert!(!is_plain(c), "{c:?}");
         }
+    }
+
+    /// All the plain characters in one text, and the test lines: as wide as ratatui measures.
+    #[test]
+    fn line_width_is_what_ratatui_measures() {
+        let all: String = plain_chars().into_iter().collect();
+        let line = Line::from(all.as_str());
+        assert_eq!(line_width(&line), line.width());
+        for line in lines() {
+            assert_eq!(line_width(&line), line.width(), "{line:?}");
+        }
+    }
+
+    #[test]
+    fn a_text_is_ascii_plain_or_other() {
+        assert_eq!(kind(""), Kind::Ascii);
+        assert_eq!(kind("x_max 9.115 µm"), Kind::Plain);
+        assert_eq!(kind("─┐"), Kind::Plain);
+        assert_eq!(kind("Body 1 · sphere"), Kind::Plain);
+        assert_eq!(kind("steel"), Kind::Ascii);
+        assert_eq!(kind("e\u{301}"), Kind::Other);
+        assert_eq!(kind("µ 中"), Kind::Other);
+        assert_eq!(kind("tab\there"), Kind::Other);
+        assert_eq!(kind("del\u{7f}"), Kind::Other);
     }
 
     /// Each printable ASCII character's symbol is the character.

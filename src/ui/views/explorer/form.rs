@@ -8,7 +8,7 @@ use crate::model::scene_key::BodyIndex;
 use crate::ui::app::{App, Cursor, EditTarget, Mode};
 use crate::ui::field::{self, Field, Section};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{draw_lines, pane, span, wrap};
+use crate::ui::widgets::common::{draw_lines, pane, push_padded, span, wrap};
 
 /// Width of the label column.
 const LABEL_WIDTH: usize = 8;
@@ -232,7 +232,9 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
         let line = match row {
             Row::Note(text, role) => Line::from(span(text.clone(), theme.style(*role))),
             Row::Field(field) => {
-                let label = format!(" {:<w$}", field.label(), w = LABEL_WIDTH - 1);
+                let mut label = String::with_capacity(LABEL_WIDTH + field.label().len());
+                label.push(' ');
+                push_padded(&mut label, field.label(), LABEL_WIDTH - 1);
                 let under_cursor = app.cursor == Cursor::Field(*field);
                 let (value, value_role) = match &app.mode {
                     Mode::Editing(editor) if editor.target == EditTarget::Field(*field) => {

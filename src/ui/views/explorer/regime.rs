@@ -23,7 +23,7 @@ fn regime_name(regime: Regime) -> &'static str {
 }
 
 fn speed(v: f64) -> String {
-    format!("{} m/s", sig(v, 3))
+    crate::format::with_unit(sig(v, 3), "", "m/s")
 }
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {

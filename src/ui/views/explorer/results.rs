@@ -1,5 +1,7 @@
 //! The results table: one row per checked model, then the quasistatic (Hertz) estimate.
 
+use std::borrow::Cow;
+
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Modifier;
@@ -192,34 +194,41 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let model_width: u16 = if roomy { 28 } else { 9 };
-    let header_text = |c: &Column| {
+    let header_text = |c: &Column| -> Cow<'static, str> {
         if c.header == "damping" && app.calibrate {
             // Every law's damping solved so that it realises the scene's e.
-            "calibrated".to_string()
+            Cow::Borrowed("calibrated")
         } else if c.unit.is_empty() || !roomy {
-            c.header.to_string()
+            Cow::Borrowed(c.header)
         } else {
-            format!("{} {}", c.header, c.unit)
+            Cow::Owned(format!("{} {}", c.header, c.unit))
         }
     };
+    let header_texts: Vec<Cow<str>> = COLUMNS.iter().map(header_text).collect();
     // The damping column grows with spare room until its units show.
     let damping_needed = checked
         .iter()
         .map(|&m| damping_width(app.solutions.damping(m)))
         .max()
         .unwrap_or(0);
-    let width_of = |c: &Column| c.width.max(header_text(c).chars().count() as u16);
+    let width_of = |c: &Column, header: &str| c.width.max(header.chars().count() as u16);
     // As many columns as fit, in order of importance.
     let mut used = model_width;
-    let columns: Vec<&Column> = COLUMNS
+    let shown = COLUMNS
         .iter()
-        .take_while(|c| {
-            used += width_of(c) + 1;
+        .zip(&header_texts)
+        .take_while(|(c, header)| {
+            used += width_of(c, header) + 1;
             used <= inner.width
         })
-        .collect();
+        .count();
+    let columns: Vec<&Column> = COLUMNS[..shown].iter().collect();
     // Spare room widens the number columns, so that they need fewer compact forms.
-    let mut widths: Vec<u16> = columns.iter().map(|c| width_of(c)).collect();
+    let mut widths: Vec<u16> = columns
+        .iter()
+        .zip(&header_texts)
+        .map(|(c, header)| width_of(c, header))
+        .collect();
     let mut spare = inner.width.saturating_sub(used.min(inner.width));
     if columns.len() < COLUMNS.len() {
         spare = 0;
@@ -249,9 +258,8 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .max(1);
     let [table_area, q_area] =
         Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
-    let header_texts: Vec<String> = columns.iter().map(|c| header_text(c)).collect();
     let header: Vec<&str> = std::iter::once("model")
-        .chain(header_texts.iter().map(String::as_str))
+        .chain(header_texts[..shown].iter().map(|h| h.as_ref()))
         .collect();
     let header_style = theme.style(Role::Label).add_modifier(Modifier::BOLD);
     let rows: Vec<Vec<Span>> = checked
