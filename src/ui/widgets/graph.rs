@@ -512,6 +512,19 @@ fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, limit: Rect) 
     }
 }
 
+/// `symbol` in `style` in every cell of `line` (a row or a column) within `limit`: what `put` of
+/// it cell by cell sets, a slice of the buffer's cells a row.
+fn rule(buf: &mut Buffer, line: Rect, limit: Rect, symbol: &str, style: Style) {
+    let line = line.intersection(limit).intersection(buf.area);
+    let width = usize::from(line.width);
+    for y in line.top()..line.bottom() {
+        let start = buf.index_of(line.x, y);
+        for cell in &mut buf.content[start..start + width] {
+            cell.set_symbol(symbol).set_style(style);
+        }
+    }
+}
+
 fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: MarkerStyle) {
     // Without braille or colour the dots are only the line between glyphs: keep them light so
     // the glyphs read.
@@ -567,13 +580,21 @@ fn axes(
     let text = theme.style(Role::Normal);
     let axis_x = plot.x - 1;
     let axis_y = plot.bottom();
-    for y in plot.y..plot.bottom() {
-        put(buf, axis_x, y, "│", line, inner);
-    }
+    rule(
+        buf,
+        Rect::new(axis_x, plot.y, 1, plot.height),
+        inner,
+        "│",
+        line,
+    );
     put(buf, axis_x, axis_y, "└", line, inner);
-    for x in plot.x..plot.right() {
-        put(buf, x, axis_y, "─", line, inner);
-    }
+    rule(
+        buf,
+        Rect::new(plot.x, axis_y, plot.width, 1),
+        inner,
+        "─",
+        line,
+    );
     for t in place_ticks(&chart.y, plot.height, dy, |_| 1) {
         let y = plot.bottom() - 1 - t.cell;
         put(buf, axis_x, y, "┤", line, inner);
@@ -1075,6 +1096,32 @@ mod tests {
                 let dots = |c: &Canvas| c.cells.iter().map(|cell| cell.dots).collect::<Vec<_>>();
                 assert_eq!(dots(&line), dots(&walk), "{a:?} to {b:?}");
             }
+        }
+    }
+
+    /// A rule sets what `put` of its symbol sets cell by cell, where it lies inside the limit,
+    /// across it and outside it, as a row and as a column.
+    #[test]
+    fn rules_set_what_put_sets() {
+        let area = Rect::new(0, 0, 12, 8);
+        let limit = Rect::new(2, 1, 7, 5);
+        let style = Style::new().fg(ratatui::style::Color::Red);
+        for line in [
+            Rect::new(3, 2, 4, 1),
+            Rect::new(0, 3, 12, 1),
+            Rect::new(4, 0, 1, 8),
+            Rect::new(10, 2, 1, 3),
+            Rect::new(1, 9, 5, 1),
+        ] {
+            let mut ruled = Buffer::empty(area);
+            rule(&mut ruled, line, limit, "─", style);
+            let mut put_each = Buffer::empty(area);
+            for y in line.top()..line.bottom() {
+                for x in line.left()..line.right() {
+                    put(&mut put_each, x, y, "─", style, limit);
+                }
+            }
+            assert_eq!(ruled, put_each, "{line:?}");
         }
     }
 
