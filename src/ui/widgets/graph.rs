@@ -754,20 +754,28 @@ pub fn legend(chart: &Chart, theme: Theme, width: usize) -> Line<'static> {
             if s.focused {
                 style = style.add_modifier(Modifier::BOLD);
             }
-            (format!(" {} {} ", sample(s.glyph), s.name), style)
+            // " ─x── name ", as `sample` draws the line.
+            let mut text = String::with_capacity(s.name.len() + 16);
+            text.push(' ');
+            text.push_str(&sample(s.glyph));
+            text.push(' ');
+            text.push_str(&s.name);
+            text.push(' ');
+            (text, style)
         })
         .collect();
     let mut spans = Vec::new();
     let mut used = 0;
     for (i, (text, style)) in items.iter().enumerate() {
         let left = items.len() - i - 1;
+        // " +N more ": 8 columns and N's digits, none when nothing is left.
         let more = if left > 0 {
-            format!(" +{left} more ")
+            8 + left.ilog10() as usize + 1
         } else {
-            String::new()
+            0
         };
         let w = text.chars().count();
-        let fits_with_more = used + w + more.chars().count() <= width;
+        let fits_with_more = used + w + more <= width;
         if !(fits_with_more || left == 0 && used + w <= width) {
             let rest = items.len() - i;
             spans.push(Span::styled(
@@ -985,6 +993,44 @@ mod tests {
             short.contains("+3 more") || short.contains("+2 more"),
             "{short}"
         );
+    }
+
+    /// With 12 series (a two-digit "+N more") at every width up to 200 columns: as many items
+    /// as fit beside the "+N more" of the rest (the last one without), as the texts written
+    /// measure (fails if the "+N more" is counted a column short).
+    #[test]
+    fn legends_fit_their_width_with_what_is_left_out() {
+        let mut many = chart();
+        for k in 0..11 {
+            let mut s = many.series[0].clone();
+            s.name = format!("model {k}");
+            many.series.push(s);
+        }
+        let theme = Theme { color: false };
+        let items: Vec<String> = many
+            .series
+            .iter()
+            .map(|s| format!(" {} {} ", sample(s.glyph), s.name))
+            .collect();
+        for width in 0..=200 {
+            let mut expected = String::new();
+            for (i, text) in items.iter().enumerate() {
+                let left = items.len() - i - 1;
+                let more = if left > 0 {
+                    format!(" +{left} more ")
+                } else {
+                    String::new()
+                };
+                let used = expected.chars().count();
+                let w = text.chars().count();
+                if !(used + w + more.chars().count() <= width || left == 0 && used + w <= width) {
+                    expected.push_str(&format!(" +{} more ", items.len() - i));
+                    break;
+                }
+                expected.push_str(text);
+            }
+            assert_eq!(legend(&many, theme, width).to_string(), expected, "{width}");
+        }
     }
 
     /// Every segment painted on its own, as the painter did before it skipped segments within
