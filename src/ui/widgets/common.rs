@@ -1,7 +1,7 @@
 //! Small helpers shared by the pane renderers.
 
 use ratatui::buffer::Buffer;
-use ratatui::layout::{Constraint, Flex, Layout, Rect};
+use ratatui::layout::{Constraint, Direction, Flex, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::Span;
 
@@ -134,6 +134,47 @@ pub fn draw_lines(buf: &mut Buffer, area: Rect, lines: &[ratatui::text::Line]) {
     }
 }
 
+/// `area` cut along `direction` into pieces of the given `lengths` from its start, then the
+/// rest: what `Layout` of those `Length`s and a `Fill(1)` gives, without its solver when the
+/// lengths fit (a test compares them); `Layout`'s own split when they do not.
+pub fn split_lengths(area: Rect, direction: Direction, lengths: &[u16]) -> Vec<Rect> {
+    let room = match direction {
+        Direction::Horizontal => area.width,
+        Direction::Vertical => area.height,
+    };
+    let total = lengths.iter().try_fold(0u16, |sum, &l| sum.checked_add(l));
+    if total.is_none_or(|total| total > room) {
+        let constraints = lengths
+            .iter()
+            .map(|&l| Constraint::Length(l))
+            .chain([Constraint::Fill(1)]);
+        return Layout::new(direction, constraints).split(area).to_vec();
+    }
+    let mut start = 0;
+    let piece = |start: u16, length: u16| match direction {
+        Direction::Horizontal => Rect {
+            x: area.x + start,
+            width: length,
+            ..area
+        },
+        Direction::Vertical => Rect {
+            y: area.y + start,
+            height: length,
+            ..area
+        },
+    };
+    let mut pieces: Vec<Rect> = lengths
+        .iter()
+        .map(|&length| {
+            let rect = piece(start, length);
+            start += length;
+            rect
+        })
+        .collect();
+    pieces.push(piece(start, room - start));
+    pieces
+}
+
 /// A rectangle of at most `width`×`height` centred in `area`.
 pub fn centered(area: Rect, width: u16, height: u16) -> Rect {
     let [row] = Layout::vertical([Constraint::Length(height.min(area.height))])
@@ -246,6 +287,34 @@ mod tests {
                 let mut ours = String::from(">");
                 push_padded(&mut ours, text, width);
                 assert_eq!(ours, format!(">{text:<width$}"), "{text} in {width}");
+            }
+        }
+    }
+
+    /// Pieces that fit exactly, with room left, none, zero-length ones, and pieces that overflow
+    /// (the solver's split), both ways, in areas off the origin: what `Layout` gives.
+    #[test]
+    fn split_lengths_splits_as_layout_does() {
+        let sets: [&[u16]; 7] = [&[], &[0], &[3], &[3, 4, 2], &[10, 0, 5], &[12], &[7, 9]];
+        for direction in [Direction::Horizontal, Direction::Vertical] {
+            for area in [
+                Rect::new(3, 2, 10, 10),
+                Rect::new(0, 0, 15, 15),
+                Rect::new(5, 7, 0, 0),
+                Rect::new(1, 1, 16, 16),
+            ] {
+                for lengths in sets {
+                    let constraints = lengths
+                        .iter()
+                        .map(|&l| Constraint::Length(l))
+                        .chain([Constraint::Fill(1)]);
+                    let theirs = Layout::new(direction, constraints).split(area).to_vec();
+                    assert_eq!(
+                        split_lengths(area, direction, lengths),
+                        theirs,
+                        "{direction:?} {area:?} {lengths:?}"
+                    );
+                }
             }
         }
     }
