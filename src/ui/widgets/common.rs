@@ -9,7 +9,7 @@ use crate::model::ForceModel;
 use crate::ui::style::Theme;
 
 use super::pane::Pane;
-use super::text::set_line;
+use super::text::{set_line, span_width};
 
 /// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
 pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Pane<'a> {
@@ -106,14 +106,15 @@ pub fn flow<'a>(
 ) -> Vec<ratatui::text::Line<'a>> {
     let mut lines: Vec<Vec<Span<'a>>> = Vec::new();
     let mut used = 0;
+    let gap_width = span_width(&gap);
     for item in items {
-        let item_width: usize = item.iter().map(Span::width).sum();
-        let fits = used > 0 && used + gap.width() + item_width <= width;
+        let item_width: usize = item.iter().map(span_width).sum();
+        let fits = used > 0 && used + gap_width + item_width <= width;
         match lines.last_mut() {
             Some(line) if fits => {
                 line.push(gap.clone());
                 line.extend(item);
-                used += gap.width() + item_width;
+                used += gap_width + item_width;
             }
             _ => {
                 lines.push(item);
