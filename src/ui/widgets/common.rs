@@ -1,7 +1,7 @@
 //! Small helpers shared by the pane renderers.
 
 use ratatui::buffer::Buffer;
-use ratatui::layout::{Constraint, Flex, Layout, Rect};
+use ratatui::layout::{Constraint, Direction, Flex, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::Span;
 
@@ -9,7 +9,7 @@ use crate::model::ForceModel;
 use crate::ui::style::Theme;
 
 use super::pane::Pane;
-use super::text::set_line;
+use super::text::{set_line, span_width};
 
 /// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
 pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Pane<'a> {
@@ -106,14 +106,15 @@ pub fn flow<'a>(
 ) -> Vec<ratatui::text::Line<'a>> {
     let mut lines: Vec<Vec<Span<'a>>> = Vec::new();
     let mut used = 0;
+    let gap_width = span_width(&gap);
     for item in items {
-        let item_width: usize = item.iter().map(Span::width).sum();
-        let fits = used > 0 && used + gap.width() + item_width <= width;
+        let item_width: usize = item.iter().map(span_width).sum();
+        let fits = used > 0 && used + gap_width + item_width <= width;
         match lines.last_mut() {
             Some(line) if fits => {
                 line.push(gap.clone());
                 line.extend(item);
-                used += gap.width() + item_width;
+                used += gap_width + item_width;
             }
             _ => {
                 lines.push(item);
@@ -132,6 +133,47 @@ pub fn draw_lines(buf: &mut Buffer, area: Rect, lines: &[ratatui::text::Line]) {
     for (y, line) in (area.y..area.bottom()).zip(lines) {
         set_line(buf, area.x, y, line, area.width);
     }
+}
+
+/// `area` cut along `direction` into pieces of the given `lengths` from its start, then the
+/// rest: what `Layout` of those `Length`s and a `Fill(1)` gives, without its solver when the
+/// lengths fit (a test compares them); `Layout`'s own split when they do not.
+pub fn split_lengths(area: Rect, direction: Direction, lengths: &[u16]) -> Vec<Rect> {
+    let room = match direction {
+        Direction::Horizontal => area.width,
+        Direction::Vertical => area.height,
+    };
+    let total = lengths.iter().try_fold(0u16, |sum, &l| sum.checked_add(l));
+    if total.is_none_or(|total| total > room) {
+        let constraints = lengths
+            .iter()
+            .map(|&l| Constraint::Length(l))
+            .chain([Constraint::Fill(1)]);
+        return Layout::new(direction, constraints).split(area).to_vec();
+    }
+    let mut start = 0;
+    let piece = |start: u16, length: u16| match direction {
+        Direction::Horizontal => Rect {
+            x: area.x + start,
+            width: length,
+            ..area
+        },
+        Direction::Vertical => Rect {
+            y: area.y + start,
+            height: length,
+            ..area
+        },
+    };
+    let mut pieces: Vec<Rect> = lengths
+        .iter()
+        .map(|&length| {
+            let rect = piece(start, length);
+            start += length;
+            rect
+        })
+        .collect();
+    pieces.push(piece(start, room - start));
+    pieces
 }
 
 /// A rectangle of at most `width`×`height` centred in `area`.
@@ -246,6 +288,34 @@ mod tests {
                 let mut ours = String::from(">");
                 push_padded(&mut ours, text, width);
                 assert_eq!(ours, format!(">{text:<width$}"), "{text} in {width}");
+            }
+        }
+    }
+
+    /// Pieces that fit exactly, with room left, none, zero-length ones, and pieces that overflow
+    /// (the solver's split), both ways, in areas off the origin: what `Layout` gives.
+    #[test]
+    fn split_lengths_splits_as_layout_does() {
+        let sets: [&[u16]; 7] = [&[], &[0], &[3], &[3, 4, 2], &[10, 0, 5], &[12], &[7, 9]];
+        for direction in [Direction::Horizontal, Direction::Vertical] {
+            for area in [
+                Rect::new(3, 2, 10, 10),
+                Rect::new(0, 0, 15, 15),
+                Rect::new(5, 7, 0, 0),
+                Rect::new(1, 1, 16, 16),
+            ] {
+                for lengths in sets {
+                    let constraints = lengths
+                        .iter()
+                        .map(|&l| Constraint::Length(l))
+                        .chain([Constraint::Fill(1)]);
+                    let theirs = Layout::new(direction, constraints).split(area).to_vec();
+                    assert_eq!(
+                        split_lengths(area, direction, lengths),
+                        theirs,
+                        "{direction:?} {area:?} {lengths:?}"
+                    );
+                }
             }
         }
     }

@@ -4,7 +4,7 @@
 use std::borrow::Cow;
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::{Direction, Rect};
 use ratatui::text::{Line, Span};
 
 use crate::ui::app::{App, Mode};
@@ -12,7 +12,7 @@ use crate::ui::style::Role;
 use crate::ui::units;
 use crate::ui::views::{self, Hints};
 
-use super::common::draw_lines;
+use super::common::{draw_lines, split_lengths};
 use super::text::{line_width, render_right};
 
 /// Key hints of the modes other than normal: (key, action).
@@ -182,10 +182,9 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
                 .collect()
         }
     };
-    let [l, r] =
-        Layout::horizontal([Constraint::Length(left_width + 1), Constraint::Fill(1)]).areas(area);
-    draw_lines(frame.buffer_mut(), l, &[left]);
-    render_right(frame.buffer_mut(), r, Line::from(right));
+    let columns = split_lengths(area, Direction::Horizontal, &[left_width + 1]);
+    draw_lines(frame.buffer_mut(), columns[0], &[left]);
+    render_right(frame.buffer_mut(), columns[1], Line::from(right));
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 use ratatui::buffer::{Buffer, Cell};
 use ratatui::layout::Rect;
 use ratatui::style::Style;
-use ratatui::text::Line;
+use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 /// Whether `c` is one cell wide and a grapheme of its own beside any other such character: the
@@ -121,16 +121,16 @@ fn set_ascii(cell: &mut Cell, b: u8) {
 /// The columns `line` takes, as `Line::width` measures them, counting the characters of a plain
 /// span (each takes one) rather than looking up each one's width.
 pub fn line_width(line: &Line) -> usize {
-    line.spans
-        .iter()
-        .map(|s| {
-            if all_plain(&s.content) {
-                s.content.chars().count()
-            } else {
-                s.width()
-            }
-        })
-        .sum()
+    line.spans.iter().map(span_width).sum()
+}
+
+/// The columns `span` takes, as `Span::width` measures them (see [`line_width`]).
+pub fn span_width(span: &Span) -> usize {
+    match kind(&span.content) {
+        Kind::Ascii => span.content.len(),
+        Kind::Plain => span.content.chars().count(),
+        Kind::Other => span.width(),
+    }
 }
 
 /// What `buf.set_style(area, style)` does (each cell of `area` within the buffer patched with
@@ -314,6 +314,9 @@ mod tests {
         assert_eq!(line_width(&line), line.width());
         for line in lines() {
             assert_eq!(line_width(&line), line.width(), "{line:?}");
+            for span in &line.spans {
+                assert_eq!(span_width(span), span.width(), "{span:?}");
+            }
         }
     }
 

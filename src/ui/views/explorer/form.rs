@@ -1,14 +1,14 @@
 //! The form panes: body 1, body 2 (shape, size, mass, material) and the impact with its solver.
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Position, Rect};
+use ratatui::layout::{Direction, Position, Rect};
 use ratatui::text::{Line, Span};
 
 use crate::model::scene_key::BodyIndex;
 use crate::ui::app::{App, Cursor, EditTarget, Mode};
 use crate::ui::field::{self, Field, Section};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{draw_lines, pane, push_padded, span, wrap};
+use crate::ui::widgets::common::{draw_lines, pane, push_padded, span, split_lengths, wrap};
 
 /// Width of the label column.
 const LABEL_WIDTH: usize = 8;
@@ -110,12 +110,8 @@ fn place(app: &App, area: Rect, roomy: bool) -> Placement {
         .collect();
     let needed: u16 = sections.iter().map(|(_, r)| r.len() as u16 + 2).sum();
     if roomy && needed <= area.height {
-        let mut constraints: Vec<Constraint> = sections
-            .iter()
-            .map(|(_, r)| Constraint::Length(r.len() as u16 + 2))
-            .collect();
-        constraints.push(Constraint::Fill(1));
-        let areas = Layout::vertical(constraints).split(area);
+        let heights: Vec<u16> = sections.iter().map(|(_, r)| r.len() as u16 + 2).collect();
+        let areas = split_lengths(area, Direction::Vertical, &heights);
         return Placement::Panes(
             sections
                 .into_iter()

@@ -3,7 +3,7 @@
 use std::borrow::Cow;
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::{Direction, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
@@ -16,7 +16,7 @@ use crate::model::quasistatic::ContactGeometry;
 use crate::ui::app::App;
 use crate::ui::style::{Role, Theme};
 use crate::ui::units::{self, sig};
-use crate::ui::widgets::common::{draw_lines, flow, model_name, pane, span};
+use crate::ui::widgets::common::{draw_lines, flow, model_name, pane, span, split_lengths};
 use crate::ui::widgets::table::draw_table;
 
 /// A column: header, unit, width, and the value of a solved row in that unit.
@@ -256,8 +256,8 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .height
         .saturating_sub(quasistatic_lines.len() as u16)
         .max(1);
-    let [table_area, q_area] =
-        Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
+    let rows = split_lengths(inner, Direction::Vertical, &[table_height]);
+    let (table_area, q_area) = (rows[0], rows[1]);
     let header: Vec<&str> = std::iter::once("model")
         .chain(header_texts[..shown].iter().map(|h| h.as_ref()))
         .collect();
