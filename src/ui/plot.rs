@@ -12,43 +12,68 @@ use super::chart_kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
 use super::units::{self, Unit};
 
-/// Dots across the widest plot each chart gets on the screen: what a solution is sampled for, once,
-/// when it arrives (see [`Series::for_charts`]).
+/// Dots across the widest plot each chart gets on the screen, and down the tallest: what a solution
+/// is sampled for, once, when it arrives (see [`Series::for_charts`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ChartDots {
     /// F(t), whose x axis is the contact time.
     pub time: u32,
     /// F(x) and v(x), whose x axis is the approach.
     pub approach: u32,
+    /// F(x), F(t) or v(x), whichever plot is tallest.
+    pub high: u32,
 }
 
-/// Dots of t and of x between consecutive samples at most. The straight lines joining them stay
-/// within a fifth of a dot of the curves on every law (tested against curves sampled 24 times as
-/// densely): an impact's curves are smooth between the extrema, which are samples of their own,
-/// and bend over tens of dots, so samples a dot apart were mostly spent where a line draws the
-/// same dots. Where they bend sharply, at first contact and at an end at x = 0, the trajectory
-/// refines the steps itself.
+/// Dots of t and of x between consecutive samples at most, on plots no taller for their width
+/// than [`REFERENCE_BEND`] says. The straight lines joining them stay within a fifth of a dot of
+/// the curves on every law (tested against curves sampled 24 times as densely): an impact's
+/// curves are smooth between the extrema, which are samples of their own, and bend over tens of
+/// dots, so samples a dot apart were mostly spent where a line draws the same dots. Where they bend
+/// sharply, at first contact and at an end at x = 0, the trajectory refines the steps itself.
 const STRIDE: f64 = 3.0;
+
+/// Height over width² of the plots [`STRIDE`] is measured for: the explorer's at 160×48, 48
+/// dots high and 98 across (F(x) and v(x); F(t) is wider). A line s dots long bows from the
+/// curve by about s²·high/across² dots (the curve's bend in dots grows with the height it is
+/// drawn to and falls with the square of the width its time spans), so taller or narrower plots
+/// take samples closer, by the square root of how much more they bend.
+const REFERENCE_BEND: f64 = 48.0 / (98.0 * 98.0);
+
+/// Closest samples are ever spaced, in dots: a bound on their number on absurdly tall and
+/// narrow plots (it binds past 144 times the explorer's bend, such as 40 dots across and 1150
+/// high).
+const CLOSEST_STRIDE: f64 = 0.25;
 
 /// Fewest and most samples of one solution, whatever the screen.
 const SAMPLES: std::ops::RangeInclusive<usize> = 32..=8192;
 
 impl ChartDots {
-    /// Until the terminal's size is known: plots 100 braille columns wide.
+    /// Until the terminal's size is known: plots 100 braille columns wide and 12 rows high.
     pub const UNKNOWN_SCREEN: ChartDots = ChartDots {
         time: 200,
         approach: 200,
+        high: 48,
     };
 
-    /// The spacing (Δt, Δx) that puts consecutive samples of `solution` at most [`STRIDE`] dots
-    /// apart across every chart: `time` dots over the contact time on F(t); `approach` dots over
-    /// x_max on F(x) and v(x) (the axis spans at least the solution's own x_max). Lines join the
-    /// samples, so the curves stay connected; the extrema are added exactly.
+    /// Dots between consecutive samples at most: [`STRIDE`], or closer on plots that bend their
+    /// curves more than [`REFERENCE_BEND`] (the tallest plot over the narrowest, conservatively).
+    pub fn stride(self) -> f64 {
+        let across = f64::from(self.time.min(self.approach).max(1));
+        let bend = f64::from(self.high) / (across * across);
+        (STRIDE * (REFERENCE_BEND / bend).sqrt()).clamp(CLOSEST_STRIDE, STRIDE)
+    }
+
+    /// The spacing (Δt, Δx) that puts consecutive samples of `solution` at most
+    /// [`ChartDots::stride`] dots apart across every chart: `time` dots over the contact time on
+    /// F(t); `approach` dots over x_max on F(x) and v(x) (the axis spans at least the solution's
+    /// own x_max). Lines join the samples, so the curves stay connected; the extrema are added
+    /// exactly.
     pub fn spacing(self, solution: &ImpactSolution) -> (f64, f64) {
         let s = &solution.summary;
+        let stride = self.stride();
         (
-            STRIDE * s.t_contact / f64::from(self.time),
-            STRIDE * s.x_max / f64::from(self.approach),
+            stride * s.t_contact / f64::from(self.time),
+            stride * s.x_max / f64::from(self.approach),
         )
     }
 }
@@ -398,21 +423,39 @@ mod tests {
     }
 
     /// On every law of the paper's Fig. 5 (and e = 0.2, x_pl = 0, where the contact is shortest
-    /// against x_max; and e = 0.95): consecutive samples lie within [`STRIDE`] dots of each other
-    /// on every chart the resolution was asked for (t over the time plot, x over the approach
-    /// plots); the lines joining them pass within a fifth of a dot of the curves sampled 24 times
-    /// as densely, on F(t), F(x) and v(x) 48 dots high (measured: 0.03–0.06 on the paper's
-    /// models, 0.15 at most, on Tsuji's x^¼ damping at e = 0.2 where the force rises as t^¼);
-    /// and there are at most half as many as evenly spaced samples a dot apart would need (the
-    /// fastest approach, v₀, everywhere).
+    /// against x_max; and e = 0.95), on plots as the explorer lays them out at 160×48 and far
+    /// taller or narrower ones (a 120×80 terminal's, 58 dots across and 128 high; 40 across and
+    /// 200 high): consecutive samples lie within [`ChartDots::stride`] dots of each other on every
+    /// chart (t over the time plot, x over the approach plots); the lines joining them pass within
+    /// a fifth of a dot of the curves sampled 24 times as densely, on F(t), F(x) and v(x) as high
+    /// as the tallest plot (measured at 160×48: 0.03–0.06 on the paper's models, 0.15 at most, on
+    /// Tsuji's x^¼ damping at e = 0.2, where the force rises as t^¼); and at 160×48 there are at
+    /// most half as many as evenly spaced samples a dot apart would need (the fastest approach,
+    /// v₀, everywhere). The tall plots are met within 0.09 dots; at the 160×48 stride they
+    /// were missed by up to 0.32 and 0.48 dots.
     #[test]
     fn samples_are_a_stride_apart_and_their_lines_on_the_curves() {
         use crate::model::impact::{SolveOptions, solve_impact};
+        use crate::ui::MarkerStyle;
         use crate::ui::testing::fig5_params;
-        let dots = ChartDots {
-            time: 214,
-            approach: 98,
-        };
+        use crate::ui::views::explorer::layout::chart_dots;
+        use ratatui::layout::Rect;
+        let explorer =
+            chart_dots(Rect::new(0, 0, 160, 48), MarkerStyle::Braille).expect("160×48 fits");
+        let screens = [
+            explorer,
+            ChartDots {
+                time: 116,
+                approach: 58,
+                high: 128,
+            },
+            ChartDots {
+                time: 40,
+                approach: 40,
+                high: 200,
+            },
+        ];
+        assert_eq!(explorer.stride(), STRIDE);
         let mut damped = fig5_params(0.3);
         damped.restitution = 0.2;
         damped.plastic_indentation = 0.0;
@@ -425,49 +468,55 @@ mod tests {
                     continue;
                 };
                 let s = &solution.summary;
-                let samples = Series::for_charts(model, &solution, dots).samples;
-                let n = samples.len();
-                let widest = |f: &dyn Fn(&Sample) -> f64| {
-                    samples
-                        .windows(2)
-                        .map(|w| (f(&w[1]) - f(&w[0])).abs())
-                        .fold(0.0, f64::max)
-                };
-                let t_step = widest(&|q| q.t) / s.t_contact * f64::from(dots.time);
-                let x_step = widest(&|q| q.x) / s.x_max * f64::from(dots.approach);
-                assert!(
-                    t_step <= STRIDE + 1e-9,
-                    "{model}: {n} samples, {t_step} dots in t"
-                );
-                assert!(
-                    x_step <= STRIDE + 1e-9,
-                    "{model}: {n} samples, {x_step} dots in x"
-                );
-                let (dt, dx) = dots.spacing(&solution);
-                let dense = solution.trajectory.drawn_samples_within(
-                    dt / STRIDE / 8.0,
-                    dx / STRIDE / 8.0,
-                    2..=1_000_000,
-                );
-                let dot = [
-                    s.t_contact / f64::from(dots.time),
-                    s.x_max / f64::from(dots.approach),
-                    params.v0 / 48.0,
-                    s.f_max / 48.0,
-                ];
-                let error = chord_error(&samples, &dense, dot);
-                assert!(
-                    error <= 0.2,
-                    "{model} e = {}: {error} dots",
-                    params.restitution
-                );
-                let sweep = params.v0 * s.t_contact / s.x_max * f64::from(dots.approach);
-                let even = sweep.ceil().max(f64::from(dots.time)) as usize + 1;
-                let extrema = solution.trajectory.extrema().len();
-                assert!(
-                    2 * n <= even + extrema,
-                    "{model}: {n} samples, {even} evenly spaced"
-                );
+                for dots in screens {
+                    let samples = Series::for_charts(model, &solution, dots).samples;
+                    let n = samples.len();
+                    let widest = |f: &dyn Fn(&Sample) -> f64| {
+                        samples
+                            .windows(2)
+                            .map(|w| (f(&w[1]) - f(&w[0])).abs())
+                            .fold(0.0, f64::max)
+                    };
+                    let t_step = widest(&|q| q.t) / s.t_contact * f64::from(dots.time);
+                    let x_step = widest(&|q| q.x) / s.x_max * f64::from(dots.approach);
+                    let stride = dots.stride();
+                    assert!(
+                        t_step <= stride + 1e-9,
+                        "{model}: {n} samples, {t_step} dots in t"
+                    );
+                    assert!(
+                        x_step <= stride + 1e-9,
+                        "{model}: {n} samples, {x_step} dots in x"
+                    );
+                    let (dt, dx) = dots.spacing(&solution);
+                    let dense = solution.trajectory.drawn_samples_within(
+                        dt / stride / 8.0,
+                        dx / stride / 8.0,
+                        2..=1_000_000,
+                    );
+                    let high = f64::from(dots.high);
+                    let dot = [
+                        s.t_contact / f64::from(dots.time),
+                        s.x_max / f64::from(dots.approach),
+                        params.v0 / high,
+                        s.f_max / high,
+                    ];
+                    let error = chord_error(&samples, &dense, dot);
+                    assert!(
+                        error <= 0.2,
+                        "{model} e = {} on {dots:?}: {error} dots",
+                        params.restitution
+                    );
+                    if dots == explorer {
+                        let sweep = params.v0 * s.t_contact / s.x_max * f64::from(dots.approach);
+                        let even = sweep.ceil().max(f64::from(dots.time)) as usize + 1;
+                        let extrema = solution.trajectory.extrema().len();
+                        assert!(
+                            2 * n <= even + extrema,
+                            "{model}: {n} samples, {even} evenly spaced"
+                        );
+                    }
+                }
                 laws += 1;
             }
         }

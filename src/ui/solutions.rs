@@ -247,6 +247,7 @@ mod tests {
         let wide = ChartDots {
             time: 700,
             approach: 400,
+            high: 48,
         };
         s.set_chart_dots(wide);
         assert!(expected(wide) > expected(ChartDots::UNKNOWN_SCREEN));

@@ -40,7 +40,7 @@ pub fn update(app: &mut App, action: Action) {
 fn resize(app: &mut App, width: u16, height: u16) {
     app.screen = (width, height);
     let area = ratatui::layout::Rect::new(0, 0, width, height);
-    if let Some(dots) = views::explorer::layout::chart_dots(area, app.marker.dots_per_cell()) {
+    if let Some(dots) = views::explorer::layout::chart_dots(area, app.marker) {
         app.solutions.set_chart_dots(dots);
     }
 }

@@ -95,7 +95,9 @@ pub(super) fn solve<L: ForceLaw>(
         let curves = [
             curve(Method::Dop853, opts.rtol.clamp(1e-14, CURVE_RTOL)),
             RunOptions {
-                known: Some(known),
+                // Unless the phases leave nothing to integrate (a contact that ends as it turns):
+                // then the events say so as they did.
+                known: (known.t_turn > 0.0 && known.t_turn < known.t_end).then_some(known),
                 ..curve(Method::Dopri5, DRAWN_RTOL)
             },
         ];

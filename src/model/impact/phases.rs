@@ -161,7 +161,11 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     }
     let mut loading = ode::integrate(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
         .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
-    if breakpoint.is_some() && loading.stop == (Stop::Event { index: 1 - skip }) {
+    // (A breakpoint met at the known turn leaves no tail.)
+    if breakpoint.is_some()
+        && loading.stop == (Stop::Event { index: 1 - skip })
+        && loading.t < opts.t_max
+    {
         let spent = loading.stats.steps + loading.stats.rejected_steps;
         let exhausted = |steps: usize, t: f64| ImpactError::Integration {
             method: ro.method,

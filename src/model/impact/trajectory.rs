@@ -354,8 +354,8 @@ impl Trajectory {
     /// in time and the slow ones around maximum compression no denser than `dt` — where evenly
     /// spaced samples would all be as dense as the fastest stretch needs. Where the force is
     /// steep at an end (it rises slower than x from first contact, or falls so to an end at
-    /// x = 0), the steps there are refined geometrically from 1/128 of these bounds; where it
-    /// jumps at the end, the curve's last force is a sample before the end mark.
+    /// x = 0, or jumps there: F = c·ẋ), the steps there are refined geometrically from 1/128 of
+    /// these bounds (or the shortest `count` allows, if longer).
     pub fn drawn_samples_within(
         &self,
         dt: f64,
@@ -392,19 +392,9 @@ impl Trajectory {
             while let Some(mark) = marks.next_if(|m| m.t < t) {
                 out.push(*mark);
             }
-            // A sample that falls exactly on a mark is the mark; but where the force jumps at
-            // the end of contact (a law in tension to the last: F = c·ẋ at x = 0, none after),
-            // the curve's last force comes first, so that the chart drops straight down.
+            // A sample that falls exactly on a mark is the mark.
             let v = match marks.peek() {
-                Some(mark) if mark.t == t => {
-                    if t >= t_end {
-                        let last = self.sample_on(curves, t, &mut cursor);
-                        if (last.f - mark.f).abs() > 1e-3 * self.extrema.f_max.abs() {
-                            out.push(last);
-                        }
-                    }
-                    mark.v
-                }
+                Some(mark) if mark.t == t => mark.v,
                 _ => {
                     let sample = self.sample_on(curves, t, &mut cursor);
                     out.push(sample);

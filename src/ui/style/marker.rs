@@ -31,4 +31,12 @@ impl MarkerStyle {
             MarkerStyle::Dot | MarkerStyle::Block => 1,
         }
     }
+
+    /// Vertical resolution of one terminal cell with this marker, in plot rows.
+    pub fn dots_per_row(self) -> u16 {
+        match self {
+            MarkerStyle::Braille => 4,
+            MarkerStyle::Dot | MarkerStyle::Block => 1,
+        }
+    }
 }

@@ -43,6 +43,17 @@ pub fn budget(columns: u16, rows: u16) -> (usize, usize) {
     )
 }
 
+/// Rows inside a chart's pane from which the x title gets a row of its own under the tick labels.
+const X_TITLE_BELOW: u16 = 12;
+
+/// Rows of the plot in a chart pane `inner_height` rows high: less the y title's row above it and
+/// the axis line, tick labels (and x title, where there is height) below it, as [`frame_of`] lays
+/// them out.
+pub fn plot_rows(inner_height: u16) -> u16 {
+    let bottom = if inner_height >= X_TITLE_BELOW { 3 } else { 2 };
+    inner_height.saturating_sub(1 + bottom)
+}
+
 /// The plot area inside `inner` for `chart`: the y title row on top, the y tick labels and axis
 /// line on the left, the axis line, tick labels (and the x title where there is height) below,
 /// and half the last x label's width on the right so it is not cut.
@@ -55,15 +66,14 @@ pub fn frame_of(inner: Rect, chart: &Chart) -> ChartFrame {
         .max()
         .unwrap_or(1)
         .min(inner.width / 3);
-    let x_title_below = inner.height >= 12;
-    let bottom = if x_title_below { 3 } else { 2 };
+    let x_title_below = inner.height >= X_TITLE_BELOW;
     let right = chart.x.ticks.last().map_or(0, |t| width(&t.label) / 2);
     let left = y_labels + 1;
     let plot = Rect::new(
         inner.x + left.min(inner.width),
         inner.y + 1.min(inner.height),
         inner.width.saturating_sub(left + right),
-        inner.height.saturating_sub(1 + bottom),
+        plot_rows(inner.height),
     );
     ChartFrame {
         plot,
@@ -243,41 +253,19 @@ impl Canvas {
     /// A straight line between two dots, one dot at a time (clipped to the canvas): from the dot
     /// after `a` to `b`, so that a polyline sets each dot once.
     fn line_dots(&mut self, a: (i64, i64), b: (i64, i64), ink: Ink, bold: bool) {
-        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-        let steps = dx.abs().max(dy.abs());
-        // A neighbouring dot is the one step of the walk below: most segments of a curve sampled
-        // a dot apart.
-        if steps <= 1 || steps > 100_000 {
-            self.set_dot(b, ink, bold);
-            return;
-        }
-        // Integer DDA, rounded to the nearest dot: step k sets a + ⌊(2·d·k + steps) / (2·steps)⌋
-        // on each axis, walked by its remainder rather than divided (a division a dot was most
-        // of a line's cost). |2·d| ≤ 2·steps, so each step moves the quotient by one at most.
-        let span = 2 * steps;
-        let (mut at, mut rest) = (a, (steps, steps));
-        for _ in 0..steps {
-            (at.0, rest.0) = dda_step(at.0, rest.0, 2 * dx, span);
-            (at.1, rest.1) = dda_step(at.1, rest.1, 2 * dy, span);
-            self.set_dot(at, ink, bold);
-        }
+        walk(a, b, |at| self.set_dot(at, ink, bold));
     }
 
     /// [`Canvas::line_dots`] between two dots the caller knows lie on the canvas, so that every
     /// dot of the walk does too (it stays in their bounding box): no dot is checked.
     fn line_on_canvas(&mut self, a: (u32, u32), b: (u32, u32), ink: Ink, bold: bool) {
-        let (dx, dy) = (
-            i64::from(b.0) - i64::from(a.0),
-            i64::from(b.1) - i64::from(a.1),
+        let (a, b) = (
+            (i64::from(a.0), i64::from(a.1)),
+            (i64::from(b.0), i64::from(b.1)),
         );
-        let steps = dx.abs().max(dy.abs());
-        let span = 2 * steps;
-        let (mut at, mut rest) = ((i64::from(a.0), i64::from(a.1)), (steps, steps));
-        for _ in 0..steps {
-            (at.0, rest.0) = dda_step(at.0, rest.0, 2 * dx, span);
-            (at.1, rest.1) = dda_step(at.1, rest.1, 2 * dy, span);
-            self.set_on_canvas(at.0 as u32, at.1 as u32, ink, bold);
-        }
+        walk(a, b, |at| {
+            self.set_on_canvas(at.0 as u32, at.1 as u32, ink, bold)
+        });
     }
 
     fn glyph(&mut self, at: (f64, f64), glyph: char, ink: Ink, bold: bool) {
@@ -287,6 +275,28 @@ impl Canvas {
         if let Some(cell) = self.cell_mut(at.0.round() as u32, at.1.round() as u32) {
             cell.glyph = Some((glyph, ink, bold));
         }
+    }
+}
+
+/// The dots of a straight line from the dot after `a` to `b`, each given to `set`: the integer
+/// DDA rounded to the nearest dot, step k at a + ⌊(2·d·k + steps) / (2·steps)⌋ on each axis,
+/// walked by its remainder rather than divided (a division a dot was most of a line's cost). A
+/// neighbour, and a line over 100 000 dots (off any canvas), is its end alone.
+#[inline]
+fn walk(a: (i64, i64), b: (i64, i64), mut set: impl FnMut((i64, i64))) {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let steps = dx.abs().max(dy.abs());
+    if steps <= 1 || steps > 100_000 {
+        set(b);
+        return;
+    }
+    // |2·d| ≤ 2·steps, so each step moves the quotient by one at most.
+    let span = 2 * steps;
+    let (mut at, mut rest) = (a, (steps, steps));
+    for _ in 0..steps {
+        (at.0, rest.0) = dda_step(at.0, rest.0, 2 * dx, span);
+        (at.1, rest.1) = dda_step(at.1, rest.1, 2 * dy, span);
+        set(at);
     }
 }
 
@@ -516,6 +526,9 @@ fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, limit: Rect) 
 /// it cell by cell sets, a slice of the buffer's cells a row.
 fn rule(buf: &mut Buffer, line: Rect, limit: Rect, symbol: &str, style: Style) {
     let line = line.intersection(limit).intersection(buf.area);
+    if line.is_empty() {
+        return;
+    }
     let width = usize::from(line.width);
     for y in line.top()..line.bottom() {
         let start = buf.index_of(line.x, y);
@@ -995,11 +1008,11 @@ mod tests {
         );
     }
 
-    /// With 12 series (a two-digit "+N more") at every width up to 200 columns: as many items
-    /// as fit beside the "+N more" of the rest (the last one without), as the texts written
-    /// measure (fails if the "+N more" is counted a column short).
+    /// With 12 series (a two-digit "+N more") at every width up to 200 columns: the legend the
+    /// former rule, formatting every text, gives: as many items as fit beside the "+N more" of
+    /// the rest (the last one without). Fails if the "+N more" is counted a column short.
     #[test]
-    fn legends_fit_their_width_with_what_is_left_out() {
+    fn legends_show_what_the_formatted_rule_shows() {
         let mut many = chart();
         for k in 0..11 {
             let mut s = many.series[0].clone();
@@ -1158,6 +1171,8 @@ mod tests {
             Rect::new(4, 0, 1, 8),
             Rect::new(10, 2, 1, 3),
             Rect::new(1, 9, 5, 1),
+            Rect::new(12, 2, 1, 3),
+            Rect::new(0, 0, 2, 8),
         ] {
             let mut ruled = Buffer::empty(area);
             rule(&mut ruled, line, limit, "─", style);

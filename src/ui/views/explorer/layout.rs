@@ -3,10 +3,11 @@
 
 use ratatui::layout::{Constraint, Layout, Rect};
 
+use crate::ui::MarkerStyle;
 use crate::ui::chart_kind::ChartKind;
 use crate::ui::layout::{Screen, Y_AXIS_ALLOWANCE, left_width, screen};
 use crate::ui::plot::ChartDots;
-use crate::ui::widgets::models;
+use crate::ui::widgets::{graph, models};
 
 /// The least height of the models pane on a roomy screen.
 pub const MODELS_HEIGHT: u16 = 7;
@@ -67,19 +68,26 @@ pub fn layout(area: Rect, first: ChartKind, form_height: impl Fn(u16) -> u16) ->
     })
 }
 
-/// Dots across the widest plot each chart gets on a screen of `area` (`dots_per_cell` a column),
-/// whichever chart is shown first; `None` where the explorer does not fit.
-pub fn chart_dots(area: Rect, dots_per_cell: u16) -> Option<ChartDots> {
+/// Dots across the widest plot each chart gets on a screen of `area`, and down the tallest (with
+/// `marker`'s dots a cell), whichever chart is shown first; `None` where the explorer does not fit.
+pub fn chart_dots(area: Rect, marker: MarkerStyle) -> Option<ChartDots> {
     let mut dots = ChartDots {
         time: 0,
         approach: 0,
+        high: 0,
     };
     for first in ChartKind::ALL {
         let areas = layout(area, first, |_| 0)?;
         // The pane's side borders (roomy) and the y labels and axis line.
         let frame = if areas.roomy { 2 } else { 0 } + Y_AXIS_ALLOWANCE;
+        // The pane's top and bottom borders (roomy), then the title and axis rows.
+        let rims = if areas.roomy { 2 } else { 0 };
         for (kind, rect) in areas.charts {
-            let across = u32::from(rect.width.saturating_sub(frame)) * u32::from(dots_per_cell);
+            let rows = graph::plot_rows(rect.height.saturating_sub(rims));
+            let high = u32::from(rows) * u32::from(marker.dots_per_row());
+            dots.high = dots.high.max(high);
+            let across =
+                u32::from(rect.width.saturating_sub(frame)) * u32::from(marker.dots_per_cell());
             let widest = match kind {
                 ChartKind::ForceTime => &mut dots.time,
                 ChartKind::ForceDisplacement | ChartKind::VelocityDisplacement => {
@@ -145,7 +153,14 @@ mod tests {
     /// charts share it and either kind may be in the wider one.
     #[test]
     fn charts_are_sampled_for_their_widest_plots() {
-        let at = |w, h, per_cell| chart_dots(Rect::new(0, 0, w, h), per_cell);
+        let at = |w, h, per_cell| {
+            let marker = if per_cell == 2 {
+                MarkerStyle::Braille
+            } else {
+                MarkerStyle::Dot
+            };
+            chart_dots(Rect::new(0, 0, w, h), marker)
+        };
         let big = layout(Rect::new(0, 0, 160, 48), ChartKind::ForceTime, |_| 30).unwrap();
         let f_t = big.charts.iter().find(|(k, _)| *k == ChartKind::ForceTime).unwrap();
         let f_x = big.charts.iter().find(|(k, _)| *k == ChartKind::ForceDisplacement).unwrap();
@@ -154,6 +169,7 @@ mod tests {
             Some(ChartDots {
                 time: 2 * u32::from(f_t.1.width - 9),
                 approach: 2 * u32::from(f_x.1.width - 9),
+                high: 4 * u32::from(graph::plot_rows(f_x.1.height - 2)),
             })
         );
         assert_eq!(at(160, 48, 1).unwrap().time, u32::from(f_t.1.width - 9));
