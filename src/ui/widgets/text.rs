@@ -35,7 +35,12 @@ const PRINTABLE: &str = " !\"#$%&'()*+,-./0123456789:;<=>?@ABCDEFGHIJKLMNOPQRSTU
 
 /// Whether `text` is all printable ASCII (all plain), checked a byte at a time.
 fn printable_ascii(text: &str) -> bool {
-    text.bytes().all(|b| matches!(b, b' '..=b'~'))
+    text.bytes().all(printable)
+}
+
+/// Whether byte `b` is a printable ASCII character.
+fn printable(b: u8) -> bool {
+    matches!(b, b' '..=b'~')
 }
 
 /// How a text can be set a character a cell.
@@ -52,7 +57,7 @@ enum Kind {
 /// The kind of `text`: its ASCII start checked a byte at a time, the rest (if any) a character
 /// at a time.
 fn kind(text: &str) -> Kind {
-    match text.bytes().position(|b| !matches!(b, b' '..=b'~')) {
+    match text.bytes().position(|b| !printable(b)) {
         None => Kind::Ascii,
         // The bytes before are ASCII, so a character starts here.
         Some(i) if text[i..].chars().all(is_plain) => Kind::Plain,
