@@ -17,6 +17,7 @@ use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
 use super::pane::Pane;
+use super::text::each_cell;
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -523,19 +524,11 @@ fn put(buf: &mut Buffer, x: u16, y: u16, text: &str, style: Style, limit: Rect) 
 }
 
 /// `symbol` in `style` in every cell of `line` (a row or a column) within `limit`: what `put` of
-/// it cell by cell sets, a slice of the buffer's cells a row.
+/// it cell by cell sets.
 fn rule(buf: &mut Buffer, line: Rect, limit: Rect, symbol: &str, style: Style) {
-    let line = line.intersection(limit).intersection(buf.area);
-    if line.is_empty() {
-        return;
-    }
-    let width = usize::from(line.width);
-    for y in line.top()..line.bottom() {
-        let start = buf.index_of(line.x, y);
-        for cell in &mut buf.content[start..start + width] {
-            cell.set_symbol(symbol).set_style(style);
-        }
-    }
+    each_cell(buf, line.intersection(limit), |cell| {
+        cell.set_symbol(symbol).set_style(style);
+    });
 }
 
 fn blit(buf: &mut Buffer, canvas: &Canvas, plot: Rect, theme: Theme, marker: MarkerStyle) {

@@ -3,7 +3,7 @@
 //! compares them), without the `Block`'s restyling of every cell of its area with its default
 //! style, a no-op that cost more than the borders themselves (a tenth of the explorer's frame).
 
-use ratatui::buffer::{Buffer, Cell};
+use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Line;
@@ -11,7 +11,7 @@ use ratatui::widgets::{Block, Borders, Widget};
 
 use crate::ui::style::{Role, Theme};
 
-use super::text::{line_width, patch_style, render_line};
+use super::text::{each_cell, line_width, patch_style, render_line};
 
 /// A pane's frame and its titles: one at the top left, and optionally one at the bottom left.
 #[derive(Debug, Clone)]
@@ -79,15 +79,16 @@ impl<'a> Pane<'a> {
         inner
     }
 
-    /// Sets `symbol` in the border cells `cells`, patched with the border style.
-    fn border<'c>(&self, cells: impl Iterator<Item = &'c mut Cell>, symbol: &str) {
+    /// Sets `symbol` in the border cells of `line` (a side, or a corner), patched with the border
+    /// style.
+    fn border(&self, buf: &mut Buffer, line: Rect, symbol: &str) {
         let patch = self.border_style != Style::default();
-        for cell in cells {
+        each_cell(buf, line, |cell| {
             cell.set_symbol(symbol);
             if patch {
                 cell.set_style(self.border_style);
             }
-        }
+        });
     }
 
     /// `title` left on row `y` between the side borders, as `Block` draws a left-aligned title.
@@ -117,30 +118,22 @@ impl Widget for &Pane<'_> {
             return;
         }
         let (left, top) = (area.x, area.y);
-        let bottom = area.bottom() - 1;
-        let stride = usize::from(buf.area.width);
-        let at =
-            |x: u16, y: u16| usize::from(y - buf.area.y) * stride + usize::from(x - buf.area.x);
-        let (top_left, bottom_left) = (at(left, top), at(left, bottom));
-        let (columns, rows) = (usize::from(area.width), usize::from(area.height));
-        let cells = &mut buf.content;
+        let (right, bottom) = (area.right() - 1, area.bottom() - 1);
+        let row = |y| Rect::new(left, y, area.width, 1);
+        let column = |x| Rect::new(x, top, 1, area.height);
+        let corner = |x, y| Rect::new(x, y, 1, 1);
         // Sides, then the top and bottom rows over them, then the corners, as `Block` draws them.
         if self.roomy {
-            self.border(cells[top_left..].iter_mut().step_by(stride).take(rows), "│");
+            self.border(buf, column(left), "│");
         }
-        self.border(cells[top_left..top_left + columns].iter_mut(), "─");
+        self.border(buf, row(top), "─");
         if self.roomy {
-            let top_right = top_left + columns - 1;
-            self.border(
-                cells[top_right..].iter_mut().step_by(stride).take(rows),
-                "│",
-            );
-            self.border(cells[bottom_left..bottom_left + columns].iter_mut(), "─");
-            let bottom_right = bottom_left + columns - 1;
-            self.border(std::iter::once(&mut cells[bottom_right]), "┘");
-            self.border(std::iter::once(&mut cells[top_right]), "┐");
-            self.border(std::iter::once(&mut cells[bottom_left]), "└");
-            self.border(std::iter::once(&mut cells[top_left]), "┌");
+            self.border(buf, column(right), "│");
+            self.border(buf, row(bottom), "─");
+            self.border(buf, corner(right, bottom), "┘");
+            self.border(buf, corner(right, top), "┐");
+            self.border(buf, corner(left, bottom), "└");
+            self.border(buf, corner(left, top), "┌");
         }
         self.title_on(buf, area, top, &self.title);
         if let Some(title) = &self.bottom {

@@ -142,8 +142,18 @@ pub fn span_width(span: &Span) -> usize {
 /// `style`), a row slice at a time rather than a checked index a cell; nothing for the default
 /// style, which patches nothing.
 pub fn patch_style(buf: &mut Buffer, area: Rect, style: Style) {
+    if style != Style::default() {
+        each_cell(buf, area, |cell| {
+            cell.set_style(style);
+        });
+    }
+}
+
+/// `f` on each cell of `area` within the buffer, row by row from the top left: a slice of the
+/// buffer's cells a row rather than a checked index a cell.
+pub fn each_cell(buf: &mut Buffer, area: Rect, mut f: impl FnMut(&mut Cell)) {
     let area = area.intersection(buf.area);
-    if area.is_empty() || style == Style::default() {
+    if area.is_empty() {
         return;
     }
     let (width, left) = (
@@ -153,7 +163,7 @@ pub fn patch_style(buf: &mut Buffer, area: Rect, style: Style) {
     for y in area.top()..area.bottom() {
         let start = usize::from(y - buf.area.y) * width + left;
         for cell in &mut buf.content[start..start + usize::from(area.width)] {
-            cell.set_style(style);
+            f(cell);
         }
     }
 }
