@@ -99,12 +99,12 @@ impl<K> Series<K> {
         Series::of(model, solution, solution.trajectory.drawn_samples(n))
     }
 
-    /// The solution's drawn curves sampled at most a dot apart on charts `dots` wide
-    /// ([`ChartDots::spacing`]): densely in t where the approach moves fast, no denser than the
-    /// time plot's dots where it is slow — within the cap of 8192 samples, which binds at e ≤ 0.01
-    /// on the laws whose approach is over in the first hundredth of the contact (Flores, Hu–Guo,
-    /// Gonthier, Gharib–Hurmuzlu): there the first steps span up to 2 dots of x (4 at e = 0.005),
-    /// as evenly spaced samples at the cap did.
+    /// The solution's drawn curves sampled at most [`ChartDots::stride`] dots apart on the
+    /// charts `dots` measures ([`ChartDots::spacing`]): densely in t where the approach moves
+    /// fast, no denser than the stride where it is slow — within the cap of 8192 samples, which
+    /// can bind at e ≤ 0.01 on the laws whose approach is over in the first hundredth of the
+    /// contact (Flores, Hu–Guo, Gonthier, Gharib–Hurmuzlu), where the first steps then span
+    /// further, as evenly spaced samples at the cap did.
     pub fn for_charts(model: K, solution: &ImpactSolution, dots: ChartDots) -> Series<K> {
         let (dt, dx) = dots.spacing(solution);
         let samples = solution.trajectory.drawn_samples_within(dt, dx, SAMPLES);
