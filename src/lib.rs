@@ -1,8 +1,10 @@
 //! hertz-tui: a terminal explorer of impact contact forces.
 //!
-//! `model` holds the physics and numerics (no UI); `ui` renders it; `cli` exposes it headless;
-//! `format` writes numbers and trajectories for both edges; `chart` describes a chart for the
-//! terminal and for figure files.
+//! `model` holds the physics, the numerics and the study runner, and stands alone (it imports no
+//! other module of the crate and no UI or command-line crate); `chart` builds charts from its
+//! results as plain data, for the terminal and for figure files; `format` writes numbers, units
+//! and trajectories for both edges; `cli` exposes them headless and `ui` is the explorer. Neither
+//! `cli` nor `chart` imports `ui`.
 //!
 //! The model layer on its own, reproducing the paper's Fig. 5 scene (a steel sphere R = 10 mm
 //! dropped at 0.3 m/s on a steel plate):

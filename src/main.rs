@@ -4,7 +4,8 @@ use std::io;
 use std::process::ExitCode;
 
 use clap::Parser;
-use hertz_tui::cli::{self, Cli, CliError};
+use hertz_tui::cli::{self, Cli, CliError, Marker};
+use hertz_tui::ui::MarkerStyle;
 
 fn main() -> color_eyre::Result<ExitCode> {
     color_eyre::install()?;
@@ -25,7 +26,12 @@ fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
     });
     match scene {
         Ok((scene, view)) => {
-            hertz_tui::ui::run(scene, view, &args.scene, args.marker)?;
+            let marker = match args.marker {
+                Marker::Braille => MarkerStyle::Braille,
+                Marker::Dot => MarkerStyle::Dot,
+                Marker::Block => MarkerStyle::Block,
+            };
+            hertz_tui::ui::run(scene, view, &args.scene, marker)?;
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => Ok(exit(Err(e))),

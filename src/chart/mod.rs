@@ -1,11 +1,21 @@
-//! A chart as plain data, for any renderer: the terminal canvas (`crate::ui::widgets::graph`) or a
-//! figure file ([`figure`]). Views build a [`Chart`]; renderers place ticks, lines and labels.
+//! A chart as plain data, for any renderer: the explorer's terminal canvas or a figure file
+//! ([`figure`]). The builders here turn model results into a [`Chart`]: an impact's curves
+//! ([`sample`], [`kind`]) and each study's ([`work_precision`], [`stability`], [`sweep`],
+//! [`restitution`]), on axes with round ticks ([`ticks`]); renderers place ticks, lines and labels.
+//! Nothing here draws on a terminal, so the command line's `plot` uses the same builders.
 //!
 //! Coordinates are display values: SI divided by the axis's prefix and unit, and log₁₀ of that on
 //! a log axis, so that a renderer maps them linearly onto its plot area.
 
 pub mod figure;
+pub mod kind;
 pub mod layout;
+pub mod restitution;
+pub mod sample;
+pub mod stability;
+pub mod sweep;
+pub mod ticks;
+pub mod work_precision;
 
 pub use layout::{Placed, place_ticks};
 

@@ -7,7 +7,6 @@ use crate::model::impact::MethodChoice;
 use crate::model::overrides::Override;
 use crate::model::presets::DEFAULT_SCENE;
 use crate::model::scene_key::SceneKey;
-use crate::ui::MarkerStyle;
 
 /// Explore impact contact forces: Hertz contact, dry friction, Hunt–Crossley, Lankarani–Nikravesh
 /// and the proposed viscous model of Polukoshko, Sokolova & Kononova.
@@ -23,8 +22,19 @@ pub struct Cli {
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
     /// How the explorer draws chart points; dot or block for fonts without braille.
-    #[arg(long, value_enum, default_value_t = MarkerStyle::Braille)]
-    pub marker: MarkerStyle,
+    #[arg(long, value_enum, default_value_t = Marker::Braille)]
+    pub marker: Marker,
+}
+
+/// How the explorer draws chart points (`--marker`), for fonts that lack braille.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Marker {
+    /// Braille patterns: 2×4 dots per cell, the finest resolution.
+    Braille,
+    /// One dot per cell.
+    Dot,
+    /// One full block per cell.
+    Block,
 }
 
 #[derive(Debug, Subcommand)]

@@ -17,7 +17,7 @@ pub mod units;
 use std::io::Write;
 
 pub use args::{
-    BenchArgs, Cli, Command, Format, PlotArgs, RestitutionArgs, SceneSelection, SolveArgs,
+    BenchArgs, Cli, Command, Format, Marker, PlotArgs, RestitutionArgs, SceneSelection, SolveArgs,
     SweepArgs, TranslateArgs, TranslateFormat,
 };
 pub use error::CliError;

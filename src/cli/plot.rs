@@ -2,19 +2,22 @@
 //! the same chart description ([`crate::chart`]) the terminal renders.
 
 use crate::chart::figure::{self, FigureError};
+use crate::chart::kind::ChartKind;
+use crate::chart::sample::{Look, Series, plot};
+use crate::chart::stability as stability_plot;
+use crate::chart::sweep::SweepOutput;
+use crate::chart::sweep::{self as sweep_plot, SweepSet};
+use crate::chart::work_precision::{self as wp_plot, Cost};
 use crate::chart::{Chart, Ink, model_glyph};
 use crate::model::impact::{SolveOptions, solve_impact};
 use crate::model::presets::Registry;
+use crate::model::study::runner::{
+    self, StabilityData, StudyJob, StudyResult, StudySpec, SweepData,
+};
 use crate::model::study::stability::critical_step;
+use crate::model::study::sweep::default_range;
 use crate::model::study::sweep::{SweepSpec, sweep};
 use crate::model::{ForceModel, ImpactParams, Scene};
-use crate::ui::chart_kind::ChartKind;
-use crate::ui::plot::{Look, Series, plot};
-use crate::ui::studies::{self, StabilityData, StudyJob, StudyResult, StudySpec, SweepData};
-use crate::ui::views::stability::plot as stability_plot;
-use crate::ui::views::sweep::plot::{self as sweep_plot, SweepSet};
-use crate::ui::views::sweep::settings::{SweepOutput, default_range};
-use crate::ui::views::work_precision::plot::{self as wp_plot, Cost};
 
 use super::args::{ChartChoice, PlotArgs, QuantityChoice, SceneSelection};
 use super::error::CliError;
@@ -197,7 +200,7 @@ fn study(spec: StudySpec) -> Result<StudyResult, CliError> {
         generation: 0,
         spec,
     };
-    studies::run(&job, &|| false)
+    runner::run(&job, &|| false)
         .map(|outcome| outcome.result)
         .ok_or_else(|| CliError::Usage("the study was stopped".into()))
 }
@@ -209,7 +212,7 @@ fn work_precision(args: &PlotArgs, scene: &Scene) -> Result<Vec<Chart>, CliError
     let params = params(scene)?;
     let data = match study(StudySpec::WorkPrecision { model, params })? {
         StudyResult::WorkPrecision(Ok(data)) => data,
-        StudyResult::WorkPrecision(Err(e)) => return Err(CliError::Usage(e)),
+        StudyResult::WorkPrecision(Err(e)) => return Err(CliError::Usage(e.to_string())),
         other => return Err(unexpected(&other)),
     };
     let current = match study(StudySpec::Current {
@@ -241,7 +244,7 @@ fn stability(args: &PlotArgs, scene: &Scene) -> Result<Vec<Chart>, CliError> {
     };
     let data: std::sync::Arc<StabilityData> = match study(StudySpec::Runs { model, params, dt })? {
         StudyResult::Runs(Ok(data)) => data,
-        StudyResult::Runs(Err(e)) => return Err(CliError::Usage(e)),
+        StudyResult::Runs(Err(e)) => return Err(CliError::Usage(e.to_string())),
         other => return Err(unexpected(&other)),
     };
     Ok([

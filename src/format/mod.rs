@@ -6,6 +6,7 @@ pub mod csv;
 mod number;
 mod shortest_exp;
 pub mod translation;
+pub mod units;
 
 pub use number::{
     ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, NOT_A_NUMBER, PICO, Prefix,

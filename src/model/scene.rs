@@ -192,6 +192,22 @@ pub(crate) mod tests {
     use super::*;
     use crate::model::material::tests::steel;
 
+    /// Impact parameters of the Fig. 5 scene (m = 32.7 g, k = 1.465e10 N/m^1.5, Table 1; e = 0.6,
+    /// x_pl = 2.3 µm) at pre-impact velocity `v0`.
+    pub(crate) fn fig5_params(v0: f64) -> crate::model::ImpactParams {
+        crate::model::ImpactParams {
+            mass: 0.0327,
+            law: crate::model::PowerLaw {
+                k: 1.465e10,
+                n: 1.5,
+            },
+            v0,
+            restitution: 0.6,
+            plastic_indentation: 2.3e-6,
+            contact: crate::model::force::Contact::Unspecified,
+        }
+    }
+
     /// The paper's Fig. 5 scene: steel sphere R = 10 mm on a steel plate, v₀ = 0.3 m/s, e = 0.6,
     /// x_pl = 2.3 µm — the fixture of every unit test that needs a scene.
     pub(crate) fn fig5_scene() -> Scene {

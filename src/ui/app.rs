@@ -17,11 +17,12 @@ use super::action::Jump;
 use super::field::{self, Draft, Field, Nudge, Section};
 use super::picker::Picker;
 use super::solutions::{Job, Solutions};
-use super::studies::{Studies, StudyJob, StudySpec};
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
 use super::views::sweep::settings::{SweepField, SweepSettings};
-use super::views::work_precision::plot::Cost;
+use crate::chart::work_precision::Cost;
+use crate::model::study::runner::{StudyJob, StudySpec};
+use crate::ui::studies::Studies;
 
 /// Where the cursor is: on a form field or on a model of the checklist.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -90,7 +91,7 @@ pub enum Mode {
 }
 
 /// Lives in its own module so that layouts and charts need not import the app state.
-pub use super::chart_kind::ChartKind;
+pub use crate::chart::kind::ChartKind;
 
 /// A line for the status bar: news of the last action.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -13,14 +13,14 @@ use super::action::Action;
 use super::app::{App, Cursor, EditTarget, Mode};
 use super::field::Field;
 use super::keymap::action_for_event;
-use super::studies::{StudyKind, StudySpec};
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
 use super::testing::fig5_scene;
 use super::update::update;
 use super::views;
 use super::views::sweep::settings::SweepField;
-use super::views::work_precision::plot::Cost;
+use crate::chart::work_precision::Cost;
+use crate::model::study::runner::{StudyKind, StudySpec};
 
 fn app() -> App {
     let mut app = App::new(

@@ -4,7 +4,7 @@
 
 use crate::model::impact::{ImpactSolution, Sample};
 
-use super::chart_kind::ChartKind;
+use crate::chart::kind::ChartKind;
 
 /// Steps of the cursor along the axis: per mille of its length.
 pub const FULL: u16 = 1000;

@@ -8,7 +8,7 @@ use crate::model::ode::Method;
 use crate::model::scene::Scene;
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
 
-use super::units::{self, Prefix, Unit};
+use crate::format::units::{self, Prefix, Unit};
 
 /// One row of a form pane.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -200,20 +200,7 @@ impl Field {
             Field::Method => "method",
             Field::Rtol => "rtol",
             Field::Dt => "dt",
-            Field::Number(key) => match key {
-                SceneKey::V0 => "v₀",
-                SceneKey::Restitution => "e",
-                SceneKey::PlasticIndentation => "x_pl",
-                SceneKey::Body(_, field) => match field {
-                    BodyField::Radius => "R",
-                    BodyField::Length => "L",
-                    BodyField::Mass => "mass",
-                    BodyField::YoungsModulus => "E",
-                    BodyField::PoissonRatio => "ν",
-                    BodyField::YieldStress => "σ_y",
-                    BodyField::Density => "ρ",
-                },
-            },
+            Field::Number(key) => units::key_label(key),
         }
     }
 
@@ -246,18 +233,7 @@ impl Field {
         match self {
             Field::Shape(_) | Field::Method | Field::Rtol => units::DIMENSIONLESS,
             Field::Dt => units::SECOND,
-            Field::Number(key) => match key {
-                SceneKey::V0 => units::METRE_PER_SECOND,
-                SceneKey::Restitution => units::DIMENSIONLESS,
-                SceneKey::PlasticIndentation => units::METRE,
-                SceneKey::Body(_, field) => match field {
-                    BodyField::Radius | BodyField::Length => units::METRE,
-                    BodyField::Mass => units::GRAM,
-                    BodyField::YoungsModulus | BodyField::YieldStress => units::PASCAL,
-                    BodyField::PoissonRatio => units::DIMENSIONLESS,
-                    BodyField::Density => units::KG_PER_CUBIC_METRE,
-                },
-            },
+            Field::Number(key) => units::key_unit(key),
         }
     }
 

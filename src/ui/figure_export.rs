@@ -37,10 +37,10 @@ pub fn write_view(app: &App) -> Result<String, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::chart::kind::ChartKind;
     use crate::model::presets::{DEFAULT_SCENE, Registry};
     use crate::ui::MarkerStyle;
     use crate::ui::action::Action;
-    use crate::ui::chart_kind::ChartKind;
     use crate::ui::style::Theme;
     use crate::ui::tab::Tab;
     use crate::ui::update::update;

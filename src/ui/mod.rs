@@ -16,7 +16,6 @@ mod app_daily_tests;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
-pub mod chart_kind;
 pub mod data_cursor;
 mod edited;
 pub mod export;
@@ -26,7 +25,6 @@ pub mod keymap;
 pub mod layout;
 mod mouse;
 pub mod picker;
-pub mod plot;
 pub mod render;
 mod runtime;
 pub mod screen;
@@ -37,8 +35,6 @@ pub mod style;
 pub mod tab;
 #[cfg(test)]
 mod testing;
-pub mod ticks;
-pub mod units;
 pub mod update;
 pub mod views;
 pub mod widgets;

@@ -10,7 +10,7 @@ use crate::model::force::{Damping, LAW_COUNT};
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
 
-use super::plot::{ChartDots, Series};
+use crate::chart::sample::{ChartDots, Series};
 
 /// One impact to solve off the UI thread.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,366 +1,15 @@
-//! The studies behind tabs 2–4 (work-precision, stability, sweep): requests, results and the
-//! bookkeeping of requests in flight, like [`Solutions`](super::solutions::Solutions) for impacts.
-//!
-//! A slot remembers the inputs of its latest request, so asking again with the same inputs computes
-//! nothing; every request gets a new generation and an outcome of an older one is stale. A study
-//! is computed by [`run`], which gives up (returns `None`) as soon as its `stop` says it was
-//! superseded.
+//! The bookkeeping of the explorer's studies in flight, like
+//! [`Solutions`](super::solutions::Solutions) for impacts: a slot remembers the inputs of its latest
+//! request, so asking again with the same inputs computes nothing; every request gets a new
+//! generation and an outcome of an older one is stale. The studies themselves run in
+//! [`crate::model::study::runner`].
 
 use std::sync::Arc;
 
-use crate::model::impact::{
-    ImpactError, ImpactSolution, ImpactSummary, MethodUsed, SolveOptions, solve_impact,
+use crate::model::study::runner::{
+    CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob, StudyKind,
+    StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
 };
-use crate::model::restitution::{
-    REQUESTED, RestitutionRow, realised_curve, requested_grid, table, velocity_curve, velocity_grid,
-};
-use crate::model::scene::Scene;
-use crate::model::study::reference::{SummaryErrors, reference, reference_solution};
-use crate::model::study::stability::{
-    StabilityRun, StepBound, critical_step, peak_angular_frequency, runs_at_step,
-    step_bounds_until, step_ratio,
-};
-use crate::model::study::sweep::{SweepRow, SweepSpec, sweep_until};
-use crate::model::study::timing::median_seconds;
-use crate::model::study::work_precision::{Timing, WorkPrecisionRow, work_precision_until};
-use crate::model::{ForceModel, ImpactParams};
-
-/// What a study computes, with all its inputs.
-#[derive(Debug, Clone, PartialEq)]
-pub enum StudySpec {
-    /// Every method over its ladder, for one model.
-    WorkPrecision {
-        model: ForceModel,
-        params: ImpactParams,
-    },
-    /// The explorer's own solve of one model, placed on the work-precision chart.
-    Current {
-        model: ForceModel,
-        params: ImpactParams,
-        options: SolveOptions,
-    },
-    /// Every fixed-step method at one step, over the reference.
-    Runs {
-        model: ForceModel,
-        params: ImpactParams,
-        dt: f64,
-    },
-    /// The measured largest bounded step of every fixed-step method.
-    Bounds {
-        model: ForceModel,
-        params: ImpactParams,
-    },
-    /// Boxed: a scene and a sweep are large beside the other studies' inputs.
-    Sweep {
-        scene: Box<Scene>,
-        spec: Box<SweepSpec>,
-    },
-    /// Realised against requested e, and e against v₀, for the checked models.
-    Restitution {
-        models: Vec<ForceModel>,
-        params: ImpactParams,
-    },
-}
-
-/// The kinds of study, one slot each.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum StudyKind {
-    WorkPrecision,
-    Current,
-    Runs,
-    Bounds,
-    Sweep,
-    Restitution,
-}
-
-impl StudyKind {
-    pub const ALL: [StudyKind; 6] = [
-        StudyKind::WorkPrecision,
-        StudyKind::Current,
-        StudyKind::Runs,
-        StudyKind::Bounds,
-        StudyKind::Sweep,
-        StudyKind::Restitution,
-    ];
-
-    pub fn index(self) -> usize {
-        StudyKind::ALL
-            .iter()
-            .position(|&k| k == self)
-            .unwrap_or_default()
-    }
-
-    /// Quick studies run first, so that a step change answers while a ladder is measured.
-    pub fn priority(self) -> u8 {
-        match self {
-            StudyKind::Current | StudyKind::Runs => 0,
-            StudyKind::Sweep | StudyKind::Restitution => 1,
-            StudyKind::Bounds => 2,
-            StudyKind::WorkPrecision => 3,
-        }
-    }
-}
-
-impl StudySpec {
-    pub fn kind(&self) -> StudyKind {
-        match self {
-            StudySpec::WorkPrecision { .. } => StudyKind::WorkPrecision,
-            StudySpec::Current { .. } => StudyKind::Current,
-            StudySpec::Runs { .. } => StudyKind::Runs,
-            StudySpec::Bounds { .. } => StudyKind::Bounds,
-            StudySpec::Sweep { .. } => StudyKind::Sweep,
-            StudySpec::Restitution { .. } => StudyKind::Restitution,
-        }
-    }
-}
-
-/// One study to compute off the UI thread.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StudyJob {
-    pub generation: u64,
-    pub spec: StudySpec,
-}
-
-/// The work-precision ladder of one model.
-#[derive(Debug, Clone, PartialEq)]
-pub struct WorkPrecisionData {
-    pub model: ForceModel,
-    pub reference: ImpactSummary,
-    pub rows: Vec<WorkPrecisionRow>,
-}
-
-/// The explorer's solve measured like a rung of the ladder.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CurrentPoint {
-    /// The explorer's settings (method choice, rtol, step).
-    pub options: SolveOptions,
-    /// The path the solve took (what `auto` chose).
-    pub method: MethodUsed,
-    pub errors: SummaryErrors,
-    pub force_evals: usize,
-    pub seconds_per_solve: f64,
-}
-
-/// One fixed-step method at the chosen step.
-#[derive(Debug, Clone)]
-pub struct MethodRun {
-    pub run: StabilityRun,
-    /// Theoretical critical step bound/ω_max, s (`None`: no stable step in theory).
-    pub critical_dt: Option<f64>,
-}
-
-/// The fixed-step methods at one step over the reference.
-#[derive(Debug, Clone)]
-pub struct StabilityData {
-    pub model: ForceModel,
-    pub dt: f64,
-    /// ω at the elastic maximum compression, rad/s: the stiffest point of the impact.
-    pub omega_max: f64,
-    /// h·ω_max of the chosen step.
-    pub step_ratio: f64,
-    pub reference: Arc<ImpactSolution>,
-    pub runs: Vec<MethodRun>,
-}
-
-/// A measured largest bounded step, with h·ω_max to compare with the theory's bound.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MeasuredBound {
-    pub bound: StepBound,
-    pub step_ratio: Option<f64>,
-}
-
-/// A finished sweep and what it swept.
-#[derive(Debug, Clone)]
-pub struct SweepData {
-    pub spec: SweepSpec,
-    pub rows: Vec<SweepRow>,
-}
-
-/// The restitution view's curves and table, per model in the order asked.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RestitutionData {
-    /// The scene's v₀, m/s, the middle of the velocity curves.
-    pub v0: f64,
-    /// (model, [(e requested, e realised)]).
-    pub realised: Vec<(ForceModel, Vec<(f64, f64)>)>,
-    /// (model, [(v₀, e realised)]) with the scene's damping coefficient held.
-    pub velocity: Vec<(ForceModel, Vec<(f64, f64)>)>,
-    /// The realised e for requested 0.1, 0.3, 0.5, 0.7, 0.9.
-    pub table: Vec<RestitutionRow>,
-}
-
-/// Points of each restitution curve.
-const RESTITUTION_POINTS: usize = 25;
-
-/// What a study produced; errors are kept as messages.
-#[derive(Debug, Clone)]
-pub enum StudyResult {
-    WorkPrecision(Result<Arc<WorkPrecisionData>, String>),
-    Current(Result<CurrentPoint, String>),
-    Runs(Result<Arc<StabilityData>, String>),
-    Bounds(Result<Arc<Vec<MeasuredBound>>, String>),
-    Sweep(Result<Arc<SweepData>, String>),
-    Restitution(Result<Arc<RestitutionData>, String>),
-}
-
-impl StudyResult {
-    pub fn kind(&self) -> StudyKind {
-        match self {
-            StudyResult::WorkPrecision(_) => StudyKind::WorkPrecision,
-            StudyResult::Current(_) => StudyKind::Current,
-            StudyResult::Runs(_) => StudyKind::Runs,
-            StudyResult::Bounds(_) => StudyKind::Bounds,
-            StudyResult::Sweep(_) => StudyKind::Sweep,
-            StudyResult::Restitution(_) => StudyKind::Restitution,
-        }
-    }
-}
-
-/// A finished study.
-#[derive(Debug, Clone)]
-pub struct StudyOutcome {
-    pub generation: u64,
-    pub result: StudyResult,
-}
-
-/// Timing effort of a work-precision rung in the explorer: a few repeats keep the tab quick.
-pub const TIMING: Timing = Timing {
-    min_repeats: 3,
-    min_total: std::time::Duration::from_millis(1),
-};
-
-fn message(e: ImpactError) -> String {
-    e.to_string()
-}
-
-/// Computes `job` on the calling thread; `None` when `stop` returned true on the way.
-pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutcome> {
-    let result = match &job.spec {
-        StudySpec::WorkPrecision { model, params } => {
-            let data =
-                work_precision_until(*model, params, TIMING, stop).map(|(reference, rows)| {
-                    Arc::new(WorkPrecisionData {
-                        model: *model,
-                        reference,
-                        rows,
-                    })
-                });
-            StudyResult::WorkPrecision(data.map_err(message))
-        }
-        StudySpec::Current {
-            model,
-            params,
-            options,
-        } => StudyResult::Current(current_point(*model, params, options).map_err(message)),
-        StudySpec::Runs { model, params, dt } => {
-            StudyResult::Runs(stability(*model, params, *dt).map_err(message))
-        }
-        StudySpec::Bounds { model, params } => StudyResult::Bounds(
-            reference(*model, params)
-                .map(|r| {
-                    let bounds = step_bounds_until(*model, params, &r, stop);
-                    Arc::new(
-                        bounds
-                            .into_iter()
-                            .map(|bound| MeasuredBound {
-                                step_ratio: bound.measured_dt.map(|dt| step_ratio(dt, params)),
-                                bound,
-                            })
-                            .collect(),
-                    )
-                })
-                .map_err(message),
-        ),
-        StudySpec::Sweep { scene, spec } => match sweep_until(scene, spec, stop) {
-            Ok(Some(rows)) => StudyResult::Sweep(Ok(Arc::new(SweepData {
-                spec: SweepSpec::clone(spec),
-                rows,
-            }))),
-            Ok(None) => return None,
-            Err(e) => StudyResult::Sweep(Err(e.to_string())),
-        },
-        StudySpec::Restitution { models, params } => match restitution_data(models, params, stop) {
-            Some(data) => StudyResult::Restitution(Ok(Arc::new(data))),
-            None => return None,
-        },
-    };
-    // A study cut short is incomplete: nobody wants it.
-    (!stop()).then_some(StudyOutcome {
-        generation: job.generation,
-        result,
-    })
-}
-
-/// The restitution curves and table of `models`, `None` once `stop` says so.
-fn restitution_data(
-    models: &[ForceModel],
-    params: &ImpactParams,
-    stop: &(dyn Fn() -> bool + Sync),
-) -> Option<RestitutionData> {
-    let opts = SolveOptions::default();
-    let requested = requested_grid(RESTITUTION_POINTS);
-    let velocities = velocity_grid(params.v0, RESTITUTION_POINTS);
-    let mut data = RestitutionData {
-        v0: params.v0,
-        realised: Vec::new(),
-        velocity: Vec::new(),
-        table: Vec::new(),
-    };
-    for &model in models {
-        if stop() {
-            return None;
-        }
-        data.realised
-            .push((model, realised_curve(model, params, &requested, &opts)));
-        data.velocity
-            .push((model, velocity_curve(model, params, &velocities, &opts)));
-    }
-    data.table = table(models, params, &REQUESTED, &opts);
-    Some(data)
-}
-
-fn current_point(
-    model: ForceModel,
-    params: &ImpactParams,
-    options: &SolveOptions,
-) -> Result<CurrentPoint, ImpactError> {
-    let reference = reference(model, params)?;
-    let solution = solve_impact(model, params, options)?;
-    Ok(CurrentPoint {
-        options: *options,
-        method: solution.summary.method,
-        errors: SummaryErrors::between(&solution.summary, &reference),
-        force_evals: solution.summary.force_evals,
-        seconds_per_solve: median_seconds(
-            || solve_impact(model, params, options),
-            TIMING.min_repeats,
-            TIMING.min_total,
-        ),
-    })
-}
-
-fn stability(
-    model: ForceModel,
-    params: &ImpactParams,
-    dt: f64,
-) -> Result<Arc<StabilityData>, ImpactError> {
-    let reference = reference_solution(model, params)?;
-    let runs = runs_at_step(model, params, &reference.summary, dt)
-        .into_iter()
-        .map(|run| MethodRun {
-            critical_dt: critical_step(run.method, params),
-            run,
-        })
-        .collect();
-    Ok(Arc::new(StabilityData {
-        model,
-        dt,
-        omega_max: peak_angular_frequency(params),
-        step_ratio: step_ratio(dt, params),
-        reference: Arc::new(reference),
-        runs,
-    }))
-}
 
 #[derive(Debug, Clone, Default)]
 struct Slot {
@@ -414,42 +63,42 @@ impl Studies {
         self.slots[kind.index()].shown.as_ref()
     }
 
-    pub fn work_precision(&self) -> Option<&Result<Arc<WorkPrecisionData>, String>> {
+    pub fn work_precision(&self) -> Option<&Result<Arc<WorkPrecisionData>, StudyError>> {
         match self.result(StudyKind::WorkPrecision) {
             Some(StudyResult::WorkPrecision(r)) => Some(r),
             _ => None,
         }
     }
 
-    pub fn current(&self) -> Option<&Result<CurrentPoint, String>> {
+    pub fn current(&self) -> Option<&Result<CurrentPoint, StudyError>> {
         match self.result(StudyKind::Current) {
             Some(StudyResult::Current(r)) => Some(r),
             _ => None,
         }
     }
 
-    pub fn runs(&self) -> Option<&Result<Arc<StabilityData>, String>> {
+    pub fn runs(&self) -> Option<&Result<Arc<StabilityData>, StudyError>> {
         match self.result(StudyKind::Runs) {
             Some(StudyResult::Runs(r)) => Some(r),
             _ => None,
         }
     }
 
-    pub fn bounds(&self) -> Option<&Result<Arc<Vec<MeasuredBound>>, String>> {
+    pub fn bounds(&self) -> Option<&Result<Arc<Vec<MeasuredBound>>, StudyError>> {
         match self.result(StudyKind::Bounds) {
             Some(StudyResult::Bounds(r)) => Some(r),
             _ => None,
         }
     }
 
-    pub fn sweep(&self) -> Option<&Result<Arc<SweepData>, String>> {
+    pub fn sweep(&self) -> Option<&Result<Arc<SweepData>, StudyError>> {
         match self.result(StudyKind::Sweep) {
             Some(StudyResult::Sweep(r)) => Some(r),
             _ => None,
         }
     }
 
-    pub fn restitution(&self) -> Option<&Result<Arc<RestitutionData>, String>> {
+    pub fn restitution(&self) -> Option<&Result<Arc<RestitutionData>, StudyError>> {
         match self.result(StudyKind::Restitution) {
             Some(StudyResult::Restitution(r)) => Some(r),
             _ => None,
@@ -460,6 +109,8 @@ impl Studies {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::ForceModel;
+    use crate::model::study::sweep::SweepError;
     use crate::ui::testing::fig5_params;
 
     fn bounds(v0: f64) -> StudySpec {
@@ -469,10 +120,11 @@ mod tests {
         }
     }
 
-    fn failed(job: &StudyJob, text: &str) -> StudyOutcome {
+    /// A failed outcome of `job`, told apart from others by `mark`.
+    fn failed(job: &StudyJob, mark: usize) -> StudyOutcome {
         StudyOutcome {
             generation: job.generation,
-            result: StudyResult::Bounds(Err(text.into())),
+            result: StudyResult::Bounds(Err(SweepError::TooFewPoints(mark).into())),
         }
     }
 
@@ -483,10 +135,13 @@ mod tests {
         assert_eq!(s.request(bounds(0.3)), None);
         assert!(s.is_pending(StudyKind::Bounds));
         let second = s.request(bounds(0.4)).unwrap();
-        assert!(!s.accept(failed(&first, "stale")));
-        assert!(s.accept(failed(&second, "fresh")));
+        assert!(!s.accept(failed(&first, 0)));
+        assert!(s.accept(failed(&second, 1)));
         assert!(!s.is_pending(StudyKind::Bounds));
-        assert!(matches!(s.bounds(), Some(Err(m)) if m == "fresh"));
+        assert!(matches!(
+            s.bounds(),
+            Some(Err(StudyError::Sweep(SweepError::TooFewPoints(1))))
+        ));
         // Other kinds are independent.
         assert!(s.runs().is_none());
         assert!(
@@ -498,38 +153,5 @@ mod tests {
             .is_some()
         );
         assert_eq!(s.request(bounds(0.4)), None, "answered: asks nothing again");
-    }
-
-    #[test]
-    fn a_stopped_study_reports_nothing() {
-        let job = StudyJob {
-            generation: 1,
-            spec: bounds(0.3),
-        };
-        assert!(run(&job, &|| true).is_none());
-    }
-
-    #[test]
-    fn runs_at_the_rk4_critical_step_judge_every_fixed_step_method() {
-        let p = fig5_params(0.3);
-        let dt = critical_step(crate::model::ode::Method::Rk4, &p).unwrap();
-        let job = StudyJob {
-            generation: 7,
-            spec: StudySpec::Runs {
-                model: ForceModel::Proposed,
-                params: p,
-                dt,
-            },
-        };
-        let outcome = run(&job, &|| false).unwrap();
-        assert_eq!(outcome.generation, 7);
-        let StudyResult::Runs(Ok(data)) = outcome.result else {
-            panic!("runs failed: {:?}", outcome.result);
-        };
-        assert_eq!(data.runs.len(), 4);
-        assert!((data.step_ratio - 8f64.sqrt()).abs() < 1e-9);
-        assert!(data.runs.iter().all(|r| r.run.dt == dt));
-        assert_eq!(data.runs[0].critical_dt, None, "explicit Euler has none");
-        assert_eq!(data.runs[3].critical_dt, Some(dt));
     }
 }

@@ -9,8 +9,8 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread;
 
-use super::studies::{StudyJob, StudyKind, StudyOutcome, run};
 use super::worker::panic_message;
+use crate::model::study::runner::{StudyJob, StudyKind, StudyOutcome, run};
 
 /// A report of the study worker: an outcome, or the message of a panic (a bug; the worker stops).
 pub type StudyReport = Result<StudyOutcome, String>;
@@ -102,7 +102,7 @@ fn take_next(queue: &mut Vec<StudyJob>) -> Option<StudyJob> {
 mod tests {
     use super::*;
     use crate::model::ForceModel;
-    use crate::ui::studies::StudySpec;
+    use crate::model::study::runner::StudySpec;
     use crate::ui::testing::fig5_params;
 
     fn kinds(queue: &[StudyJob]) -> Vec<StudyKind> {

@@ -3,13 +3,13 @@
 //! chart) is drawn within one cell of where the chart's own tick labels put it. Everything is read
 //! back from the rendered buffer: the axis lines, the labels and the glyph.
 
+use hertz_tui::chart::sweep as sweep_plot;
+use hertz_tui::chart::work_precision::{self as wp_plot, Cost};
 use hertz_tui::model::ForceModel;
 use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::{App, ChartKind};
 use hertz_tui::ui::tab::Tab;
 use hertz_tui::ui::update::update;
-use hertz_tui::ui::views::sweep::plot as sweep_plot;
-use hertz_tui::ui::views::work_precision::plot::{self as wp_plot, Cost};
 use ratatui::buffer::Buffer;
 
 use super::render::{app, render, settle};

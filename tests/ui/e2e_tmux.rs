@@ -15,10 +15,10 @@ use std::process::{Command, Output};
 use std::thread;
 use std::time::{Duration, Instant};
 
+use hertz_tui::format::units::sig;
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::impact::{SolveOptions, solve_impact};
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
-use hertz_tui::ui::units::sig;
 
 const WIDTH: u16 = 100;
 const HEIGHT: u16 = 30;

@@ -7,12 +7,12 @@ use std::time::Duration;
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
 use hertz_tui::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use hertz_tui::model::study::runner::{self, StudyOutcome, StudyResult, WorkPrecisionData};
 use hertz_tui::ui::MarkerStyle;
 use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::{App, Cursor};
 use hertz_tui::ui::field::Field;
 use hertz_tui::ui::render::draw;
-use hertz_tui::ui::studies::{self, StudyOutcome, StudyResult, WorkPrecisionData};
 use hertz_tui::ui::style::Theme;
 use hertz_tui::ui::tab::Tab;
 use hertz_tui::ui::update::update;
@@ -49,7 +49,7 @@ pub fn settle(app: &mut App) {
             update(app, Action::Solved(Ok(worker::solve(&job))));
         }
         for job in studies {
-            if let Some(outcome) = studies::run(&job, &|| false) {
+            if let Some(outcome) = runner::run(&job, &|| false) {
                 update(app, Action::Studied(Ok(without_wall_times(outcome))));
             }
         }
@@ -208,7 +208,7 @@ fn results_show_every_checked_model_and_the_hertz_estimate() {
     for model in app.checked_models() {
         assert!(screen.contains(model.label()), "{model}");
         let x_max = app.solutions.solution(model).unwrap().summary.x_max;
-        let shown = hertz_tui::ui::units::sig(x_max * 1e6, 4);
+        let shown = hertz_tui::format::units::sig(x_max * 1e6, 4);
         assert!(screen.contains(&shown), "{model}: x_max {shown} µm");
     }
     assert!(screen.contains("Hertz estimate"));
@@ -305,7 +305,7 @@ fn an_edit_changes_the_charts_and_the_results() {
         .unwrap()
         .summary
         .x_max;
-    assert!(after.contains(&hertz_tui::ui::units::sig(x_max * 1e6, 4)));
+    assert!(after.contains(&hertz_tui::format::units::sig(x_max * 1e6, 4)));
     assert!(after.contains("v₀     0.05 m/s"));
 }
 
@@ -668,7 +668,8 @@ fn the_data_cursor_reads_each_curve_at_its_place() {
     for model in [ForceModel::Proposed, ForceModel::HuntCrossley] {
         let solution = app.solutions.solution(model).unwrap();
         let f = solution.trajectory.at(t).f;
-        let expected = hertz_tui::ui::units::engineering(f, hertz_tui::ui::units::NEWTON, 4);
+        let expected =
+            hertz_tui::format::units::engineering(f, hertz_tui::format::units::NEWTON, 4);
         assert!(
             line.contains(&expected),
             "{model:?} F({t}) = {expected} in {line}"
@@ -781,7 +782,7 @@ fn a_click_on_a_chart_places_the_data_cursor_there() {
 #[test]
 fn the_data_cursor_readout_fits_whole_readings_at_every_size() {
     use hertz_tui::chart::model_glyph;
-    use hertz_tui::ui::units::{NEWTON, engineering, sig};
+    use hertz_tui::format::units::{NEWTON, engineering, sig};
     for (w, h) in [(80, 24), (120, 40), (160, 48), (200, 24)] {
         let mut app = app();
         update(&mut app, Action::Resize(w, h));
@@ -881,7 +882,7 @@ fn narrow_study_headers_shorten_instead_of_cutting() {
         );
     }
     update(&mut app, Action::Tab(Tab::named("sweep").unwrap()));
-    app.sweep.output = hertz_tui::ui::views::sweep::settings::SweepOutput::EOut;
+    app.sweep.output = hertz_tui::chart::sweep::SweepOutput::EOut;
     let screen = text(render(&app, 80, 24).backend().buffer());
     let output = screen
         .lines()

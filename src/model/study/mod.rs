@@ -1,6 +1,7 @@
 //! Studies over many solves: speed against accuracy, stability of fixed-step methods, parameter sweeps.
 
 pub mod reference;
+pub mod runner;
 pub mod stability;
 pub mod sweep;
 pub mod timing;

@@ -9,7 +9,7 @@ use crate::model::force::ImpactParams;
 use crate::model::impact::{SolveOptions, solve_impact};
 use crate::model::quasistatic::ContactGeometry;
 use crate::model::scene::{Scene, SceneBodies};
-use crate::model::scene_key::{SceneKey, SceneKeyError};
+use crate::model::scene_key::{BodyField, BodyIndex, SceneKey, SceneKeyError};
 
 /// What to sweep and how.
 #[derive(Debug, Clone, PartialEq)]
@@ -224,6 +224,50 @@ fn impact_point(model: ForceModel, params: &ImpactParams, options: &SolveOptions
             error: Some(e.to_string()),
         },
     }
+}
+
+/// The swept interval and its spacing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SweepRange {
+    pub from: f64,
+    pub to: f64,
+    pub log: bool,
+}
+
+/// The key's value in `scene`, with a derived mass as its value (`None`: the key does not apply).
+pub fn value_of(key: SceneKey, scene: &Scene) -> Option<f64> {
+    let value = match key {
+        SceneKey::Body(index, BodyField::Mass) => Some(match index {
+            BodyIndex::One => scene.body1.mass(),
+            BodyIndex::Two => scene.body2.mass(),
+        }),
+        _ => key.get(scene),
+    }?;
+    // A plane's mass is infinite: there is nothing to sweep.
+    value.is_finite().then_some(value)
+}
+
+/// The keys a sweep of `scene` can vary, in [`SceneKey::all`] order.
+pub fn sweepable_keys(scene: &Scene) -> Vec<SceneKey> {
+    SceneKey::all()
+        .into_iter()
+        .filter(|&k| value_of(k, scene).is_some())
+        .collect()
+}
+
+/// A range around the scene's value: v₀/100 … 10·v₀ on a log scale for v₀, a decade either side
+/// for sizes, masses and moduli, the whole admissible interval for e and ν, 0 … 2·x_pl for x_pl.
+pub fn default_range(key: SceneKey, scene: &Scene) -> Option<SweepRange> {
+    let value = value_of(key, scene)?;
+    let range = |from, to, log| SweepRange { from, to, log };
+    Some(match key {
+        SceneKey::V0 => range(value / 100.0, value * 10.0, true),
+        SceneKey::Restitution => range(0.05, 1.0, false),
+        SceneKey::PlasticIndentation if value > 0.0 => range(0.0, 2.0 * value, false),
+        SceneKey::PlasticIndentation => range(0.0, 1e-5, false),
+        SceneKey::Body(_, BodyField::PoissonRatio) => range(0.0, 0.49, false),
+        SceneKey::Body(..) => range(value / 10.0, value * 10.0, true),
+    })
 }
 
 #[cfg(test)]

@@ -1,9 +1,9 @@
-//! The chart marker chosen on the command line (`--marker`), for fonts that lack braille.
+//! The chart marker (the command line's `--marker`), for fonts that lack braille.
 
 use ratatui::symbols::Marker;
 
 /// How chart points are drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum MarkerStyle {
     /// Braille patterns: 2×4 dots per cell, the finest resolution.
     #[default]

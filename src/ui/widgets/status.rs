@@ -7,9 +7,9 @@ use ratatui::Frame;
 use ratatui::layout::{Direction, Rect};
 use ratatui::text::{Line, Span};
 
+use crate::format::units;
 use crate::ui::app::{App, Mode};
 use crate::ui::style::Role;
-use crate::ui::units;
 use crate::ui::views::{self, Hints};
 
 use super::common::{draw_lines, split_lengths};

@@ -12,9 +12,9 @@ use crate::model::ForceModel;
 use crate::model::impact::Sample;
 use crate::ui::app::{App, ChartKind};
 use crate::ui::data_cursor::{self, FULL};
-use crate::ui::plot::{Look, Series, plot};
+use crate::chart::sample::{Look, Series, plot};
 use crate::ui::style::{Role, Theme};
-use crate::ui::units::{self, METRE, METRE_PER_SECOND, NEWTON, SECOND};
+use crate::format::units::{self, METRE, METRE_PER_SECOND, NEWTON, SECOND};
 use crate::ui::widgets::common::{model_name, pane, span};
 use crate::ui::widgets::graph;
 

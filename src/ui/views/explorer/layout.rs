@@ -4,9 +4,9 @@
 use ratatui::layout::{Constraint, Layout, Rect};
 
 use crate::ui::MarkerStyle;
-use crate::ui::chart_kind::ChartKind;
+use crate::chart::kind::ChartKind;
 use crate::ui::layout::{Screen, Y_AXIS_ALLOWANCE, left_width, screen};
-use crate::ui::plot::ChartDots;
+use crate::chart::sample::ChartDots;
 use crate::ui::widgets::{graph, models};
 
 /// The least height of the models pane on a roomy screen.
@@ -135,6 +135,15 @@ fn chart_grid(area: Rect, first: ChartKind) -> Vec<(ChartKind, Rect)> {
 mod tests {
     use super::*;
     use crate::ui::layout::tests::inside;
+
+    /// The chart sampling's own tests measure their lines on the plots this layout gives at
+    /// 160×48 (`chart::sample`'s fixture): they must be the same.
+    #[test]
+    fn the_chart_samples_are_measured_on_this_layouts_plots() {
+        let dots = chart_dots(Rect::new(0, 0, 160, 48), MarkerStyle::Braille).expect("160×48 fits");
+        assert_eq!(dots, crate::chart::sample::tests::EXPLORER_160X48);
+        assert_eq!(dots.stride(), crate::chart::sample::STRIDE);
+    }
 
     #[test]
     fn the_models_pane_takes_what_the_form_leaves_up_to_its_list() {

@@ -15,7 +15,7 @@ use ratatui::layout::Position;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget};
-use crate::ui::chart_kind::ChartKind;
+use crate::chart::kind::ChartKind;
 use crate::ui::field::Nudge;
 use crate::ui::layout::Screen;
 use crate::ui::widgets::models;

@@ -10,7 +10,7 @@ use crate::model::recommend::recommend;
 use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::style::Role;
-use crate::ui::units::sig;
+use crate::format::units::sig;
 use crate::ui::widgets::common::{NameForm, draw_lines, flow, pane, wrap};
 
 /// A short name of a regime for the regime line.

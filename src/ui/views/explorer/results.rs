@@ -15,7 +15,7 @@ use crate::model::impact::ImpactSummary;
 use crate::model::quasistatic::ContactGeometry;
 use crate::ui::app::App;
 use crate::ui::style::{Role, Theme};
-use crate::ui::units::{self, sig};
+use crate::format::units::{self, sig};
 use crate::ui::widgets::common::{draw_lines, flow, model_name, pane, span, split_lengths};
 use crate::ui::widgets::table::draw_table;
 

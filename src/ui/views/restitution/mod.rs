@@ -1,15 +1,15 @@
 //! Tab 5: realised against requested restitution, and e against v₀, for the checked models.
 
-pub mod plot;
 mod render;
 
+use crate::chart::restitution as plot;
 use ratatui::Frame;
 
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, Valid};
 use crate::ui::layout::Screen;
-use crate::ui::studies::{StudyKind, StudySpec};
+use crate::model::study::runner::{StudyKind, StudySpec};
 
 use super::{FIGURE_TICKS, Hints, View};
 

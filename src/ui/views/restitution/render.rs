@@ -13,13 +13,13 @@ use crate::format::{Zeros, significant};
 use crate::model::restitution::REQUESTED;
 use crate::ui::app::App;
 use crate::ui::layout::{Screen, left_width};
-use crate::ui::studies::{RestitutionData, StudyKind};
+use crate::model::study::runner::{RestitutionData, StudyKind};
 use crate::ui::style::Role;
 use crate::ui::widgets::common::{model_name, pane, span};
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
 
-use super::plot;
+use crate::chart::restitution as plot;
 
 pub fn render(frame: &mut Frame, screen: &Screen, app: &App) {
     let [left, right] = Layout::horizontal([
@@ -31,7 +31,7 @@ pub fn render(frame: &mut Frame, screen: &Screen, app: &App) {
     let computing = app.studies.is_pending(StudyKind::Restitution);
     let data = match app.studies.restitution() {
         Some(Ok(data)) => data.clone(),
-        Some(Err(e)) => return note(frame, right, app, screen.roomy, e),
+        Some(Err(e)) => return note(frame, right, app, screen.roomy, &e.to_string()),
         None => {
             let text = if computing {
                 "computing…"

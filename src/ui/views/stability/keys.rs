@@ -3,7 +3,7 @@
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget};
 use crate::ui::field::Nudge;
-use crate::ui::units;
+use crate::format::units;
 
 /// Smallest and largest step the stability view accepts, s: beyond them a fixed-step solve only
 /// exhausts its step budget or takes one step for the whole impact.

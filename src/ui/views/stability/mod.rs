@@ -2,9 +2,9 @@
 //! method over the reference.
 
 mod keys;
-pub mod plot;
 mod render;
 
+use crate::chart::stability as plot;
 use ratatui::Frame;
 
 use crate::chart::Chart;
@@ -12,9 +12,9 @@ use crate::model::ode::Method;
 use crate::model::study::stability::critical_step;
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget, Valid};
-use crate::ui::chart_kind::ChartKind;
+use crate::chart::kind::ChartKind;
 use crate::ui::layout::Screen;
-use crate::ui::studies::{StudyKind, StudySpec};
+use crate::model::study::runner::{StudyKind, StudySpec};
 
 use super::{FIGURE_COLUMNS, FIGURE_TICKS, Hints, View};
 

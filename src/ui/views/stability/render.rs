@@ -14,15 +14,15 @@ use crate::model::ode::Method;
 use crate::model::study::reference::REFERENCE_RTOL;
 use crate::model::study::stability::{Verdict, stability_bound};
 use crate::ui::app::{App, ChartKind, EditTarget, Mode};
-use crate::ui::studies::{MeasuredBound, MethodRun, StabilityData, StudyKind};
+use crate::model::study::runner::{MeasuredBound, MethodRun, StabilityData, StudyKind};
 use crate::ui::style::{Role, Theme, sample};
-use crate::ui::units::{self, sig};
+use crate::format::units::{self, sig};
 use crate::ui::views;
 use crate::ui::widgets::common::{pane, span, wrap};
 use crate::ui::widgets::editable;
 use crate::ui::widgets::graph::{self, budget};
 
-use super::plot::{self, Curve};
+use crate::chart::stability::{self as plot, Curve};
 
 /// The name cell of a curve: its glyph sample and name in its ink.
 fn name_cell(curve: Curve, text: &str, theme: Theme, narrow: bool) -> Cell<'static> {

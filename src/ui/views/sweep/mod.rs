@@ -2,10 +2,10 @@
 
 mod keys;
 pub mod layout;
-pub mod plot;
 mod render;
 pub mod settings;
 
+use crate::chart::sweep as plot;
 use ratatui::Frame;
 use ratatui::layout::Rect;
 
@@ -13,9 +13,9 @@ use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget, Valid};
 use crate::ui::layout::Screen;
-use crate::ui::studies::{StudyKind, StudySpec};
+use crate::model::study::runner::{StudyKind, StudySpec};
 
-use plot::SweepSet;
+use crate::chart::sweep::SweepSet;
 
 use super::{FIGURE_TICKS, Hints, View};
 

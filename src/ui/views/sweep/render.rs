@@ -10,7 +10,7 @@ use crate::model::Scene;
 use crate::model::scene_key::SceneKey;
 use crate::ui::app::{App, EditTarget, Mode};
 use crate::ui::layout::Screen;
-use crate::ui::studies::{StudyKind, SweepData};
+use crate::model::study::runner::{StudyKind, SweepData};
 use crate::ui::style::Role;
 use crate::ui::widgets::common::{pane, span, wrap};
 use crate::ui::widgets::editable;
@@ -18,7 +18,7 @@ use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
 
 use super::layout::sweep_areas;
-use super::plot;
+use crate::chart::sweep as plot;
 use super::settings::SweepField;
 
 /// Width of the label column of the sweep form.

@@ -4,10 +4,11 @@
 use crate::model::ForceModel;
 use crate::model::impact::SolveOptions;
 use crate::model::scene::Scene;
-use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
-use crate::model::study::sweep::{SweepRow, SweepSpec};
-use crate::ui::field::{Field, Nudge, nudged};
-use crate::ui::units::{self, Unit};
+use crate::format::units::{self, key_unit};
+use crate::model::scene_key::SceneKey;
+use crate::chart::sweep::SweepOutput;
+use crate::model::study::sweep::{SweepRange, SweepSpec, default_range, sweepable_keys};
+use crate::ui::field::{Nudge, nudged};
 
 /// The rows of the sweep form, in cursor order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -61,116 +62,13 @@ impl SweepField {
     }
 }
 
-/// What the sweep chart draws against the parameter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SweepOutput {
-    /// Maximum contact pressure p₀ of the quasistatic estimate (the paper's Fig. 2).
-    PeakPressure,
-    /// Contact radius (point contact) or half-width (line contact) of the estimate.
-    ContactSize,
-    XMax,
-    FMax,
-    TContact,
-    VOut,
-    EOut,
-}
-
-impl SweepOutput {
-    pub const ALL: [SweepOutput; 7] = [
-        SweepOutput::PeakPressure,
-        SweepOutput::ContactSize,
-        SweepOutput::XMax,
-        SweepOutput::FMax,
-        SweepOutput::TContact,
-        SweepOutput::VOut,
-        SweepOutput::EOut,
-    ];
-
-    /// The symbol on the axis and in the form.
-    pub fn symbol(self) -> &'static str {
-        match self {
-            SweepOutput::PeakPressure => "p₀",
-            SweepOutput::ContactSize => "a | b",
-            SweepOutput::XMax => "x_max",
-            SweepOutput::FMax => "F_max",
-            SweepOutput::TContact => "t_c",
-            SweepOutput::VOut => "v_out",
-            SweepOutput::EOut => "e_out",
-        }
-    }
-
-    /// What it is, for the form.
-    pub fn description(self) -> &'static str {
-        match self {
-            SweepOutput::PeakPressure => "max pressure (Hertz)",
-            SweepOutput::ContactSize => "contact radius | half-width",
-            SweepOutput::XMax => "max approach",
-            SweepOutput::FMax => "max force",
-            SweepOutput::TContact => "contact time",
-            SweepOutput::VOut => "exit speed",
-            SweepOutput::EOut => "realized restitution",
-        }
-    }
-
-    pub fn unit(self) -> Unit {
-        match self {
-            SweepOutput::PeakPressure => units::PASCAL,
-            SweepOutput::ContactSize | SweepOutput::XMax => units::METRE,
-            SweepOutput::FMax => units::NEWTON,
-            SweepOutput::TContact => units::SECOND,
-            SweepOutput::VOut => units::METRE_PER_SECOND,
-            SweepOutput::EOut => units::DIMENSIONLESS,
-        }
-    }
-
-    /// Whether each model has its own value (else the quasistatic estimate has one per point).
-    pub fn per_model(self) -> bool {
-        !matches!(self, SweepOutput::PeakPressure | SweepOutput::ContactSize)
-    }
-
-    /// The quasistatic value at a row.
-    pub fn estimate(self, row: &SweepRow) -> Option<f64> {
-        let q = row.quasistatic.as_ref()?;
-        match self {
-            SweepOutput::PeakPressure => Some(q.p_max),
-            SweepOutput::ContactSize => q.contact_radius.or(q.half_width),
-            _ => None,
-        }
-    }
-
-    /// The value of `model` at a row.
-    pub fn of_model(self, row: &SweepRow, model: ForceModel) -> Option<f64> {
-        let point = row.impacts.iter().find(|p| p.model == model)?;
-        match self {
-            SweepOutput::XMax => point.x_max,
-            SweepOutput::FMax => point.f_max,
-            SweepOutput::TContact => point.t_contact,
-            SweepOutput::VOut => point.v_out,
-            SweepOutput::EOut => point.e_out,
-            SweepOutput::PeakPressure | SweepOutput::ContactSize => None,
-        }
-    }
-
-    fn step(self, direction: Nudge) -> SweepOutput {
-        cycle(&SweepOutput::ALL, self, direction)
-    }
-}
-
-/// The swept interval and its spacing.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Range {
-    pub from: f64,
-    pub to: f64,
-    pub log: bool,
-}
-
 /// Everything the sweep form sets.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepSettings {
     pub key: SceneKey,
     pub output: SweepOutput,
     /// A range the user set; `None` follows the scene (see [`default_range`]).
-    pub custom: Option<Range>,
+    pub custom: Option<SweepRange>,
     /// A number of points the user set; `None` sizes the sweep to the chart.
     pub points: Option<usize>,
 }
@@ -190,60 +88,9 @@ impl Default for SweepSettings {
 /// Fewest points of a sweep (a line needs two).
 pub const MIN_POINTS: usize = 2;
 
-/// The key's value in `scene`, with a derived mass as its value (`None`: the key does not apply).
-pub fn value_of(key: SceneKey, scene: &Scene) -> Option<f64> {
-    let value = match key {
-        SceneKey::Body(index, BodyField::Mass) => Some(match index {
-            BodyIndex::One => scene.body1.mass(),
-            BodyIndex::Two => scene.body2.mass(),
-        }),
-        _ => key.get(scene),
-    }?;
-    // A plane's mass is infinite: there is nothing to sweep.
-    value.is_finite().then_some(value)
-}
-
-/// The keys a sweep of `scene` can vary, in [`SceneKey::all`] order.
-pub fn sweepable_keys(scene: &Scene) -> Vec<SceneKey> {
-    SceneKey::all()
-        .into_iter()
-        .filter(|&k| value_of(k, scene).is_some())
-        .collect()
-}
-
-/// A range around the scene's value: v₀/100 … 10·v₀ on a log scale for v₀, a decade either side
-/// for sizes, masses and moduli, the whole admissible interval for e and ν, 0 … 2·x_pl for x_pl.
-pub fn default_range(key: SceneKey, scene: &Scene) -> Option<Range> {
-    let value = value_of(key, scene)?;
-    let range = |from, to, log| Range { from, to, log };
-    Some(match key {
-        SceneKey::V0 => range(value / 100.0, value * 10.0, true),
-        SceneKey::Restitution => range(0.05, 1.0, false),
-        SceneKey::PlasticIndentation if value > 0.0 => range(0.0, 2.0 * value, false),
-        SceneKey::PlasticIndentation => range(0.0, 1e-5, false),
-        SceneKey::Body(_, BodyField::PoissonRatio) => range(0.0, 0.49, false),
-        SceneKey::Body(..) => range(value / 10.0, value * 10.0, true),
-    })
-}
-
-/// The short name of a key on an axis: `v₀`, `R₁`, `E₂`.
-pub fn key_symbol(key: SceneKey) -> String {
-    let label = Field::Number(key).label();
-    match key {
-        SceneKey::Body(BodyIndex::One, _) => format!("{label}₁"),
-        SceneKey::Body(BodyIndex::Two, _) => format!("{label}₂"),
-        _ => label.to_string(),
-    }
-}
-
-/// The unit a key's values are typed and shown in.
-pub fn key_unit(key: SceneKey) -> Unit {
-    Field::Number(key).unit()
-}
-
 impl SweepSettings {
     /// The range swept in `scene`: the user's, else the default; `None` if the key does not apply.
-    pub fn range(&self, scene: &Scene) -> Option<Range> {
+    pub fn range(&self, scene: &Scene) -> Option<SweepRange> {
         self.custom.or_else(|| default_range(self.key, scene))
     }
 
@@ -394,7 +241,7 @@ impl SweepSettings {
                 // A new parameter starts from its own default range.
                 self.custom = None;
             }
-            SweepField::Output => self.output = self.output.step(direction),
+            SweepField::Output => self.output = cycle(&SweepOutput::ALL, self.output, direction),
             SweepField::Scale => {
                 if let Some(mut range) = self.range(scene) {
                     range.log = !range.log;
@@ -447,6 +294,9 @@ fn cycle<T: Copy + PartialEq>(choices: &[T], current: T, direction: Nudge) -> T 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::format::units::key_symbol;
+    use crate::model::scene_key::{BodyField, BodyIndex};
+    use crate::model::study::sweep::SweepRow;
     use crate::ui::testing::fig5_scene;
 
     #[test]
@@ -484,7 +334,7 @@ mod tests {
         assert!(!keys.contains(&SceneKey::Body(BodyIndex::One, BodyField::Length)));
         // Cycling the parameter visits them in order and resets the range.
         let mut s = SweepSettings {
-            custom: Some(Range {
+            custom: Some(SweepRange {
                 from: 1.0,
                 to: 2.0,
                 log: false,
@@ -496,7 +346,7 @@ mod tests {
         assert_eq!(s.custom, None);
         assert_eq!(
             s.range(&scene),
-            Some(Range {
+            Some(SweepRange {
                 from: 0.05,
                 to: 1.0,
                 log: false

@@ -1,17 +1,17 @@
 //! Tab 2: error against cost of every method for the focused model.
 
-pub mod plot;
 mod render;
 
+use crate::chart::work_precision as plot;
 use ratatui::Frame;
 
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, Valid};
 use crate::ui::layout::Screen;
-use crate::ui::studies::{StudyKind, StudySpec};
+use crate::model::study::runner::{StudyKind, StudySpec};
 
-use plot::Cost;
+use crate::chart::work_precision::Cost;
 
 use super::{FIGURE_TICKS, Hints, View};
 

@@ -13,14 +13,14 @@ use crate::model::impact::{MethodChoice, MethodUsed};
 use crate::model::study::reference::REFERENCE_RTOL;
 use crate::model::study::stability::FIXED_STEP_METHODS;
 use crate::ui::app::App;
-use crate::ui::studies::{CurrentPoint, WorkPrecisionData};
+use crate::model::study::runner::{CurrentPoint, WorkPrecisionData};
 use crate::ui::style::{Role, Theme, sample};
-use crate::ui::units::{self, sig};
+use crate::format::units::{self, sig};
 use crate::ui::views;
 use crate::ui::widgets::common::{flow, pane, span, wrap};
 use crate::ui::widgets::graph::{self, budget};
 
-use super::plot::{self, CURRENT_GLYPH, Cost, ERROR_FLOOR};
+use crate::chart::work_precision::{self as plot, CURRENT_GLYPH, Cost, ERROR_FLOOR};
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let theme = app.theme;

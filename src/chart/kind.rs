@@ -15,7 +15,7 @@ impl ChartKind {
         ChartKind::ForceTime,
     ];
 
-    pub(super) fn next(self) -> ChartKind {
+    pub fn next(self) -> ChartKind {
         let i = ChartKind::ALL.iter().position(|&c| c == self).unwrap_or(0);
         ChartKind::ALL[(i + 1) % ChartKind::ALL.len()]
     }

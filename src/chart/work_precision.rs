@@ -2,12 +2,12 @@
 //! against log₁₀ seconds per solve or log₁₀ force evaluations, one line per method in ladder
 //! order; failed rungs are listed, not drawn.
 
+use crate::chart::ticks::nice_axis;
 use crate::chart::{Chart, Ink, Mark, Series, method_glyph};
+use crate::format::units::{self, sig};
 use crate::model::ode::Method;
+use crate::model::study::runner::{CurrentPoint, WorkPrecisionData};
 use crate::model::study::work_precision::{Setting, WorkPrecisionRow};
-use crate::ui::studies::{CurrentPoint, WorkPrecisionData};
-use crate::ui::ticks::nice_axis;
-use crate::ui::units::{self, sig};
 
 /// The glyph of the explorer's own solve on the work-precision charts.
 pub const CURRENT_GLYPH: char = '█';

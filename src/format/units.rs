@@ -1,8 +1,9 @@
-//! Quantities at the UI edge: parsing what the user types (`200G`, `2e11`, `10 mm`, `0.3 m/s`)
+//! Quantities at the edges (the explorer, the command line, figures): parsing what the user types (`200G`, `2e11`, `10 mm`, `0.3 m/s`)
 //! into SI values, and formatting SI values in engineering units (µm, µs, N, GPa …) by
 //! [`crate::format`], the formatter the command line uses too.
 
 use crate::format::{self, Zeros};
+use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
 
 pub use crate::format::{
     ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, PICO, Prefix, TERA,
@@ -236,6 +237,50 @@ pub fn engineering(value_si: f64, unit: Unit, digits: usize) -> String {
         format::engineering(value, unit.symbol, digits, Zeros::Trim)
     } else {
         format::with_unit(sig(value, digits), "", unit.symbol)
+    }
+}
+
+/// The symbol of a scene key as the form and the axes write it: `v₀`, `R`, `σ_y`.
+pub fn key_label(key: SceneKey) -> &'static str {
+    match key {
+        SceneKey::V0 => "v₀",
+        SceneKey::Restitution => "e",
+        SceneKey::PlasticIndentation => "x_pl",
+        SceneKey::Body(_, field) => match field {
+            BodyField::Radius => "R",
+            BodyField::Length => "L",
+            BodyField::Mass => "mass",
+            BodyField::YoungsModulus => "E",
+            BodyField::PoissonRatio => "ν",
+            BodyField::YieldStress => "σ_y",
+            BodyField::Density => "ρ",
+        },
+    }
+}
+
+/// The short name of a key on an axis: `v₀`, `R₁`, `E₂`.
+pub fn key_symbol(key: SceneKey) -> String {
+    let label = key_label(key);
+    match key {
+        SceneKey::Body(BodyIndex::One, _) => format!("{label}₁"),
+        SceneKey::Body(BodyIndex::Two, _) => format!("{label}₂"),
+        _ => label.to_string(),
+    }
+}
+
+/// The unit a key's values are typed and shown in.
+pub fn key_unit(key: SceneKey) -> Unit {
+    match key {
+        SceneKey::V0 => METRE_PER_SECOND,
+        SceneKey::Restitution => DIMENSIONLESS,
+        SceneKey::PlasticIndentation => METRE,
+        SceneKey::Body(_, field) => match field {
+            BodyField::Radius | BodyField::Length => METRE,
+            BodyField::Mass => GRAM,
+            BodyField::YoungsModulus | BodyField::YieldStress => PASCAL,
+            BodyField::PoissonRatio => DIMENSIONLESS,
+            BodyField::Density => KG_PER_CUBIC_METRE,
+        },
     }
 }
 

@@ -6,7 +6,7 @@
 
 use crate::format::{self, Zeros};
 
-use super::units::{self, Prefix, Unit};
+use crate::format::units::{self, Prefix, Unit};
 
 /// The longest plain tick label: a longer one (5000000000000001830474) is scientific (5e21).
 const PLAIN_LABEL: usize = 6;
@@ -258,7 +258,7 @@ fn decimals_of(step: f64) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ui::units::{METRE, METRE_PER_SECOND, NEWTON, PASCAL, SECOND};
+    use crate::format::units::{METRE, METRE_PER_SECOND, NEWTON, PASCAL, SECOND};
 
     fn values(axis: &NiceAxis) -> Vec<f64> {
         axis.labels.iter().map(|l| l.parse().unwrap()).collect()

@@ -2,12 +2,12 @@
 //! requested e with the identity line, and realised e against v₀ with the damping coefficient held,
 //! v_y and v_p as rules.
 
+use crate::chart::ticks::{NiceAxis, log_axis, nice_axis};
 use crate::chart::{Chart, Ink, Rule, Series, model_glyph};
+use crate::format::units::{DIMENSIONLESS, METRE_PER_SECOND};
 use crate::model::ForceModel;
 use crate::model::pressure::YieldOnset;
-use crate::ui::studies::RestitutionData;
-use crate::ui::ticks::{NiceAxis, log_axis, nice_axis};
-use crate::ui::units::{DIMENSIONLESS, METRE_PER_SECOND};
+use crate::model::study::runner::RestitutionData;
 
 /// The glyph of the identity line e_out = e.
 const IDENTITY_GLYPH: char = '=';

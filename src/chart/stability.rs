@@ -2,13 +2,13 @@
 //! marked, under the reference drawn on top (so a method that tracks it shows as the reference's
 //! line with the method's steps on it, and one that departs shows beside it).
 
+use crate::chart::kind::ChartKind;
+use crate::chart::sample::{Look, Series, plot};
 use crate::chart::{Chart, Ink, REFERENCE_GLYPH, method_glyph};
+use crate::format::units::sig;
 use crate::model::ode::Method;
+use crate::model::study::runner::{MethodRun, StabilityData};
 use crate::model::study::stability::Verdict;
-use crate::ui::chart_kind::ChartKind;
-use crate::ui::plot::{Look, Series, plot};
-use crate::ui::studies::{MethodRun, StabilityData};
-use crate::ui::units::sig;
 
 /// Whose curve: the reference or a fixed-step method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -106,7 +106,7 @@ pub fn chart(
             Verdict::Diverged { t, .. } => format!(
                 "✗ {}: diverged at t = {}",
                 r.run.method,
-                crate::ui::units::engineering(*t, crate::ui::units::SECOND, 3)
+                crate::format::units::engineering(*t, crate::format::units::SECOND, 3)
             ),
             Verdict::Failed { reason } => format!("✗ {}: {reason}", r.run.method),
             _ => format!("✗ {}: no curve", r.run.method),

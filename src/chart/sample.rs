@@ -8,9 +8,9 @@ use std::borrow::Borrow;
 
 use crate::chart::{Chart, Ink, Series as ChartSeries};
 
-use super::chart_kind::ChartKind;
+use super::kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
-use super::units::{self, Unit};
+use crate::format::units::{self, Unit};
 
 /// Dots across the widest plot each chart gets on the screen, and down the tallest: what a solution
 /// is sampled for, once, when it arrives (see [`Series::for_charts`]).
@@ -30,7 +30,7 @@ pub struct ChartDots {
 /// curves are smooth between the extrema, which are samples of their own, and bend over tens of
 /// dots, so samples a dot apart were mostly spent where a line draws the same dots. Where they bend
 /// sharply, at first contact and at an end at x = 0, the trajectory refines the steps itself.
-const STRIDE: f64 = 3.0;
+pub const STRIDE: f64 = 3.0;
 
 /// Height over width² of the plots [`STRIDE`] is measured for: the explorer's at 160×48, 48
 /// dots high and 98 across (F(x) and v(x); F(t) is wider). A line s dots long bows from the
@@ -331,7 +331,7 @@ impl<K: Copy> Plot<K> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     fn sample(t: f64, x: f64, v: f64, f: f64) -> Sample {
@@ -422,6 +422,14 @@ mod tests {
         worst
     }
 
+    /// The explorer's plots at 160×48 in braille (the explorer's layout tests check that its
+    /// layout gives these).
+    pub(crate) const EXPLORER_160X48: ChartDots = ChartDots {
+        time: 214,
+        approach: 98,
+        high: 48,
+    };
+
     /// On every law of the paper's Fig. 5 (and e = 0.2, x_pl = 0, where the contact is shortest
     /// against x_max; and e = 0.95), on plots as the explorer lays them out at 160×48 and far
     /// taller or narrower ones (a 120×80 terminal's, 58 dots across and 128 high; 40 across and
@@ -436,12 +444,8 @@ mod tests {
     #[test]
     fn samples_are_a_stride_apart_and_their_lines_on_the_curves() {
         use crate::model::impact::{SolveOptions, solve_impact};
-        use crate::ui::MarkerStyle;
-        use crate::ui::testing::fig5_params;
-        use crate::ui::views::explorer::layout::chart_dots;
-        use ratatui::layout::Rect;
-        let explorer =
-            chart_dots(Rect::new(0, 0, 160, 48), MarkerStyle::Braille).expect("160×48 fits");
+        use crate::model::scene::tests::fig5_params;
+        let explorer = EXPLORER_160X48;
         let screens = [
             explorer,
             ChartDots {

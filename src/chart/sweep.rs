@@ -1,15 +1,104 @@
 //! Sweep rows as chart lines: the chosen output against the swept value, one line per model (or
 //! one for the quasistatic estimate), broken where a point failed rather than bridged.
 
+use crate::chart::ticks::{NiceAxis, log_axis, nice_axis};
 use crate::chart::{Chart, Hue, Ink, Rule, Series, model_glyph};
+use crate::format::units::{self, Unit, key_symbol, key_unit};
 use crate::model::ForceModel;
 use crate::model::scene_key::SceneKey;
+use crate::model::study::runner::SweepData;
 use crate::model::study::sweep::SweepRow;
-use crate::ui::studies::SweepData;
-use crate::ui::ticks::{NiceAxis, log_axis, nice_axis};
-use crate::ui::units::{self, Unit};
 
-use super::settings::{SweepOutput, key_symbol, key_unit};
+/// What the sweep chart draws against the parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SweepOutput {
+    /// Maximum contact pressure p₀ of the quasistatic estimate (the paper's Fig. 2).
+    PeakPressure,
+    /// Contact radius (point contact) or half-width (line contact) of the estimate.
+    ContactSize,
+    XMax,
+    FMax,
+    TContact,
+    VOut,
+    EOut,
+}
+
+impl SweepOutput {
+    pub const ALL: [SweepOutput; 7] = [
+        SweepOutput::PeakPressure,
+        SweepOutput::ContactSize,
+        SweepOutput::XMax,
+        SweepOutput::FMax,
+        SweepOutput::TContact,
+        SweepOutput::VOut,
+        SweepOutput::EOut,
+    ];
+
+    /// The symbol on the axis and in the form.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            SweepOutput::PeakPressure => "p₀",
+            SweepOutput::ContactSize => "a | b",
+            SweepOutput::XMax => "x_max",
+            SweepOutput::FMax => "F_max",
+            SweepOutput::TContact => "t_c",
+            SweepOutput::VOut => "v_out",
+            SweepOutput::EOut => "e_out",
+        }
+    }
+
+    /// What it is, for the form.
+    pub fn description(self) -> &'static str {
+        match self {
+            SweepOutput::PeakPressure => "max pressure (Hertz)",
+            SweepOutput::ContactSize => "contact radius | half-width",
+            SweepOutput::XMax => "max approach",
+            SweepOutput::FMax => "max force",
+            SweepOutput::TContact => "contact time",
+            SweepOutput::VOut => "exit speed",
+            SweepOutput::EOut => "realized restitution",
+        }
+    }
+
+    pub fn unit(self) -> Unit {
+        match self {
+            SweepOutput::PeakPressure => units::PASCAL,
+            SweepOutput::ContactSize | SweepOutput::XMax => units::METRE,
+            SweepOutput::FMax => units::NEWTON,
+            SweepOutput::TContact => units::SECOND,
+            SweepOutput::VOut => units::METRE_PER_SECOND,
+            SweepOutput::EOut => units::DIMENSIONLESS,
+        }
+    }
+
+    /// Whether each model has its own value (else the quasistatic estimate has one per point).
+    pub fn per_model(self) -> bool {
+        !matches!(self, SweepOutput::PeakPressure | SweepOutput::ContactSize)
+    }
+
+    /// The quasistatic value at a row.
+    pub fn estimate(self, row: &SweepRow) -> Option<f64> {
+        let q = row.quasistatic.as_ref()?;
+        match self {
+            SweepOutput::PeakPressure => Some(q.p_max),
+            SweepOutput::ContactSize => q.contact_radius.or(q.half_width),
+            _ => None,
+        }
+    }
+
+    /// The value of `model` at a row.
+    pub fn of_model(self, row: &SweepRow, model: ForceModel) -> Option<f64> {
+        let point = row.impacts.iter().find(|p| p.model == model)?;
+        match self {
+            SweepOutput::XMax => point.x_max,
+            SweepOutput::FMax => point.f_max,
+            SweepOutput::TContact => point.t_contact,
+            SweepOutput::VOut => point.v_out,
+            SweepOutput::EOut => point.e_out,
+            SweepOutput::PeakPressure | SweepOutput::ContactSize => None,
+        }
+    }
+}
 
 /// Whose line it is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
