@@ -19,10 +19,10 @@ use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::App;
 use hertz_tui::ui::field::Nudge;
 use hertz_tui::ui::render::draw;
-use hertz_tui::ui::screen::Screen;
 use hertz_tui::ui::style::Theme;
 use hertz_tui::ui::update::update;
 use hertz_tui::ui::worker;
+use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 
 fn default_scene() -> Scene {
@@ -105,11 +105,11 @@ fn paper_models_app() -> App {
 
 /// One full edit cycle of the explorer: v₀ nudged (by →/← on the v₀ field, alternately, so every
 /// edit changes the inputs), the paper's five models recomputed, and every pane rendered and
-/// written to a 160×48 TestBackend through the explorer's [`Screen`] (as the running explorer
+/// written to a 160×48 TestBackend through ratatui's `Terminal` (as the running explorer
 /// writes to the terminal), all on this thread.
 fn edit_cycle(c: &mut Criterion) {
     let mut app = paper_models_app();
-    let mut terminal = Screen::new(TestBackend::new(160, 48)).expect("a test backend");
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).expect("a test backend");
     let mut up = true;
     c.bench_function("edit/cycle/paper-models/160x48", |b| {
         b.iter(|| {
@@ -141,7 +141,7 @@ fn edit_parts(c: &mut Criterion) {
             solve_queued(&mut app)
         })
     });
-    let mut terminal = Screen::new(TestBackend::new(160, 48)).expect("a test backend");
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).expect("a test backend");
     c.bench_function("edit/render/160x48", |b| {
         b.iter(|| {
             terminal

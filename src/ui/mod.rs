@@ -27,7 +27,6 @@ mod mouse;
 pub mod picker;
 pub mod render;
 mod runtime;
-pub mod screen;
 pub mod solutions;
 pub mod studies;
 pub mod study_worker;
@@ -68,23 +67,15 @@ pub fn run(scene: Scene, view: View, source: &str, marker: MarkerStyle) -> color
     if app.description.is_none() {
         app.description = description;
     }
-    // ratatui sets the terminal up (raw mode, the alternate screen, a panic hook that restores
-    // both); the explorer then draws through its own screen, which needs only the backend.
-    match ratatui::try_init() {
-        Ok(terminal) => drop(terminal),
+    // ratatui sets the terminal up: raw mode, the alternate screen, a panic hook that restores
+    // both.
+    let mut terminal = match ratatui::try_init() {
+        Ok(terminal) => terminal,
         Err(e) => {
             ratatui::restore();
             return Err(e).wrap_err("cannot set up the terminal");
         }
-    }
-    let mut terminal =
-        match screen::Screen::new(ratatui::backend::CrosstermBackend::new(std::io::stdout())) {
-            Ok(terminal) => terminal,
-            Err(e) => {
-                ratatui::restore();
-                return Err(e).wrap_err("cannot set up the terminal");
-            }
-        };
+    };
     // A panic must not leave the terminal sending mouse reports and paste marks to the shell.
     let restore = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {

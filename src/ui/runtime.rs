@@ -14,18 +14,17 @@ use std::thread;
 use std::time::Duration;
 
 use color_eyre::eyre::{WrapErr, eyre};
-use ratatui::backend::CrosstermBackend;
 use ratatui::crossterm::event::{
     self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
 };
 use ratatui::crossterm::execute;
 use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
+use ratatui::{DefaultTerminal, Terminal};
 
 use super::action::Action;
 use super::app::App;
 use super::keymap::action_for_event;
 use super::render;
-use super::screen::Screen;
 use super::study_worker::{StudyReport, StudyWorker};
 use super::update::update;
 use super::worker::{Report, Worker};
@@ -60,12 +59,9 @@ fn spawn_input(events: Sender<Wake>) -> std::io::Result<()> {
 /// key repeat, so a held key draws about once per repeat burst and a single key at once.
 const KEY_BURST_WAIT: Duration = Duration::from_millis(8);
 
-/// The explorer's screen: crossterm on standard output.
-pub type TerminalScreen = Screen<CrosstermBackend<std::io::Stdout>>;
-
 /// Runs `app` in `terminal` until it quits, with bracketed paste (and mouse capture while the app
 /// wants it) on meanwhile; both are turned off again on every exit.
-pub fn event_loop(terminal: &mut TerminalScreen, app: App) -> color_eyre::Result<()> {
+pub fn event_loop(terminal: &mut DefaultTerminal, app: App) -> color_eyre::Result<()> {
     execute!(std::io::stdout(), EnableBracketedPaste).wrap_err("cannot enable bracketed paste")?;
     let result = run(terminal, app);
     release_terminal_modes();
@@ -83,7 +79,7 @@ pub fn release_terminal_modes() {
 
 /// Draws one frame inside a synchronized update, so the terminal shows it whole.
 pub fn draw_synchronized<B>(
-    terminal: &mut Screen<B>,
+    terminal: &mut Terminal<B>,
     writer: &mut impl Write,
     app: &App,
 ) -> color_eyre::Result<()>
@@ -119,7 +115,7 @@ fn burst(first: Wake, wakes: &Receiver<Wake>) -> Vec<Wake> {
 }
 
 /// Sleeps in `recv` between events: no busy loop.
-fn run(terminal: &mut TerminalScreen, mut app: App) -> color_eyre::Result<()> {
+fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     let mut mouse = false;
     let (events, wakes) = mpsc::channel();
     spawn_input(events.clone()).wrap_err("cannot start the input thread")?;
@@ -203,7 +199,7 @@ mod tests {
             MarkerStyle::Braille,
             Theme { color: false },
         );
-        let mut terminal = Screen::new(TestBackend::new(100, 30)).unwrap();
+        let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
         let mut out: Vec<u8> = Vec::new();
         draw_synchronized(&mut terminal, &mut out, &app).unwrap();
         assert_eq!(
