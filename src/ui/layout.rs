@@ -8,9 +8,9 @@ use ratatui::layout::{Constraint, Layout, Rect};
 pub const MIN_WIDTH: u16 = 80;
 pub const MIN_HEIGHT: u16 = 24;
 
-/// The frame every tab shares.
+/// The areas every tab shares: its tab bar, body and status line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Screen {
+pub struct ScreenLayout {
     pub tabs: Rect,
     /// What the shown tab draws in.
     pub body: Rect,
@@ -20,7 +20,7 @@ pub struct Screen {
 }
 
 /// The tab bar, body and status line of a screen of `area`; `None` below the minimum size.
-pub fn screen(area: Rect) -> Option<Screen> {
+pub fn screen_layout(area: Rect) -> Option<ScreenLayout> {
     if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
         return None;
     }
@@ -30,7 +30,7 @@ pub fn screen(area: Rect) -> Option<Screen> {
         Constraint::Length(1),
     ])
     .areas(area);
-    Some(Screen {
+    Some(ScreenLayout {
         tabs,
         body,
         status,
@@ -63,9 +63,9 @@ pub(crate) mod tests {
     }
 
     #[test]
-    fn too_small_has_no_screen() {
-        assert!(screen(Rect::new(0, 0, 79, 24)).is_none());
-        assert!(screen(Rect::new(0, 0, 80, 23)).is_none());
-        assert!(screen(Rect::new(0, 0, 80, 24)).is_some());
+    fn too_small_has_no_screen_layout() {
+        assert!(screen_layout(Rect::new(0, 0, 79, 24)).is_none());
+        assert!(screen_layout(Rect::new(0, 0, 80, 23)).is_none());
+        assert!(screen_layout(Rect::new(0, 0, 80, 24)).is_some());
     }
 }

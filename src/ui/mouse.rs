@@ -11,7 +11,7 @@ use super::widgets::tabs;
 /// Where (column, row) falls: on the tab bar (`Err` with the column within it), else in the body.
 fn place(app: &App, column: u16, row: u16) -> Option<Result<Position, u16>> {
     let (width, height) = app.screen;
-    let screen = layout::screen(Rect::new(0, 0, width, height))?;
+    let screen = layout::screen_layout(Rect::new(0, 0, width, height))?;
     let position = Position::new(column, row);
     Some(if screen.tabs.contains(position) {
         Err(column - screen.tabs.x)

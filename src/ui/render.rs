@@ -10,7 +10,7 @@ use super::widgets::{engine, help, picker, prompt, status, tabs, too_small};
 /// Draws the whole screen for `app`.
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
-    let Some(screen) = layout::screen(area) else {
+    let Some(screen) = layout::screen_layout(area) else {
         too_small::render(frame, area, app);
         return;
     };

@@ -15,7 +15,7 @@ use crate::chart::Chart;
 use super::action::Action;
 use super::app::{App, EditTarget, Valid};
 use super::field::Nudge;
-use super::layout::Screen;
+use super::layout::ScreenLayout;
 use super::tab::Tab;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
@@ -42,7 +42,7 @@ pub trait View: Sync {
         None
     }
     /// Draws the view in the body of `screen`.
-    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App);
+    fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App);
     /// The view's own key hints, after the shared ones (help, quit, views).
     fn hints(&self) -> Hints;
     /// Handles `action` in normal mode if it is one of the view's own keys; returns it otherwise,

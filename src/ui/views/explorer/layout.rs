@@ -5,7 +5,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 
 use crate::ui::MarkerStyle;
 use crate::chart::kind::ChartKind;
-use crate::ui::layout::{Screen, Y_AXIS_ALLOWANCE, left_width, screen};
+use crate::ui::layout::{ScreenLayout, Y_AXIS_ALLOWANCE, left_width, screen_layout};
 use crate::chart::sample::ChartDots;
 use crate::ui::widgets::{graph, models};
 
@@ -31,12 +31,12 @@ pub struct Areas {
 /// `form_height(width)` is the height the form's panes need at rest at that width: on roomy
 /// screens the models pane takes what the form leaves (at least [`MODELS_HEIGHT`] rows).
 pub fn layout(area: Rect, first: ChartKind, form_height: impl Fn(u16) -> u16) -> Option<Areas> {
-    let Screen {
+    let ScreenLayout {
         tabs,
         body,
         status,
         roomy,
-    } = screen(area)?;
+    } = screen_layout(area)?;
     let info_height = if roomy { 6 } else { 3 };
     let [info, body] =
         Layout::vertical([Constraint::Length(info_height), Constraint::Fill(1)]).areas(body);

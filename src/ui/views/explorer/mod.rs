@@ -17,7 +17,7 @@ use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget};
 use crate::chart::kind::ChartKind;
 use crate::ui::field::Nudge;
-use crate::ui::layout::Screen;
+use crate::ui::layout::ScreenLayout;
 use crate::ui::widgets::models;
 
 use super::{FIGURE_COLUMNS, Hints, View};
@@ -33,7 +33,7 @@ impl View for Explorer {
         "explorer"
     }
 
-    fn render(&self, frame: &mut Frame, _screen: &Screen, app: &App) {
+    fn render(&self, frame: &mut Frame, _screen: &ScreenLayout, app: &App) {
         let Some(areas) = layout::layout(frame.area(), app.chart, |w| form::resting_height(app, w)) else {
             return;
         };

@@ -8,7 +8,7 @@ use ratatui::Frame;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, Valid};
-use crate::ui::layout::Screen;
+use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
 use super::{FIGURE_TICKS, Hints, View};
@@ -30,7 +30,7 @@ impl View for Restitution {
         "e"
     }
 
-    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
+    fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen, app);
     }
 

@@ -12,7 +12,7 @@ use crate::chart::Chart;
 use crate::format::{Zeros, significant};
 use crate::model::restitution::REQUESTED;
 use crate::ui::app::App;
-use crate::ui::layout::{Screen, left_width};
+use crate::ui::layout::{ScreenLayout, left_width};
 use crate::model::study::runner::{RestitutionData, StudyKind};
 use crate::ui::style::Role;
 use crate::ui::widgets::common::{model_name, pane, span};
@@ -21,7 +21,7 @@ use crate::ui::widgets::models;
 
 use crate::chart::restitution as plot;
 
-pub fn render(frame: &mut Frame, screen: &Screen, app: &App) {
+pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {
     let [left, right] = Layout::horizontal([
         Constraint::Length(left_width(screen.body)),
         Constraint::Fill(1),

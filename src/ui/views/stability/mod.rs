@@ -13,7 +13,7 @@ use crate::model::study::stability::critical_step;
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget, Valid};
 use crate::chart::kind::ChartKind;
-use crate::ui::layout::Screen;
+use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
 use super::{FIGURE_COLUMNS, FIGURE_TICKS, Hints, View};
@@ -33,7 +33,7 @@ impl View for Stability {
         Some("Enter types the step (auto: rk4 critical); ← → ½× 2×")
     }
 
-    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
+    fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen.body, app, screen.roomy);
     }
 

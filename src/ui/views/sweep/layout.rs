@@ -5,7 +5,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 
 use crate::ui::widgets::models;
 use crate::ui::layout::{
-    MIN_HEIGHT, MIN_WIDTH, Screen, Y_AXIS_ALLOWANCE, is_roomy, left_width, screen,
+    MIN_HEIGHT, MIN_WIDTH, ScreenLayout, Y_AXIS_ALLOWANCE, is_roomy, left_width, screen_layout,
 };
 
 /// The panes of the sweep view in the body of a screen.
@@ -24,7 +24,7 @@ const NOTES_ROWS: u16 = 6;
 /// Rows of the sweep form.
 pub const SWEEP_FORM_ROWS: u16 = 6;
 
-pub fn sweep_areas(screen: &Screen) -> SweepAreas {
+pub fn sweep_areas(screen: &ScreenLayout) -> SweepAreas {
     let [left, chart] = Layout::horizontal([
         Constraint::Length(left_width(screen.body)),
         Constraint::Fill(1),
@@ -55,8 +55,8 @@ pub fn sweep_areas(screen: &Screen) -> SweepAreas {
 
 /// Plot columns of the sweep chart on a screen of `area` (80×24 while the size is unknown).
 pub fn sweep_plot_columns(area: Rect) -> u16 {
-    let chart = screen(area)
-        .or_else(|| screen(Rect::new(0, 0, MIN_WIDTH, MIN_HEIGHT)))
+    let chart = screen_layout(area)
+        .or_else(|| screen_layout(Rect::new(0, 0, MIN_WIDTH, MIN_HEIGHT)))
         .map(|s| sweep_areas(&s).chart)
         .unwrap_or_default();
     // Borders on roomy screens, a top rule on compact ones: the width loses 2 or nothing.
@@ -76,7 +76,7 @@ mod tests {
     fn sweep_panes_fit_and_its_chart_sets_the_points() {
         for (w, h) in [(80, 24), (120, 40), (160, 48)] {
             let area = Rect::new(0, 0, w, h);
-            let s = screen(area).unwrap();
+            let s = screen_layout(area).unwrap();
             let a = sweep_areas(&s);
             let rects = [s.tabs, s.status, a.form, a.models, a.notes, a.chart];
             for (i, r) in rects.iter().enumerate() {

@@ -12,7 +12,7 @@ use ratatui::layout::Rect;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget, Valid};
-use crate::ui::layout::Screen;
+use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
 use crate::chart::sweep::SweepSet;
@@ -34,7 +34,7 @@ impl View for Sweep {
         Some("↑ ↓ rows; ← → change; Enter types or switches")
     }
 
-    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
+    fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen, app);
     }
 

@@ -9,7 +9,7 @@ use ratatui::widgets::Paragraph;
 use crate::model::Scene;
 use crate::model::scene_key::SceneKey;
 use crate::ui::app::{App, EditTarget, Mode};
-use crate::ui::layout::Screen;
+use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, SweepData};
 use crate::ui::style::Role;
 use crate::ui::widgets::common::{pane, span, wrap};
@@ -24,7 +24,7 @@ use super::settings::SweepField;
 /// Width of the label column of the sweep form.
 const LABEL_WIDTH: usize = 8;
 
-pub fn render(frame: &mut Frame, screen: &Screen, app: &App) {
+pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {
     let areas = sweep_areas(screen);
     let scene = match &app.valid {
         Some(valid) => &valid.scene,

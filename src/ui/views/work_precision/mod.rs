@@ -8,7 +8,7 @@ use ratatui::Frame;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, Valid};
-use crate::ui::layout::Screen;
+use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
 use crate::chart::work_precision::Cost;
@@ -26,7 +26,7 @@ impl View for WorkPrecision {
         "work–precision"
     }
 
-    fn render(&self, frame: &mut Frame, screen: &Screen, app: &App) {
+    fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen.body, app, screen.roomy);
     }
 
