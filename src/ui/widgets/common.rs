@@ -1,7 +1,6 @@
 //! Small helpers shared by the pane renderers.
 
-use ratatui::buffer::Buffer;
-use ratatui::layout::{Constraint, Direction, Flex, Layout, Rect};
+use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::Span;
 
@@ -9,7 +8,6 @@ use crate::model::ForceModel;
 use crate::ui::style::Theme;
 
 use super::pane::Pane;
-use super::text::{set_line, span_width};
 
 /// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
 pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Pane<'a> {
@@ -88,14 +86,6 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
-/// Appends `text` left-aligned in `width` characters, as `{text:<width$}` writes it (padded with
-/// spaces, never cut).
-pub fn push_padded(out: &mut String, text: &str, width: usize) {
-    out.push_str(text);
-    let pad = width.saturating_sub(text.chars().count());
-    out.extend(std::iter::repeat_n(' ', pad));
-}
-
 /// Spans laid out in lines of at most `width` columns, breaking only between items; items are
 /// separated by `gap` on a line. Lines past `max_lines` are dropped.
 pub fn flow<'a>(
@@ -106,9 +96,9 @@ pub fn flow<'a>(
 ) -> Vec<ratatui::text::Line<'a>> {
     let mut lines: Vec<Vec<Span<'a>>> = Vec::new();
     let mut used = 0;
-    let gap_width = span_width(&gap);
+    let gap_width = gap.width();
     for item in items {
-        let item_width: usize = item.iter().map(span_width).sum();
+        let item_width: usize = item.iter().map(Span::width).sum();
         let fits = used > 0 && used + gap_width + item_width <= width;
         match lines.last_mut() {
             Some(line) if fits => {
@@ -124,56 +114,6 @@ pub fn flow<'a>(
     }
     lines.truncate(max_lines);
     lines.into_iter().map(ratatui::text::Line::from).collect()
-}
-
-/// `lines` from the top of `area`, each cut at its width: the cells `Paragraph::new(lines)`
-/// draws, without its per-grapheme line truncator (a tenth of a frame's drawing in the explorer).
-pub fn draw_lines(buf: &mut Buffer, area: Rect, lines: &[ratatui::text::Line]) {
-    let area = area.intersection(buf.area);
-    for (y, line) in (area.y..area.bottom()).zip(lines) {
-        set_line(buf, area.x, y, line, area.width);
-    }
-}
-
-/// `area` cut along `direction` into pieces of the given `lengths` from its start, then the
-/// rest: what `Layout` of those `Length`s and a `Fill(1)` gives, without its solver when the
-/// lengths fit (a test compares them); `Layout`'s own split when they do not.
-pub fn split_lengths(area: Rect, direction: Direction, lengths: &[u16]) -> Vec<Rect> {
-    let room = match direction {
-        Direction::Horizontal => area.width,
-        Direction::Vertical => area.height,
-    };
-    let total = lengths.iter().try_fold(0u16, |sum, &l| sum.checked_add(l));
-    if total.is_none_or(|total| total > room) {
-        let constraints = lengths
-            .iter()
-            .map(|&l| Constraint::Length(l))
-            .chain([Constraint::Fill(1)]);
-        return Layout::new(direction, constraints).split(area).to_vec();
-    }
-    let mut start = 0;
-    let piece = |start: u16, length: u16| match direction {
-        Direction::Horizontal => Rect {
-            x: area.x + start,
-            width: length,
-            ..area
-        },
-        Direction::Vertical => Rect {
-            y: area.y + start,
-            height: length,
-            ..area
-        },
-    };
-    let mut pieces: Vec<Rect> = lengths
-        .iter()
-        .map(|&length| {
-            let rect = piece(start, length);
-            start += length;
-            rect
-        })
-        .collect();
-    pieces.push(piece(start, room - start));
-    pieces
 }
 
 /// A rectangle of at most `width`×`height` centred in `area`.
@@ -245,78 +185,6 @@ mod tests {
             width in 0usize..12,
         ) {
             proptest::prop_assert_eq!(wrap(&text, width), wrap_by_chars(&text, width));
-        }
-    }
-
-    /// Styled spans, a line style patched over them, text longer than the area and more lines
-    /// than rows: the same cells, styles included, as a `Paragraph`.
-    #[test]
-    fn lines_draw_as_a_paragraph_does() {
-        use ratatui::style::{Color, Modifier};
-        use ratatui::text::Line;
-        use ratatui::widgets::{Paragraph, Widget};
-        let lines = vec![
-            Line::from(vec![
-                Span::styled("● elastic", Style::new().fg(Color::Green)),
-                Span::raw(": v₀ 0.3 m/s < v_y 0.5 m/s"),
-                Span::styled(" (p₀ = 1.1 / 2.8 σ_y)", Style::new().fg(Color::DarkGray)),
-            ]),
-            Line::from("⚠ x_max 1.24 m is not small against R: Hertz's first hypothesis fails")
-                .patch_style(Style::new().add_modifier(Modifier::REVERSED)),
-            Line::from(""),
-            Line::from("why: √(E/ρ)·10⁻⁵ …"),
-            Line::from("a fifth line past the last row"),
-        ];
-        let buf_area = Rect::new(0, 0, 40, 6);
-        for area in [
-            Rect::new(2, 1, 30, 4),
-            Rect::new(0, 0, 40, 6),
-            Rect::new(35, 4, 10, 5),
-        ] {
-            let mut ours = Buffer::empty(buf_area);
-            draw_lines(&mut ours, area, &lines);
-            let mut theirs = Buffer::empty(buf_area);
-            Paragraph::new(lines.clone()).render(area, &mut theirs);
-            assert_eq!(ours, theirs, "{area:?}");
-        }
-    }
-
-    #[test]
-    fn padding_is_what_the_formatter_pads() {
-        for text in ["", "v₀", "mass", "Hunt–Crossley (eq 19)"] {
-            for width in 0..25 {
-                let mut ours = String::from(">");
-                push_padded(&mut ours, text, width);
-                assert_eq!(ours, format!(">{text:<width$}"), "{text} in {width}");
-            }
-        }
-    }
-
-    /// Pieces that fit exactly, with room left, none, zero-length ones, and pieces that overflow
-    /// (the solver's split), both ways, in areas off the origin: what `Layout` gives.
-    #[test]
-    fn split_lengths_splits_as_layout_does() {
-        let sets: [&[u16]; 7] = [&[], &[0], &[3], &[3, 4, 2], &[10, 0, 5], &[12], &[7, 9]];
-        for direction in [Direction::Horizontal, Direction::Vertical] {
-            for area in [
-                Rect::new(3, 2, 10, 10),
-                Rect::new(0, 0, 15, 15),
-                Rect::new(5, 7, 0, 0),
-                Rect::new(1, 1, 16, 16),
-            ] {
-                for lengths in sets {
-                    let constraints = lengths
-                        .iter()
-                        .map(|&l| Constraint::Length(l))
-                        .chain([Constraint::Fill(1)]);
-                    let theirs = Layout::new(direction, constraints).split(area).to_vec();
-                    assert_eq!(
-                        split_lengths(area, direction, lengths),
-                        theirs,
-                        "{direction:?} {area:?} {lengths:?}"
-                    );
-                }
-            }
         }
     }
 

@@ -11,7 +11,6 @@ pub(crate) mod pane;
 pub mod picker;
 pub mod prompt;
 pub mod status;
-pub(crate) mod table;
 pub mod tabs;
 pub(crate) mod text;
 pub mod too_small;

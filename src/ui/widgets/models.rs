@@ -7,6 +7,7 @@ use ratatui::Frame;
 use ratatui::layout::{Position, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::Line;
+use ratatui::widgets::Paragraph;
 
 use crate::chart::model_glyph;
 use crate::model::ForceModel;
@@ -14,7 +15,7 @@ use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
 use crate::ui::style::{Role, Theme, sample};
 
-use super::common::{NameForm, draw_lines, pane, push_padded, span};
+use super::common::{NameForm, pane, span};
 
 /// One row of the list: a family heading or a model.
 enum Row {
@@ -124,7 +125,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             Row::Model(model) => model_line(app, theme, *model, (names, name_width), &fits),
         })
         .collect();
-    draw_lines(frame.buffer_mut(), inner, &lines);
+    frame.render_widget(Paragraph::new(lines), inner);
 }
 
 fn model_line(
@@ -147,8 +148,7 @@ fn model_line(
         "  "
     };
     let fit = if fits.contains(&model) { "✓" } else { " " };
-    let mut padded = String::with_capacity(name.len() + name_width);
-    push_padded(&mut padded, name, name_width);
+    let padded = format!("{name:<name_width$}");
     let mut line = Line::from(vec![
         span(focus, theme.style(Role::Key)),
         span(check, theme.style(Role::Normal)),

@@ -4,16 +4,14 @@
 use std::borrow::Cow;
 
 use ratatui::Frame;
-use ratatui::layout::{Direction, Rect};
+use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
 
 use crate::format::units;
 use crate::ui::app::{App, Mode};
 use crate::ui::style::Role;
 use crate::ui::views::{self, Hints};
-
-use super::common::{draw_lines, split_lengths};
-use super::text::{line_width, render_right};
 
 /// Key hints of the modes other than normal: (key, action).
 fn mode_hints(mode: &Mode) -> Hints {
@@ -153,7 +151,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         left.push(Span::styled(" · invalid scene", theme.style(Role::Error)));
     }
     let left = Line::from(left);
-    let left_width = (line_width(&left) as u16).min(area.width);
+    let left_width = (left.width() as u16).min(area.width);
     let room = usize::from(area.width.saturating_sub(left_width + 1));
     let right: Vec<Span> = match &app.message {
         Some(message) => vec![Span::styled(
@@ -182,9 +180,13 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
                 .collect()
         }
     };
-    let columns = split_lengths(area, Direction::Horizontal, &[left_width + 1]);
-    draw_lines(frame.buffer_mut(), columns[0], &[left]);
-    render_right(frame.buffer_mut(), columns[1], Line::from(right));
+    let [left_area, right_area] =
+        Layout::horizontal([Constraint::Length(left_width + 1), Constraint::Fill(1)]).areas(area);
+    frame.render_widget(Paragraph::new(left), left_area);
+    frame.render_widget(
+        Paragraph::new(Line::from(right).right_aligned()),
+        right_area,
+    );
 }
 
 #[cfg(test)]

@@ -9,8 +9,6 @@ use crate::ui::app::App;
 use crate::ui::style::Role;
 use crate::ui::tab::Tab;
 
-use super::common::draw_lines;
-
 pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let theme = app.theme;
     let mut spans = Vec::new();
@@ -27,7 +25,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         spans.push(Span::styled(title, title_style));
         spans.push(Span::raw(gap));
     }
-    draw_lines(frame.buffer_mut(), area, &[Line::from(spans)]);
+    frame.render_widget(Line::from(spans), area);
 }
 
 /// The key, title and gap of a tab's label on the bar.

@@ -1,14 +1,15 @@
 //! The form panes: body 1, body 2 (shape, size, mass, material) and the impact with its solver.
 
 use ratatui::Frame;
-use ratatui::layout::{Direction, Position, Rect};
+use ratatui::layout::{Constraint, Layout, Position, Rect};
 use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
 
 use crate::model::scene_key::BodyIndex;
 use crate::ui::app::{App, Cursor, EditTarget, Mode};
 use crate::ui::field::{self, Field, Section};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{draw_lines, pane, push_padded, span, split_lengths, wrap};
+use crate::ui::widgets::common::{pane, span, wrap};
 
 /// Width of the label column.
 const LABEL_WIDTH: usize = 8;
@@ -111,7 +112,13 @@ fn place(app: &App, area: Rect, roomy: bool) -> Placement {
     let needed: u16 = sections.iter().map(|(_, r)| r.len() as u16 + 2).sum();
     if roomy && needed <= area.height {
         let heights: Vec<u16> = sections.iter().map(|(_, r)| r.len() as u16 + 2).collect();
-        let areas = split_lengths(area, Direction::Vertical, &heights);
+        let areas = Layout::vertical(
+            heights
+                .iter()
+                .map(|&h| Constraint::Length(h))
+                .chain([Constraint::Fill(1)]),
+        )
+        .split(area);
         return Placement::Panes(
             sections
                 .into_iter()
@@ -228,9 +235,7 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
         let line = match row {
             Row::Note(text, role) => Line::from(span(text.clone(), theme.style(*role))),
             Row::Field(field) => {
-                let mut label = String::with_capacity(LABEL_WIDTH + field.label().len());
-                label.push(' ');
-                push_padded(&mut label, field.label(), LABEL_WIDTH - 1);
+                let label = format!(" {:<1$}", field.label(), LABEL_WIDTH - 1);
                 let under_cursor = app.cursor == Cursor::Field(*field);
                 let (value, value_role) = match &app.mode {
                     Mode::Editing(editor) if editor.target == EditTarget::Field(*field) => {
@@ -270,7 +275,7 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
         };
         lines.push(line);
     }
-    draw_lines(frame.buffer_mut(), area, &lines);
+    frame.render_widget(Paragraph::new(lines), area);
     if let Some(position) = cursor_position {
         frame.set_cursor_position(position);
     }

@@ -4,6 +4,7 @@
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
 use crate::model::recommend::recommend;
@@ -11,7 +12,7 @@ use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::style::Role;
 use crate::format::units::sig;
-use crate::ui::widgets::common::{NameForm, draw_lines, flow, pane, wrap};
+use crate::ui::widgets::common::{NameForm, flow, pane, wrap};
 
 /// A short name of a regime for the regime line.
 fn regime_name(regime: Regime) -> &'static str {
@@ -53,7 +54,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     }
     let Some(valid) = &app.valid else {
         let lines = flow(items, width, max_lines, Span::raw("  "));
-        draw_lines(frame.buffer_mut(), inner, &lines);
+        frame.render_widget(Paragraph::new(lines), inner);
         return;
     };
     let onset = &valid.quasistatic.onset;
@@ -163,5 +164,5 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             theme.style(Role::Muted),
         )));
     }
-    draw_lines(frame.buffer_mut(), inner, &lines);
+    frame.render_widget(Paragraph::new(lines), inner);
 }

@@ -3,10 +3,10 @@
 use std::borrow::Cow;
 
 use ratatui::Frame;
-use ratatui::layout::{Direction, Rect};
+use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Modifier;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
+use ratatui::widgets::{Paragraph, Row, Table};
 
 use crate::format::{Zeros, scientific};
 use crate::model::ForceModel;
@@ -16,8 +16,7 @@ use crate::model::quasistatic::ContactGeometry;
 use crate::ui::app::App;
 use crate::ui::style::{Role, Theme};
 use crate::format::units::{self, sig};
-use crate::ui::widgets::common::{draw_lines, flow, model_name, pane, span, split_lengths};
-use crate::ui::widgets::table::draw_table;
+use crate::ui::widgets::common::{flow, model_name, pane, span};
 
 /// A column: header, unit, width, and the value of a solved row in that unit.
 struct Column {
@@ -256,24 +255,20 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         .height
         .saturating_sub(quasistatic_lines.len() as u16)
         .max(1);
-    let rows = split_lengths(inner, Direction::Vertical, &[table_height]);
-    let (table_area, q_area) = (rows[0], rows[1]);
-    let header: Vec<&str> = std::iter::once("model")
-        .chain(header_texts[..shown].iter().map(|h| h.as_ref()))
-        .collect();
+    let [table_area, q_area] =
+        Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
+    let header = std::iter::once("model").chain(header_texts[..shown].iter().map(|h| h.as_ref()));
     let header_style = theme.style(Role::Label).add_modifier(Modifier::BOLD);
-    let rows: Vec<Vec<Span>> = checked
+    let rows = checked
         .iter()
-        .map(|&model| model_row(app, model, &columns, &widths, model_width, theme))
-        .collect();
-    let widths: Vec<u16> = std::iter::once(model_width).chain(widths).collect();
-    draw_table(
-        frame.buffer_mut(),
-        table_area,
-        &widths,
-        (&header, header_style),
-        &rows,
-    );
+        .map(|&model| Row::new(model_row(app, model, &columns, &widths, model_width, theme)));
+    let constraints = std::iter::once(model_width)
+        .chain(widths.iter().copied())
+        .map(Constraint::Length);
+    let table = Table::new(rows, constraints)
+        .header(Row::new(header).style(header_style))
+        .column_spacing(1);
+    frame.render_widget(table, table_area);
     // A failed model's reason over its number columns, whole where the row has room: a table
     // cell would cut it to the width of one number.
     let reason_x = table_area.x + model_width + 1;
@@ -294,7 +289,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             Rect::new(reason_x, y, width, 1),
         );
     }
-    draw_lines(frame.buffer_mut(), q_area, &quasistatic_lines);
+    frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
     if !roomy {
         // The compact header has no room for units: name them once, in the title row.
         let mut notes: Vec<&str> = Vec::new();
