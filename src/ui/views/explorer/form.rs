@@ -111,14 +111,10 @@ fn place(app: &App, area: Rect, roomy: bool) -> Placement {
         .collect();
     let needed: u16 = sections.iter().map(|(_, r)| r.len() as u16 + 2).sum();
     if roomy && needed <= area.height {
-        let heights: Vec<u16> = sections.iter().map(|(_, r)| r.len() as u16 + 2).collect();
-        let areas = Layout::vertical(
-            heights
-                .iter()
-                .map(|&h| Constraint::Length(h))
-                .chain([Constraint::Fill(1)]),
-        )
-        .split(area);
+        let heights = sections
+            .iter()
+            .map(|(_, r)| Constraint::Length(r.len() as u16 + 2));
+        let areas = Layout::vertical(heights.chain([Constraint::Fill(1)])).split(area);
         return Placement::Panes(
             sections
                 .into_iter()
