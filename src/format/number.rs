@@ -78,18 +78,18 @@ const MAX_DIGITS: usize = 17;
 /// `value` (finite, non-zero) rounded to `digits` significant digits, as `{:.*e}` rounds it (the
 /// double's exact value, ties to even): its sign, its digits (trailing zeros kept) and the decimal
 /// exponent of the first digit, which a carry moves (999.96 → 1.000e3).
-struct Rounded {
+struct Digits {
     negative: bool,
     digits: String,
     exponent: i32,
 }
 
-impl Rounded {
+impl Digits {
     fn new(value: f64, digits: usize) -> Self {
         let digits = digits.clamp(1, MAX_DIGITS);
         let text = format!("{:.*e}", digits - 1, value.abs());
         let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-        Rounded {
+        Digits {
             negative: value < 0.0,
             digits: mantissa.replace('.', ""),
             exponent: exponent.parse().unwrap_or(0),
@@ -142,7 +142,7 @@ pub fn engineering(value: f64, unit: &str, digits: usize, zeros: Zeros) -> Strin
         return with_unit("0".to_string(), "", unit);
     }
     // The exponent of the rounded value, so that a carry (999.96 → 1.000e3) moves the prefix.
-    let rounded = Rounded::new(value, digits);
+    let rounded = Digits::new(value, digits);
     let engineering = rounded.exponent.div_euclid(3) * 3;
     let index = (engineering - SMALLEST_EXPONENT) / 3;
     match usize::try_from(index).ok().and_then(|i| ENGINEERING.get(i)) {
@@ -164,7 +164,7 @@ pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
         return "0".into();
     }
     let digits = digits.clamp(1, MAX_DIGITS);
-    let rounded = Rounded::new(value, digits);
+    let rounded = Digits::new(value, digits);
     if !(-4..=6).contains(&rounded.exponent) {
         return rounded.scientific(zeros);
     }
@@ -181,7 +181,7 @@ pub fn scientific(value: f64, digits: usize, zeros: Zeros) -> String {
     if value == 0.0 {
         return "0".into();
     }
-    Rounded::new(value, digits).scientific(zeros)
+    Digits::new(value, digits).scientific(zeros)
 }
 
 /// The shortest text that reads back as exactly `value`: for an input that must not look like
