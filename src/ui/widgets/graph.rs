@@ -214,6 +214,11 @@ type GlyphAt = ((u16, u16), char, Ink, bool);
 /// ratatui's canvas over the plot, each cell in the style of the ink painted last in it, and the
 /// glyphs over them.
 fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: MarkerStyle) {
+    let increasing = |[lo, hi]: [f64; 2]| lo.is_finite() && hi.is_finite() && hi > lo;
+    if !increasing(chart.x.range) || !increasing(chart.y.range) {
+        // No value has a place on the plot.
+        return;
+    }
     let (dx, dy) = dots(marker);
     let dots = (
         f64::from(plot.width) * f64::from(dx),
