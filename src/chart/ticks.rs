@@ -155,21 +155,15 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
         })
         .collect();
     let mut wrong = false;
-    // A label read back off its tick must be the tick's value (to a millionth of a step). A
-    // whole number of the last decimal shown is, when that decimal is no finer than the step
-    // (not so on a step far below 1e-12, printed with none); any other label is parsed back.
-    let whole = step * 10f64.powi(decimals as i32) >= 1.0 - 1e-9;
+    // A label read back off its tick must be the tick's value (to a millionth of a step): not so
+    // on a step far below 1e-12, printed with no decimals.
     let mut labels: Vec<String> = values
         .iter()
         .map(|&value| {
-            let label = whole.then(|| whole_label(value, decimals)).flatten();
-            let label = label.unwrap_or_else(|| {
-                let label = format::fixed(value, decimals);
-                wrong |= label
-                    .parse::<f64>()
-                    .is_ok_and(|shown| (shown - value).abs() > step * 1e-6);
-                label
-            });
+            let label = format!("{value:.decimals$}");
+            wrong |= label
+                .parse::<f64>()
+                .is_ok_and(|shown| (shown - value).abs() > step * 1e-6);
             wrong |= label.chars().count() > PLAIN_LABEL;
             label
         })
@@ -195,20 +189,6 @@ pub fn nice_axis(lo: f64, hi: f64, unit: Unit, max_labels: usize) -> NiceAxis {
         scale,
         log: false,
     }
-}
-
-/// `format!("{value:.decimals$}")` (by [`format::fixed`]) for a `value` within 1e-6 of a whole
-/// number n of its last decimal (a tick, a multiple of its step): the label then reads back as
-/// n/10^decimals, within 1e-6·10^−decimals of `value`, and needs no parsing back (most of an
-/// axis's cost was formatting and parsing). `None` for any other value (or decimals beyond 12, or
-/// |n| ≥ 1e12, where the product value·10^decimals could be rounded by more than the test allows).
-fn whole_label(value: f64, decimals: usize) -> Option<String> {
-    const POWERS: [f64; 13] = [
-        1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
-    ];
-    let scaled = value * POWERS.get(decimals)?;
-    let n = scaled.round();
-    (n.abs() < 1e12 && (scaled - n).abs() < 1e-6).then(|| format::fixed(value, decimals))
 }
 
 /// The round step whose outward-rounded ticks cover [a, b] in at most `max_intervals` with the
@@ -272,53 +252,6 @@ mod tests {
             let expected = axis.bounds[0] + (axis.bounds[1] - axis.bounds[0]) * i as f64 / n as f64;
             assert!((value - expected).abs() < 1e-9 * axis.bounds[1].abs().max(1.0));
         }
-    }
-
-    /// Ticks (multiples of every round step from 1e-12 to 1e12, negative too) and values drawn
-    /// from their bits: where `whole_label` gives a label, it is the formatter's to the digit and
-    /// reads back within a millionth of its last decimal.
-    #[test]
-    fn whole_labels_are_the_formatters() {
-        let mut given = 0;
-        let mut check = |value: f64, decimals: usize| {
-            if let Some(label) = whole_label(value, decimals) {
-                assert_eq!(label, format!("{value:.decimals$}"), "{value:e} {decimals}");
-                // What lets nice_axis skip parsing it back: it reads back as the value.
-                let shown: f64 = label.parse().expect("a number");
-                let last = 10f64.powi(-(decimals as i32));
-                assert!(
-                    (shown - value).abs() <= 1e-6 * last,
-                    "{value:e} {decimals}: {label}"
-                );
-                given += 1;
-            }
-        };
-        for exponent in -12..=12 {
-            for mantissa in MANTISSAS {
-                let step = mantissa * 10f64.powi(exponent);
-                let decimals = decimals_of(step);
-                for k in -40..=40 {
-                    check(f64::from(k) * step, decimals);
-                    check((f64::from(k) + 1e-9) * step, decimals);
-                }
-            }
-        }
-        let mut bits = 0x9e37_79b9_7f4a_7c15u64;
-        for _ in 0..200_000 {
-            bits ^= bits << 13;
-            bits ^= bits >> 7;
-            bits ^= bits << 17;
-            let value = f64::from_bits(bits);
-            let decimals = (bits % 13) as usize;
-            check(value, decimals);
-            // Near whole numbers of the last decimal, and halfway between them.
-            let near = (bits >> 20) as f64 / 1e3 * if bits & 1 == 0 { 1.0 } else { -1.0 };
-            check(near / 10f64.powi(decimals as i32), decimals);
-            check((near.round() + 0.5) / 10f64.powi(decimals as i32), decimals);
-        }
-        check(-0.0, 2);
-        check(-1e-9, 2);
-        assert!(given > 20_000, "{given} labels given");
     }
 
     #[test]

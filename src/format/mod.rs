@@ -10,6 +10,6 @@ pub mod units;
 
 pub use number::{
     ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, NOT_A_NUMBER, PICO, Prefix,
-    Rounded, TERA, Zeros, engineering, fixed, round_trip, scientific, significant, with_unit,
+    TERA, Zeros, engineering, round_trip, scientific, significant, with_unit,
 };
 pub use shortest_exp::push_shortest_exp;

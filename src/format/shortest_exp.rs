@@ -97,27 +97,8 @@ fn layout(body: &[u8]) -> (&[u8], &[u8], i32) {
     (lead, rest, power)
 }
 
-/// The shortest round-trip digits of a finite non-zero `value` (Żmij's), at most 17 ASCII digits
-/// without trailing zeros: written into `digits`, returning whether the value is negative, how
-/// many digits there are and the decimal exponent of the first.
-pub(super) fn shortest_digits(value: f64, digits: &mut [u8; 17]) -> (bool, usize, i32) {
-    let mut zmij = zmij::Buffer::new();
-    let text = zmij.format_finite(value).as_bytes();
-    let (negative, body) = match text.split_first() {
-        Some((b'-', rest)) => (true, rest),
-        _ => (false, text),
-    };
-    let (lead, rest, power) = layout(body);
-    let len = (lead.len() + rest.len()).min(digits.len());
-    let (head, tail) = digits.split_at_mut(lead.len().min(len));
-    head.copy_from_slice(&lead[..head.len()]);
-    let tail_len = len - head.len();
-    tail[..tail_len].copy_from_slice(&rest[..tail_len]);
-    (negative, len, power)
-}
-
 /// `digits` without its trailing zeros.
-pub(super) fn trim_end_zeros(digits: &[u8]) -> &[u8] {
+fn trim_end_zeros(digits: &[u8]) -> &[u8] {
     let kept = digits.iter().rposition(|&d| d != b'0').map_or(0, |i| i + 1);
     &digits[..kept]
 }

@@ -182,13 +182,11 @@ pub fn fit(value: f64, digits: usize, width: usize) -> String {
     let fits = |s: &String| s.chars().count() <= width;
     if value != 0.0 && value.is_finite() {
         for d in (1..=digits.max(1)).rev() {
-            // Both forms from one rounding.
-            let rounded = format::Rounded::new(value, d);
-            let plain = rounded.significant(value, Zeros::Trim);
+            let plain = format::significant(value, d, Zeros::Trim);
             if fits(&plain) {
                 return plain;
             }
-            let scientific = rounded.scientific(Zeros::Trim);
+            let scientific = format::scientific(value, d, Zeros::Trim);
             if fits(&scientific) {
                 return scientific;
             }
