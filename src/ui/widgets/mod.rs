@@ -12,5 +12,4 @@ pub mod picker;
 pub mod prompt;
 pub mod status;
 pub mod tabs;
-pub(crate) mod text;
 pub mod too_small;
