@@ -459,6 +459,9 @@ law_table! {
 /// The number of laws: the size of every per-law array.
 pub const LAW_COUNT: usize = LAWS.len();
 
+// `ForceModel` holds a row's index in a u8: a 257th row fails the build instead of wrapping.
+const _: () = assert!(LAW_COUNT <= u8::MAX as usize + 1);
+
 /// The row whose id is `id`, at compile time (a missing id fails the build).
 pub const fn index_of(id: &str) -> usize {
     let mut i = 0;
