@@ -17,6 +17,8 @@ pub mod sweep;
 pub mod ticks;
 pub mod work_precision;
 
+/// The colour of an ink, by name: a law's hue is part of its row of the law table.
+pub use crate::model::force::table::Hue;
 pub use layout::{Placed, place_ticks};
 
 use crate::model::ForceModel;
@@ -38,40 +40,14 @@ pub enum Ink {
     Plain(Hue),
 }
 
-/// The colour of an ink, by name: the terminal shows it in the ANSI colour of that name (not the
-/// bright variant, which fades on white), a figure in a print colour of that hue.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Hue {
-    Foreground,
-    Red,
-    Green,
-    Yellow,
-    Blue,
-    Magenta,
-    Cyan,
-}
-
 impl Ink {
-    /// The hue of this ink: a model or method keeps its hue everywhere. The five models take
-    /// five hues; the seven methods six hues and the foreground (radau5: never in the stability
-    /// view, where the reference is the foreground).
+    /// The hue of this ink: a model or method keeps its hue everywhere. A model's hue is on its
+    /// row of the law table; the seven methods take six hues and the foreground (radau5: never in
+    /// the stability view, where the reference is the foreground).
     pub fn hue(self) -> Hue {
         match self {
             Ink::Foreground => Hue::Foreground,
-            Ink::Model(m) => {
-                // The paper's five take five hues; further laws cycle through six hues and the
-                // foreground, their glyphs telling them apart (model_glyph).
-                const HUES: [Hue; 7] = [
-                    Hue::Red,
-                    Hue::Cyan,
-                    Hue::Magenta,
-                    Hue::Blue,
-                    Hue::Green,
-                    Hue::Yellow,
-                    Hue::Foreground,
-                ];
-                HUES[style_index(m) % HUES.len()]
-            }
+            Ink::Model(m) => m.spec().style.hue,
             Ink::Method(m) => match m {
                 Method::Dopri5 => Hue::Yellow,
                 Method::Dop853 => Hue::Cyan,
@@ -229,36 +205,9 @@ impl Readout {
     }
 }
 
-/// The paper's Fig. 5 models first (proposed, Hunt–Crossley, Lankarani–Nikravesh), then elastic
-/// Hertz and dry friction, then the other laws in table order: the index that picks a model's
-/// colour and glyph, so the paper's five never share either.
-pub fn style_index(model: ForceModel) -> usize {
-    const PAPER: [ForceModel; 5] = [
-        ForceModel::Proposed,
-        ForceModel::HuntCrossley,
-        ForceModel::LankaraniNikravesh,
-        ForceModel::Quasistatic,
-        ForceModel::DryFriction,
-    ];
-    PAPER.iter().position(|&m| m == model).unwrap_or_else(|| {
-        PAPER.len()
-            + ForceModel::ALL
-                .iter()
-                .filter(|m| !PAPER.contains(m))
-                .position(|&m| m == model)
-                .unwrap_or_default()
-    })
-}
-
-/// The glyph of a force model, each its own: ASCII, so every font and every figure has them.
+/// The glyph of a force model, from its row of the law table: each its own.
 pub fn model_glyph(model: ForceModel) -> char {
-    // The paper's five first (proposed, Hunt–Crossley, Lankarani–Nikravesh, Hertz, dry friction),
-    // then the other laws; REFERENCE_GLYPH is never one of them.
-    const GLYPHS: [char; 20] = [
-        '*', 'x', '#', 'o', '+', '%', '@', '&', '$', '~', '^', 'v', 's', 'd', 'k', 'z', 'w', 'h',
-        'n', 'q',
-    ];
-    GLYPHS[style_index(model) % GLYPHS.len()]
+    model.spec().style.glyph
 }
 
 /// The glyph of an integration method: each its own.
@@ -309,6 +258,7 @@ mod tests {
     #[test]
     fn glyphs_tell_every_model_and_method_apart() {
         for (i, a) in ForceModel::ALL.iter().enumerate() {
+            assert_ne!(model_glyph(*a), REFERENCE_GLYPH);
             for b in &ForceModel::ALL[i + 1..] {
                 assert_ne!(model_glyph(*a), model_glyph(*b));
             }

@@ -146,3 +146,84 @@ fn the_regime_advice_names_its_models_in_one_form() {
         );
     }
 }
+
+/// The rows the layout snapshots blank: the pane lists the law table in its order under each
+/// family's heading, every row with its law's glyph in its law's colour (the row's style in the
+/// table), `[x]` on the checked laws, and says how many rows there are.
+#[test]
+fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
+    use hertz_tui::chart::model_glyph;
+    use hertz_tui::ui::style::{Theme, sample};
+    let theme = Theme { color: true };
+    for (width, height) in [(80, 24), (160, 48)] {
+        let mut app = app();
+        update(&mut app, Action::Resize(width, height));
+        let checked = app.checked_models();
+        let left_width = usize::from(hertz_tui::ui::layout::left_width(
+            ratatui::layout::Rect::new(0, 0, width, height),
+        ));
+        let mut seen: Vec<ForceModel> = Vec::new();
+        for _ in 0..120 {
+            let terminal = render(&app, width, height);
+            let buffer = terminal.backend().buffer();
+            let rows: Vec<String> = buffer
+                .content
+                .chunks(usize::from(width))
+                .map(|row| row.iter().map(|c| c.symbol()).collect())
+                .collect();
+            let mut family = None;
+            for (y, row) in rows.iter().enumerate() {
+                let left: String = row.chars().take(left_width).collect();
+                if let Some(heading) = ForceModel::ALL
+                    .iter()
+                    .map(|m| m.spec().family)
+                    .find(|f| left.trim_matches(['│', ' ']) == f.title())
+                {
+                    family = Some(heading);
+                    continue;
+                }
+                let Some(name) = pane_names(std::slice::from_ref(row)).pop() else {
+                    continue;
+                };
+                let (model, _) = forms_of(&name).unwrap();
+                // The top row shown may be a law whose heading is scrolled off.
+                let family = *family.get_or_insert(model.spec().family);
+                assert_eq!(family, model.spec().family, "{model}: under its family");
+                let glyph = sample(model_glyph(model));
+                let at = row.find(&glyph).unwrap_or_else(|| panic!("{model}: {row}"));
+                let x = row[..at].chars().count() + 1;
+                let cell = &buffer[(x as u16, y as u16)];
+                assert_eq!(cell.fg, theme.model_color(model), "{model}: its colour");
+                let check = if checked.contains(&model) {
+                    "[x]"
+                } else {
+                    "[ ]"
+                };
+                assert!(row.contains(check), "{model}: {check} in {row}");
+                match seen.last() {
+                    Some(last) if *last == model => {}
+                    Some(last) if last.index() > model.index() => {}
+                    Some(last) => {
+                        assert!(!seen.contains(&model), "{model} once");
+                        assert_eq!(model.index(), last.index() + 1, "{model} after {last}");
+                        seen.push(model);
+                    }
+                    None => {
+                        assert_eq!(model, ForceModel::ALL[0], "the table's first row on top");
+                        seen.push(model);
+                    }
+                }
+            }
+            update(&mut app, Action::Down);
+        }
+        assert_eq!(seen, ForceModel::ALL.to_vec(), "{width}×{height}");
+        let screen = super::render::text(render(&app, width, height).backend().buffer());
+        let total = format!("of {} ", hertz_tui::ui::widgets::models::row_count());
+        if width >= 120 {
+            assert!(
+                screen.contains(&total),
+                "{width}×{height}: {total}\n{screen}"
+            );
+        }
+    }
+}

@@ -12,7 +12,7 @@
 //! No hertz-tui law has the STEP damping; it is solved here by hertz-tui's DOP853.
 
 use super::calibrate::solve_for_restitution;
-use super::contact::{self, ContactLaw, Damping, EndRule};
+use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
 use crate::model::power_law::PowerLaw;
@@ -31,7 +31,7 @@ const DEPTH_FRACTION: f64 = 0.1;
 fn law(k: f64, n: f64, c_max: f64, depth: f64) -> ContactLaw {
     ContactLaw {
         elastic: PowerLaw { k, n },
-        damping: Damping::Step { c_max, depth },
+        damping: EngineDamping::Step { c_max, depth },
         end: EndRule::Clamp,
     }
 }

@@ -34,9 +34,10 @@ impl EndRule {
     }
 }
 
-/// The dissipative part of an engine's normal force.
+/// The dissipative part of an engine's normal force: a form with its coefficients, not a table law's
+/// damping parameter ([`crate::model::force::Damping`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Damping {
+pub enum EngineDamping {
     /// k·xⁿ·α·ẋ: the Hunt–Crossley family (eq 19), α in s/m.
     HuntCrossley { alpha: f64 },
     /// c·x^p·ẋ: linear (p = 0) or Tsuji's Hertzian (p = 1/4) viscous damping, c in N·s/m^{1+p}.
@@ -50,7 +51,7 @@ pub enum Damping {
 pub struct ContactLaw {
     /// Elastic law F = k·xⁿ.
     pub elastic: PowerLaw,
-    pub damping: Damping,
+    pub damping: EngineDamping,
     pub end: EndRule,
 }
 
@@ -67,9 +68,9 @@ impl ContactLaw {
         let PowerLaw { k, n } = self.elastic;
         let elastic = k * x.signum() * x.abs().powf(n);
         match self.damping {
-            Damping::HuntCrossley { alpha } => elastic * (1.0 + alpha * v),
-            Damping::Viscous { c, p } => elastic + c * x.abs().powf(p) * v,
-            Damping::Step { c_max, depth } => elastic + c_max * cubic_step(x / depth) * v,
+            EngineDamping::HuntCrossley { alpha } => elastic * (1.0 + alpha * v),
+            EngineDamping::Viscous { c, p } => elastic + c * x.abs().powf(p) * v,
+            EngineDamping::Step { c_max, depth } => elastic + c_max * cubic_step(x / depth) * v,
         }
     }
 
@@ -81,9 +82,11 @@ impl ContactLaw {
             return k;
         }
         match self.damping {
-            Damping::HuntCrossley { alpha } => 1.0 + alpha * v,
-            Damping::Viscous { c, p } => k * x.powf(n - p) + c * v,
-            Damping::Step { c_max, depth } => k + c_max * cubic_step(x / depth) * v / x.powf(n),
+            EngineDamping::HuntCrossley { alpha } => 1.0 + alpha * v,
+            EngineDamping::Viscous { c, p } => k * x.powf(n - p) + c * v,
+            EngineDamping::Step { c_max, depth } => {
+                k + c_max * cubic_step(x / depth) * v / x.powf(n)
+            }
         }
     }
 
@@ -127,7 +130,7 @@ pub fn solve(law: &ContactLaw, mass: f64, v0: f64) -> Result<EngineImpact, Engin
 /// The exact impact of the Hunt–Crossley form; `None` for other laws or where the closed form
 /// loses finiteness (χ near 1/e for e → 0).
 fn exact(law: &ContactLaw, mass: f64, v0: f64) -> Result<Option<EngineImpact>, EngineError> {
-    if let Damping::HuntCrossley { alpha } = law.damping {
+    if let EngineDamping::HuntCrossley { alpha } = law.damping {
         let params = ImpactParams {
             mass,
             law: law.elastic,

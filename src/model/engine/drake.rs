@@ -11,7 +11,7 @@
 //! As a hertz-tui law: the Hunt–Crossley family with n = 1 and χ = d·v₀, solved exactly.
 
 use super::calibrate::hunt_crossley_chi;
-use super::contact::{ContactLaw, Damping, EndRule};
+use super::contact::{ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, realise, shown};
 use crate::model::Shape;
@@ -53,7 +53,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             k: k.value / 2.0,
             n: 1.0,
         },
-        damping: Damping::HuntCrossley { alpha: d.value },
+        damping: EngineDamping::HuntCrossley { alpha: d.value },
         end: EndRule::Clamp,
     };
     let (realised, e_of_v) = realise(&law, scene)?;

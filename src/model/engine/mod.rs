@@ -27,7 +27,7 @@ pub mod simbody;
 pub mod tsuji;
 pub mod yade;
 
-pub use contact::{ContactLaw, Damping, EndRule, EngineImpact};
+pub use contact::{ContactLaw, EndRule, EngineDamping, EngineImpact};
 pub use error::EngineError;
 
 /// One engine: its `--engine` id, its name, and how it translates a scene.

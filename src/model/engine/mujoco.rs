@@ -19,7 +19,7 @@
 use std::f64::consts::PI;
 
 use super::calibrate::solve_for_restitution;
-use super::contact::{self, ContactLaw, Damping, EndRule};
+use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, realise, shown};
 use crate::model::Shape;
@@ -42,7 +42,7 @@ fn law(mass: f64, omega: f64, zeta: f64) -> ContactLaw {
             k: mass * omega * omega,
             n: 1.0,
         },
-        damping: Damping::Viscous {
+        damping: EngineDamping::Viscous {
             c: 2.0 * zeta * omega * mass,
             p: 0.0,
         },

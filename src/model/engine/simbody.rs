@@ -14,7 +14,7 @@
 use std::f64::consts::SQRT_2;
 
 use super::calibrate::hunt_crossley_chi;
-use super::contact::{ContactLaw, Damping, EndRule};
+use super::contact::{ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
 use crate::model::power_law::PowerLaw;
@@ -56,7 +56,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             k: 4.0 / 3.0 * scene.r_star.sqrt() * e_combined,
             n: 1.5,
         },
-        damping: Damping::HuntCrossley {
+        damping: EngineDamping::HuntCrossley {
             alpha: 1.5 * dissipation.value,
         },
         end: EndRule::Tension,

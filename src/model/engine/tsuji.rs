@@ -4,7 +4,7 @@
 //! docs/physics.md §7). Its realised e depends on β alone (not on k, m or v₀) and on the end rule.
 
 use super::calibrate::{beta, solve_for_restitution};
-use super::contact::{self, ContactLaw, Damping, EndRule};
+use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
 
@@ -20,7 +20,7 @@ pub fn gamma(scene: &EngineScene, e: f64) -> f64 {
 pub fn law_with(scene: &EngineScene, c: f64, end: EndRule) -> ContactLaw {
     ContactLaw {
         elastic: scene.elastic,
-        damping: Damping::Viscous { c, p: 0.25 },
+        damping: EngineDamping::Viscous { c, p: 0.25 },
         end,
     }
 }

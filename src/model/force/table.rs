@@ -4,9 +4,9 @@
 //! iterates [`LAWS`] through [`super::ForceModel`]. The one `law_table!` invocation below (the
 //! macro is in `any.rs`) is both [`LAWS`] and the generator of [`AnyLaw`]: each row names its
 //! variant, the law type of its file and that type's builder (`Variant = file::Type::builder`),
-//! then its table data. A Hunt–Crossley-type law is one row with its χ(e); a law with its own
-//! equations is one file (a `ForceLaw` type and its builder, declared by its `mod` line in
-//! `force/mod.rs`) plus one row.
+//! then its table data, its style included (the glyph and hue it is drawn with everywhere). A
+//! Hunt–Crossley-type law is one row with its χ(e); a law with its own equations is one file (a
+//! `ForceLaw` type and its builder, declared by its `mod` line in `force/mod.rs`) plus one row.
 
 use super::any::law_table;
 
@@ -71,6 +71,31 @@ impl ContactRule {
     }
 }
 
+/// A colour by name, for renderers to map to their palettes: the terminal shows it in the ANSI
+/// colour of that name (not the bright variant, which fades on white), a figure in a print colour
+/// of that hue.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Hue {
+    /// The renderer's own foreground (black in figures).
+    Foreground,
+    Red,
+    Green,
+    Yellow,
+    Blue,
+    Magenta,
+    Cyan,
+}
+
+/// How a law's curves and legend entries look in every chart, pane and figure: part of its row,
+/// so that adding a law restyles no other. No two laws share a glyph (it tells curves apart
+/// where colour cannot); the paper's five take five different hues.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct LawStyle {
+    /// Marks the law's curves at their peak and end; printable ASCII, which every font has.
+    pub glyph: char,
+    pub hue: Hue,
+}
+
 /// One law of the table.
 #[derive(Debug, Clone, Copy)]
 pub struct LawSpec {
@@ -86,6 +111,7 @@ pub struct LawSpec {
     /// The damping parameter, `None` for a law without one.
     pub damping: Option<DampingParam>,
     pub contact: ContactRule,
+    pub style: LawStyle,
     /// χ(e) of a Hunt–Crossley-family row, F = k·xⁿ·(1 + χ(e)·ẋ/v₀); `None` for other laws.
     pub chi: Option<fn(f64) -> f64>,
 }
@@ -125,6 +151,10 @@ law_table! {
         family: Family::Elastic,
         damping: None,
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'o',
+            hue: Hue::Blue,
+        },
         chi: None,
     };
     HertzLineExact = hertz_line_exact::HertzLineExact::build,
@@ -136,6 +166,10 @@ law_table! {
         family: Family::Elastic,
         damping: None,
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: '%',
+            hue: Hue::Yellow,
+        },
         chi: None,
     };
     DryFriction = dry_friction::DryFriction::build,
@@ -151,6 +185,10 @@ law_table! {
             unit: "N/m",
         }),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: '+',
+            hue: Hue::Green,
+        },
         chi: None,
     };
     Proposed = proposed::Proposed::build,
@@ -166,6 +204,10 @@ law_table! {
             unit: "N·s/m^n",
         }),
         contact: ContactRule::ForceZero,
+        style: LawStyle {
+            glyph: '*',
+            hue: Hue::Red,
+        },
         chi: None,
     };
     HertzViscous = hertz_viscous::HertzViscous::build,
@@ -177,6 +219,10 @@ law_table! {
         family: Family::Viscous,
         damping: Some(GAMMA),
         contact: ContactRule::ForceZero,
+        style: LawStyle {
+            glyph: '@',
+            hue: Hue::Foreground,
+        },
         chi: None,
     };
     HertzViscousTension = hertz_viscous::HertzViscous::build,
@@ -188,6 +234,10 @@ law_table! {
         family: Family::Viscous,
         damping: Some(GAMMA),
         contact: ContactRule::TensionAllowed,
+        style: LawStyle {
+            glyph: '&',
+            hue: Hue::Red,
+        },
         chi: None,
     };
     KelvinVoigt = kelvin_voigt::KelvinVoigt::build,
@@ -199,6 +249,10 @@ law_table! {
         family: Family::Viscous,
         damping: Some(KV_C),
         contact: ContactRule::ForceZero,
+        style: LawStyle {
+            glyph: '$',
+            hue: Hue::Cyan,
+        },
         chi: None,
     };
     KelvinVoigtTension = kelvin_voigt::KelvinVoigt::build,
@@ -210,6 +264,10 @@ law_table! {
         family: Family::Viscous,
         damping: Some(KV_C),
         contact: ContactRule::TensionAllowed,
+        style: LawStyle {
+            glyph: '~',
+            hue: Hue::Magenta,
+        },
         chi: None,
     };
     KuwabaraKono = proposed::Proposed::build_kuwabara_kono,
@@ -221,6 +279,10 @@ law_table! {
         family: Family::Viscous,
         damping: Some(KK_A),
         contact: ContactRule::ForceZero,
+        style: LawStyle {
+            glyph: '^',
+            hue: Hue::Blue,
+        },
         chi: None,
     };
     KuwabaraKonoTension = proposed::Proposed::build_kuwabara_kono,
@@ -232,6 +294,10 @@ law_table! {
         family: Family::Viscous,
         damping: Some(KK_A),
         contact: ContactRule::TensionAllowed,
+        style: LawStyle {
+            glyph: 'v',
+            hue: Hue::Green,
+        },
         chi: None,
     };
     Thornton = thornton::Thornton::build,
@@ -247,6 +313,10 @@ law_table! {
             unit: "m/s",
         }),
         contact: ContactRule::ForceZero,
+        style: LawStyle {
+            glyph: 's',
+            hue: Hue::Yellow,
+        },
         chi: None,
     };
     HuntCrossley = hysteresis::Hysteresis::build,
@@ -258,6 +328,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'x',
+            hue: Hue::Cyan,
+        },
         chi: Some(|e| 1.5 * (1.0 - e)),
     };
     LankaraniNikravesh = hysteresis::Hysteresis::build,
@@ -269,6 +343,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: '#',
+            hue: Hue::Magenta,
+        },
         chi: Some(|e| 0.75 * (1.0 - e * e)),
     };
     HerbertMcWhannell = hysteresis::Hysteresis::build,
@@ -280,6 +358,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'd',
+            hue: Hue::Foreground,
+        },
         chi: Some(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
     };
     LeeWang = hysteresis::Hysteresis::build,
@@ -291,6 +373,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'k',
+            hue: Hue::Red,
+        },
         chi: Some(|e| 0.75 * (1.0 - e)),
     };
     Gonthier = hysteresis::Hysteresis::build,
@@ -302,6 +388,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'z',
+            hue: Hue::Cyan,
+        },
         chi: Some(|e| (1.0 - e * e) / e),
     };
     ZhiyingQishao = hysteresis::Hysteresis::build,
@@ -313,6 +403,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'w',
+            hue: Hue::Magenta,
+        },
         chi: Some(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
     };
     Flores = hysteresis::Hysteresis::build,
@@ -324,6 +418,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'h',
+            hue: Hue::Blue,
+        },
         chi: Some(|e| 1.6 * (1.0 - e) / e),
     };
     HuGuo = hysteresis::Hysteresis::build,
@@ -335,6 +433,10 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'n',
+            hue: Hue::Green,
+        },
         chi: Some(|e| 1.5 * (1.0 - e) / e),
     };
     GharibHurmuzlu = hysteresis::Hysteresis::build,
@@ -346,12 +448,19 @@ law_table! {
         family: Family::HuntCrossley,
         damping: Some(CHI),
         contact: ContactRule::ApproachZero,
+        style: LawStyle {
+            glyph: 'q',
+            hue: Hue::Yellow,
+        },
         chi: Some(|e| 1.0 / e - 1.0),
     };
 }
 
 /// The number of laws: the size of every per-law array.
 pub const LAW_COUNT: usize = LAWS.len();
+
+// `ForceModel` holds a row's index in a u8: a 257th row fails the build instead of wrapping.
+const _: () = assert!(LAW_COUNT <= u8::MAX as usize + 1);
 
 /// The row whose id is `id`, at compile time (a missing id fails the build).
 pub const fn index_of(id: &str) -> usize {
@@ -378,4 +487,37 @@ const fn str_eq(a: &str, b: &str) -> bool {
         i += 1;
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every row draws with a glyph of its own, so that two laws' curves never look alike even
+    /// where they share a hue or colour is off (`NO_COLOR`, a figure printed in grey).
+    #[test]
+    fn every_law_has_a_printable_glyph_of_its_own() {
+        for (i, a) in LAWS.iter().enumerate() {
+            assert!(a.style.glyph.is_ascii_graphic(), "{}: {:?}", a.id, a.style);
+            for b in &LAWS[i + 1..] {
+                assert_ne!(a.style.glyph, b.style.glyph, "{} and {}", a.id, b.id);
+            }
+        }
+    }
+
+    /// The paper's five, drawn together in its Fig. 5 and the default scene, take five hues.
+    #[test]
+    fn the_papers_five_laws_take_five_hues() {
+        let five = [
+            "quasistatic",
+            "dry-friction",
+            "proposed",
+            "hunt-crossley",
+            "lankarani-nikravesh",
+        ]
+        .map(|id| LAWS[index_of(id)].style.hue);
+        for (i, a) in five.iter().enumerate() {
+            assert!(!five[i + 1..].contains(a), "{five:?}");
+        }
+    }
 }

@@ -158,13 +158,20 @@ mod tests {
     #[test]
     fn models_differ_in_colour_and_no_colour_fades_on_light_or_dark() {
         let theme = Theme { color: true };
-        // Seven hues for every law: the first seven in style order (the paper's five among them)
-        // never share a colour; past them the glyph tells curves apart (chart::model_glyph).
-        let mut by_style = ForceModel::ALL.to_vec();
-        by_style.sort_by_key(|m| crate::chart::style_index(*m));
-        for (i, a) in by_style.iter().enumerate() {
-            assert!(!FADING.contains(&theme.model_color(*a)));
-            for b in by_style[i + 1..].iter().take(6usize.saturating_sub(i)) {
+        // Each law's hue is on its row of the law table; the paper's five never share a colour,
+        // and past them the glyph tells curves apart (model::force::table::LawStyle).
+        for model in ForceModel::ALL {
+            assert!(!FADING.contains(&theme.model_color(model)), "{model}");
+        }
+        let paper = [
+            ForceModel::Quasistatic,
+            ForceModel::DryFriction,
+            ForceModel::Proposed,
+            ForceModel::HuntCrossley,
+            ForceModel::LankaraniNikravesh,
+        ];
+        for (i, a) in paper.iter().enumerate() {
+            for b in &paper[i + 1..] {
                 assert_ne!(theme.model_color(*a), theme.model_color(*b), "{a} {b}");
             }
         }
