@@ -52,8 +52,8 @@ pub enum Hue {
 }
 
 impl Ink {
-    /// The hue of this ink: a model or method keeps its hue everywhere. The five models take
-    /// five hues; the seven methods six hues and the foreground (radau5: never in the stability
+    /// The hue of this ink: a model or method keeps its hue everywhere. The paper's five laws take
+    /// five hues, the other laws share the rest; the seven methods six hues and the foreground (radau5: never in the stability
     /// view, where the reference is the foreground).
     pub fn hue(self) -> Hue {
         match self {

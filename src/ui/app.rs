@@ -8,7 +8,7 @@ use tui_input::Input;
 use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
-use crate::model::scene_file::View;
+use crate::model::scene_file::SceneView;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
@@ -130,7 +130,7 @@ pub struct App {
     /// The scene as last loaded or saved, for the unsaved-changes mark.
     pub(super) saved: Scene,
     /// The view (models, solver settings) as last loaded or saved, for resetting the solver rows.
-    pub(super) saved_view: View,
+    pub(super) saved_view: SceneView,
     /// The preset the scene was loaded from or saved as, if any.
     pub preset: Option<String>,
     /// The description of that preset, kept when the scene is saved.
@@ -188,7 +188,7 @@ pub(super) fn model_index(model: ForceModel) -> usize {
 impl App {
     /// The explorer on `scene`, with the solves of the checked models queued.
     pub fn new(scene: Scene, registry: Registry, marker: MarkerStyle, theme: Theme) -> App {
-        let view = View {
+        let view = SceneView {
             models: DEFAULT_CHECKED.to_vec(),
             options: SolveOptions::default(),
         };
@@ -198,7 +198,7 @@ impl App {
     /// The explorer on `scene` as `view` asks (checked models, the first focused; solver settings).
     pub fn open(
         scene: Scene,
-        view: View,
+        view: SceneView,
         registry: Registry,
         marker: MarkerStyle,
         theme: Theme,
@@ -266,9 +266,9 @@ impl App {
         }
     }
 
-    /// The view to save: the focused model first if checked, then the other checked ones; the
+    /// The scene view to save: the focused model first if checked, then the other checked ones; the
     /// solver settings of the draft.
-    pub fn view(&self) -> View {
+    pub fn scene_view(&self) -> SceneView {
         let mut models = self.checked_models();
         if let Some(i) = models.iter().position(|&m| m == self.focused) {
             models[..=i].rotate_right(1);
@@ -276,7 +276,7 @@ impl App {
         if models.is_empty() {
             models = self.saved_view.models.clone();
         }
-        View {
+        SceneView {
             models,
             options: self.draft.options,
         }

@@ -49,7 +49,7 @@ use color_eyre::eyre::WrapErr;
 
 use crate::model::Scene;
 use crate::model::presets::Registry;
-use crate::model::scene_file::View;
+use crate::model::scene_file::SceneView;
 
 use app::App;
 use style::Theme;
@@ -58,7 +58,12 @@ use style::Theme;
 /// (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
-pub fn run(scene: Scene, view: View, source: &str, marker: MarkerStyle) -> color_eyre::Result<()> {
+pub fn run(
+    scene: Scene,
+    view: SceneView,
+    source: &str,
+    marker: MarkerStyle,
+) -> color_eyre::Result<()> {
     let registry = Registry::load()
         .or_else(|_| Registry::builtin())
         .wrap_err("cannot load the presets")?;

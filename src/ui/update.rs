@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use tui_input::{Input, InputRequest};
 
 use crate::model::presets::{Origin, Registry, SaveTarget, is_kebab_case, kebab_case};
-use crate::model::scene_file::View;
+use crate::model::scene_file::SceneView;
 use crate::model::scene_key::BodyIndex;
 use crate::model::{ForceModel, Scene};
 
@@ -440,7 +440,7 @@ fn save_preset(app: &mut App, name: &str) -> Result<String, String> {
 /// becomes the preset shown.
 fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<String, String> {
     let scene = scene_to_save(app, name);
-    let view = app.view();
+    let view = app.scene_view();
     let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
     let written = app
         .registry
@@ -469,7 +469,7 @@ fn scene_to_save(app: &App, name: &str) -> Scene {
 }
 
 /// After a save: the saved scene is the reference for `*` and resets, the registry lists it.
-fn saved(app: &mut App, scene: Scene, view: View, preset: Option<&str>) {
+fn saved(app: &mut App, scene: Scene, view: SceneView, preset: Option<&str>) {
     app.draft.scene.name = scene.name.clone();
     app.saved = scene;
     app.saved_view = view;
