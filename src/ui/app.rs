@@ -19,8 +19,8 @@ use super::picker::Picker;
 use super::solutions::{Job, Solutions};
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
-use super::views::sweep::settings::{SweepField, SweepSettings};
-use crate::chart::work_precision::Cost;
+use super::views::ViewStates;
+use super::views::sweep::settings::SweepField;
 use crate::model::study::runner::{StudyJob, StudySpec};
 use crate::ui::studies::Studies;
 
@@ -148,8 +148,6 @@ pub struct App {
     pub(super) checked: [bool; LAW_COUNT],
     /// Each law's damping calibrated so that it realises the scene's e (docs/physics.md §6.4).
     pub calibrate: bool,
-    /// The restitution view shows its table instead of its charts.
-    pub restitution_table: bool,
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -157,19 +155,10 @@ pub struct App {
     pub tab: Tab,
     /// Results of the studies of tabs 2–4.
     pub studies: Studies,
-    /// The step of the stability view, s; `None` follows the scene (the RK4 critical step).
-    pub step: Option<f64>,
-    pub sweep: SweepSettings,
-    /// The row of the sweep form under the cursor.
-    pub sweep_cursor: SweepField,
-    /// The work-precision chart shown where only one fits.
-    pub cost: Cost,
+    /// Each view's own state (its settings, cursor, chart shown).
+    pub views: ViewStates,
     /// Terminal size (columns, rows), for sizing sweeps to their chart; (0, 0) until known.
     pub screen: (u16, u16),
-    /// The chart shown first (alone where only one fits).
-    pub chart: ChartKind,
-    /// The explorer's data cursor, per mille along the charts' x axes (`None`: hidden).
-    pub data_cursor: Option<u16>,
     pub marker: MarkerStyle,
     pub theme: Theme,
     pub message: Option<Message>,
@@ -225,19 +214,13 @@ impl App {
             solutions: Solutions::default(),
             checked: [false; LAW_COUNT],
             calibrate: false,
-            restitution_table: false,
             focused: view.focused(),
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
             tab: Tab::HOME,
             studies: Studies::default(),
-            step: None,
-            sweep: SweepSettings::default(),
-            sweep_cursor: SweepField::Parameter,
-            cost: Cost::Seconds,
+            views: ViewStates::default(),
             screen: (0, 0),
-            chart: ChartKind::ForceDisplacement,
-            data_cursor: None,
             marker,
             theme,
             message: None,

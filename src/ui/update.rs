@@ -11,7 +11,6 @@ use crate::model::{ForceModel, Scene};
 
 use super::action::{Action, Jump};
 use super::app::{App, Confirm, Cursor, Editor, Mode, Prompt, PromptKind};
-use super::data_cursor;
 use super::edited;
 use super::export;
 use super::field::Nudge;
@@ -182,9 +181,6 @@ fn normal(app: &mut App, action: Action) {
                 error: None,
             });
         }
-        Action::MoveCursor(forward) => {
-            app.data_cursor = Some(data_cursor::moved(app.data_cursor, forward));
-        }
         Action::Figure => match figure_export::write_view(app) {
             Ok(news) => app.say(news, false),
             Err(reason) => app.say(reason, true),
@@ -214,7 +210,6 @@ fn normal(app: &mut App, action: Action) {
                 );
             }
         }
-        Action::Cancel => app.data_cursor = None,
         Action::Paste(_) => app.say(
             "paste ignored: move to a field of the explorer (1) and paste there",
             true,
@@ -227,6 +222,8 @@ fn normal(app: &mut App, action: Action) {
         | Action::ResetField
         | Action::Enter
         | Action::CycleChart
+        | Action::MoveCursor(_)
+        | Action::Cancel
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit

@@ -676,9 +676,9 @@ fn the_data_cursor_reads_each_curve_at_its_place() {
         );
     }
     press(&mut app, KeyCode::Char('<'));
-    assert_eq!(app.data_cursor, Some(490));
+    assert_eq!(app.views.explorer.data_cursor, Some(490));
     press(&mut app, KeyCode::Esc);
-    assert_eq!(app.data_cursor, None);
+    assert_eq!(app.views.explorer.data_cursor, None);
     let screen = text(render(&app, 160, 48).backend().buffer());
     assert!(!screen.contains("t = "));
 }
@@ -761,7 +761,10 @@ fn a_click_on_a_chart_places_the_data_cursor_there() {
     assert!(labels.contains("50"), "{labels}");
     let fifty = ticks[5];
     update(&mut app, Action::Click(fifty as u16, (axis_row - 2) as u16));
-    assert!(app.data_cursor.is_some(), "the click placed the cursor");
+    assert!(
+        app.views.explorer.data_cursor.is_some(),
+        "the click placed the cursor"
+    );
     let screen = text(render(&app, 160, 48).backend().buffer());
     let readout = screen
         .lines()
@@ -882,7 +885,7 @@ fn narrow_study_headers_shorten_instead_of_cutting() {
         );
     }
     update(&mut app, Action::Tab(Tab::named("sweep").unwrap()));
-    app.sweep.output = hertz_tui::chart::sweep::SweepOutput::EOut;
+    app.views.sweep.settings.output = hertz_tui::chart::sweep::SweepOutput::EOut;
     let screen = text(render(&app, 80, 24).backend().buffer());
     let output = screen
         .lines()

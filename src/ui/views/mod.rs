@@ -3,9 +3,10 @@
 //! needs, its lines in the help and the figure `f` writes all come from [`VIEWS`]. A new view is a
 //! folder implementing [`View`] plus one line in the `registry!` below.
 //!
-//! A view reads the app (`&App`) to draw and acts on it (`&mut App`) for its own keys. The app
-//! state holds the views' settings (their types live in the view folders, e.g. `sweep::settings`)
-//! and the shown [`Tab`], but never imports a view's drawing or keys.
+//! Each folder also defines the view's own state, `State` (its settings, cursor, chart shown…),
+//! and the same registry line gives it a field of [`ViewStates`], which the app holds: a view with
+//! state and a study is one folder plus one line. A view reads the app (`&App`) to draw and acts on
+//! it (`&mut App`) for its own keys; the app never imports a view's drawing or keys.
 
 use ratatui::Frame;
 use ratatui::layout::Position;
@@ -70,7 +71,8 @@ pub trait View: Sync {
     fn charts(&self, app: &App) -> Vec<Chart>;
 }
 
-/// Declares each view's folder as a module and lists it in [`VIEWS`], from one line per view.
+/// Declares each view's folder as a module, lists it in [`VIEWS`] and gives its `State` a field
+/// of [`ViewStates`], from one line per view.
 macro_rules! registry {
     ($($folder:ident::$view:ident),+ $(,)?) => {
         $(pub mod $folder;)+
@@ -78,6 +80,13 @@ macro_rules! registry {
         /// Every view, in tab order: the first is where the explorer opens, the n-th opens with
         /// digit n.
         pub static VIEWS: &[&dyn View] = &[$(&$folder::$view),+];
+
+        /// The state of every view, one field per view folder, named after it; each starts as its
+        /// `State::default()`.
+        #[derive(Debug, Default)]
+        pub struct ViewStates {
+            $(pub $folder: $folder::State,)+
+        }
     };
 }
 

@@ -96,7 +96,7 @@ fn header(frame: &mut Frame, area: Rect, app: &App, data: Option<&StabilityData>
         _ => None,
     };
     let step = super::step(app);
-    let value = match (step, app.step) {
+    let value = match (step, app.views.stability.step) {
         (Some(dt), None) => format!(
             "{} (auto: the rk4 critical step)",
             units::engineering(dt, units::SECOND, 4)

@@ -16,10 +16,28 @@ use crate::ui::layout::Screen;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
 use crate::chart::sweep::SweepSet;
+use settings::{SweepField, SweepSettings};
 
 use super::{FIGURE_TICKS, Hints, View};
 
 pub struct Sweep;
+
+/// The sweep view's own state.
+#[derive(Debug, Clone)]
+pub struct State {
+    pub settings: SweepSettings,
+    /// The row of the form under the cursor.
+    pub cursor: SweepField,
+}
+
+impl Default for State {
+    fn default() -> State {
+        State {
+            settings: SweepSettings::default(),
+            cursor: SweepField::Parameter,
+        }
+    }
+}
 
 impl View for Sweep {
     fn id(&self) -> &'static str {
@@ -56,7 +74,7 @@ impl View for Sweep {
         match target {
             EditTarget::Sweep(field) => {
                 let scene = keys::sweep_scene(app);
-                app.sweep.apply(field, text, &scene)
+                app.views.sweep.settings.apply(field, text, &scene)
             }
             _ => Ok(()),
         }
@@ -67,7 +85,7 @@ impl View for Sweep {
     }
 
     fn study_specs(&self, app: &App, valid: &Valid) -> Vec<StudySpec> {
-        match app.sweep.spec(
+        match app.views.sweep.settings.spec(
             &valid.scene,
             app.checked_models(),
             app.draft.options,
@@ -97,7 +115,7 @@ impl View for Sweep {
                 };
                 vec![plot::chart(
                     &[set],
-                    app.sweep.output,
+                    app.views.sweep.settings.output,
                     Some(app.focused),
                     FIGURE_TICKS,
                 )]
