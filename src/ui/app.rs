@@ -20,7 +20,6 @@ use super::solutions::{Job, Solutions};
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
 use super::views::ViewStates;
-use super::views::sweep::settings::SweepField;
 use crate::model::study::runner::{StudyJob, StudySpec};
 use crate::ui::studies::Studies;
 
@@ -36,10 +35,8 @@ pub enum Cursor {
 pub enum EditTarget {
     /// A field of the explorer's form.
     Field(Field),
-    /// The step of the stability view.
-    Step,
-    /// A row of the sweep form.
-    Sweep(SweepField),
+    /// A row of the shown view's own form, numbered by the view.
+    Row(usize),
 }
 
 /// A field being edited.

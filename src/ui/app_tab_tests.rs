@@ -10,7 +10,7 @@ use crate::model::scene_key::SceneKey;
 use crate::model::study::stability::critical_step;
 
 use super::action::Action;
-use super::app::{App, Cursor, EditTarget, Mode};
+use super::app::{App, Cursor, Mode};
 use super::field::Field;
 use super::keymap::action_for_event;
 use super::style::{MarkerStyle, Theme};
@@ -153,7 +153,7 @@ fn the_stability_step_defaults_to_rk4_critical_and_halves_doubles_and_types() {
     key(&mut a, KeyCode::Right);
     assert_eq!(views::stability::step(&a), Some(critical * 2.0));
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(&a.mode, Mode::Editing(e) if e.target == EditTarget::Step));
+    assert!(matches!(&a.mode, Mode::Editing(e) if e.target == views::stability::STEP_EDITOR));
     enter_text(&mut a, "2 µs");
     assert!(matches!(a.mode, Mode::Normal));
     assert_eq!(a.views.stability.step, Some(2e-6));
@@ -207,7 +207,9 @@ fn the_sweep_form_moves_edits_and_follows_the_checked_models() {
     // The from bound, typed with a unit.
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(&a.mode, Mode::Editing(e) if e.target == EditTarget::Sweep(SweepField::From)));
+    assert!(
+        matches!(&a.mode, Mode::Editing(e) if e.target == views::sweep::editor(SweepField::From))
+    );
     enter_text(&mut a, "10 mm/s");
     let jobs = a.take_studies();
     let StudySpec::Sweep { spec, .. } = &jobs[0].spec else {

@@ -1,7 +1,7 @@
 //! The stability view's keys: ←→ halve and double the step, Enter types it.
 
 use crate::ui::action::Action;
-use crate::ui::app::{App, EditTarget};
+use crate::ui::app::App;
 use crate::ui::field::Nudge;
 use crate::format::units;
 
@@ -30,7 +30,7 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
                 Some(dt) => units::engineering(dt, units::SECOND, 4),
                 None => "auto".into(),
             };
-            app.open_editor(EditTarget::Step, text);
+            app.open_editor(super::STEP_EDITOR, text);
             None
         }
         action => Some(action),

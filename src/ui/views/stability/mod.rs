@@ -20,6 +20,9 @@ use super::{FIGURE_COLUMNS, FIGURE_TICKS, Hints, View};
 
 pub struct Stability;
 
+/// The line editor of the step.
+pub const STEP_EDITOR: EditTarget = EditTarget::Row(0);
+
 /// The stability view's own state.
 #[derive(Debug, Clone, Default)]
 pub struct State {
@@ -54,7 +57,7 @@ impl View for Stability {
 
     fn commit(&self, app: &mut App, target: EditTarget, text: &str) -> Result<(), String> {
         match target {
-            EditTarget::Step => keys::commit_step(app, text),
+            STEP_EDITOR => keys::commit_step(app, text),
             _ => Ok(()),
         }
     }

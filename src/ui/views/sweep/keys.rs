@@ -2,7 +2,7 @@
 //! row that has choices rather than a value).
 
 use crate::ui::action::Action;
-use crate::ui::app::{App, EditTarget};
+use crate::ui::app::App;
 use crate::ui::field::Nudge;
 
 use super::settings::SweepField;
@@ -16,7 +16,7 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
             let field = app.views.sweep.cursor;
             if field.is_typed() {
                 let text = app.views.sweep.settings.edit_text(field, &sweep_scene(app));
-                app.open_editor(EditTarget::Sweep(field), text);
+                app.open_editor(super::editor(field), text);
             } else {
                 nudge(app, field, Nudge::Up);
             }

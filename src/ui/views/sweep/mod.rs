@@ -22,6 +22,11 @@ use super::{FIGURE_TICKS, Hints, View};
 
 pub struct Sweep;
 
+/// The line editor of a row of the form.
+pub fn editor(field: SweepField) -> EditTarget {
+    EditTarget::Row(SweepField::ALL.iter().position(|&f| f == field).unwrap_or_default())
+}
+
 /// The sweep view's own state.
 #[derive(Debug, Clone)]
 pub struct State {
@@ -72,7 +77,10 @@ impl View for Sweep {
 
     fn commit(&self, app: &mut App, target: EditTarget, text: &str) -> Result<(), String> {
         match target {
-            EditTarget::Sweep(field) => {
+            EditTarget::Row(row) => {
+                let Some(&field) = SweepField::ALL.get(row) else {
+                    return Ok(());
+                };
                 let scene = keys::sweep_scene(app);
                 app.views.sweep.settings.apply(field, text, &scene)
             }

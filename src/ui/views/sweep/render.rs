@@ -8,7 +8,7 @@ use ratatui::widgets::Paragraph;
 
 use crate::model::Scene;
 use crate::model::scene_key::SceneKey;
-use crate::ui::app::{App, EditTarget, Mode};
+use crate::ui::app::{App, Mode};
 use crate::ui::layout::Screen;
 use crate::model::study::runner::{StudyKind, SweepData};
 use crate::ui::style::Role;
@@ -66,7 +66,7 @@ fn form(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, roomy: bool) {
                     max_points,
                     usize::from(inner.width).saturating_sub(LABEL_WIDTH + 1),
                 ),
-                editor: editor.filter(|e| e.target == EditTarget::Sweep(field)),
+                editor: editor.filter(|e| e.target == super::editor(field)),
                 under_cursor: app.views.sweep.cursor == field && editor.is_none(),
             },
             theme,
