@@ -292,7 +292,7 @@ impl App {
         std::mem::take(&mut self.outbox)
     }
 
-    /// The studies requested since the last call, for the study worker.
+    /// The studies requested since the last call, for the studies' job queue.
     pub fn take_studies(&mut self) -> Vec<StudyJob> {
         std::mem::take(&mut self.study_outbox)
     }
@@ -328,7 +328,7 @@ impl App {
             .filter(|dt| *dt > 0.0 && dt.is_finite())
     }
 
-    /// Queues `spec` for the study worker unless the same study is held or running.
+    /// Queues `spec` for the studies' job queue unless the same study is held or running.
     pub(crate) fn queue_study(&mut self, spec: StudySpec) {
         if let Some(job) = self.studies.request(spec) {
             self.study_outbox.push(job);

@@ -4,8 +4,8 @@
 //! turns keys into actions; [`render`] draws the screen from `&App`: the tab bar, the shown view
 //! and the status line. Each tab is a folder of [`views`] (its keys, panes and charts) registered
 //! in [`views::VIEWS`]; the panes they share are in [`widgets`], the looks in [`style`].
-//! [`worker`] solves off the UI thread and [`study_worker`] computes the [`studies`] of the study
-//! views on a thread of its own; `runtime` ties them to the terminal. The UI holds no physics:
+//! The solves ([`worker`]) and the [`studies`] of the study views run off the UI thread, each on a
+//! [`jobs`] queue of its own; `runtime` ties them to the terminal. The UI holds no physics:
 //! every number comes from `crate::model`.
 
 pub mod action;
@@ -21,6 +21,7 @@ mod edited;
 pub mod export;
 pub mod field;
 pub mod figure_export;
+pub mod jobs;
 pub mod keymap;
 pub mod layout;
 mod mouse;
@@ -30,7 +31,6 @@ mod runtime;
 pub mod screen;
 pub mod solutions;
 pub mod studies;
-pub mod study_worker;
 pub mod style;
 pub mod tab;
 #[cfg(test)]

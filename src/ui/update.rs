@@ -15,11 +15,12 @@ use super::edited;
 use super::export;
 use super::field::Nudge;
 use super::figure_export;
+use super::jobs::Report;
 use super::mouse;
 use super::picker::{EntryKind, Picker};
-use super::study_worker::StudyReport;
+use super::solutions::Outcome;
 use super::views;
-use super::worker::Report;
+use crate::model::study::runner::StudyOutcome;
 
 /// Advances the state machine by one action.
 pub fn update(app: &mut App, action: Action) {
@@ -119,7 +120,7 @@ fn confirming(app: &mut App, confirm: Confirm, action: Action) {
     }
 }
 
-fn solved(app: &mut App, report: Report) {
+fn solved(app: &mut App, report: Report<Outcome>) {
     match report {
         Ok(outcome) => {
             if app.solutions.accept(outcome) && !app.solutions.any_pending() {
@@ -131,7 +132,7 @@ fn solved(app: &mut App, report: Report) {
     }
 }
 
-fn studied(app: &mut App, report: StudyReport) {
+fn studied(app: &mut App, report: Report<StudyOutcome>) {
     match report {
         Ok(outcome) => {
             app.studies.accept(outcome);
