@@ -54,6 +54,8 @@ pub enum Action {
     ToggleCalibration,
     /// Shows a view: the explorer or a study.
     Tab(Tab),
+    /// Shows the next (`Up`) or previous (`Down`) view, wrapping around.
+    CycleView(Nudge),
     Help,
     /// Opens the engine panel: the scene's contact parameters for a simulation engine.
     Engines,

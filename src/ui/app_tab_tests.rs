@@ -237,3 +237,22 @@ fn the_sweep_form_moves_edits_and_follows_the_checked_models() {
     key(&mut a, KeyCode::Enter);
     assert!(!a.views.sweep.settings.range(&a.draft.scene).unwrap().log);
 }
+
+#[test]
+fn v_and_shift_v_step_through_every_view_and_wrap() {
+    let mut a = app();
+    let mut seen = vec![a.tab];
+    for _ in 1..views::VIEWS.len() {
+        key(&mut a, KeyCode::Char('v'));
+        seen.push(a.tab);
+    }
+    assert_eq!(
+        seen,
+        Tab::all().collect::<Vec<_>>(),
+        "v visits each in order"
+    );
+    key(&mut a, KeyCode::Char('v'));
+    assert_eq!(a.tab, Tab::HOME, "and wraps to the first");
+    key(&mut a, KeyCode::Char('V'));
+    assert_eq!(a.tab, Tab::all().last().unwrap(), "V goes back, wrapping");
+}

@@ -156,6 +156,7 @@ fn normal(app: &mut App, action: Action) {
     };
     match action {
         Action::Tab(tab) => app.tab = tab,
+        Action::CycleView(direction) => app.tab = app.tab.cycle(direction),
         Action::ToggleModel => match app.cursor {
             Cursor::Model(model) => app.toggle(model),
             Cursor::Field(_) => app.toggle(app.focused),

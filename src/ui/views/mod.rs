@@ -33,7 +33,7 @@ pub trait View: Sync {
     fn id(&self) -> &'static str;
     /// The name on the tab bar.
     fn title(&self) -> &'static str;
-    /// The name in the help's list of views (all of them on one line at 80 columns).
+    /// The name in the help's list of views (short names keep it on one line at 80 columns).
     fn short_title(&self) -> &'static str {
         self.title()
     }
@@ -77,8 +77,8 @@ macro_rules! registry {
     ($($folder:ident::$view:ident),+ $(,)?) => {
         $(pub mod $folder;)+
 
-        /// Every view, in tab order: the first is where the explorer opens, the n-th opens with
-        /// digit n.
+        /// Every view, in tab order: the first is where the explorer opens, the n-th of the first
+        /// nine opens with digit n; `v` and `V` step through all of them.
         pub static VIEWS: &[&dyn View] = &[$(&$folder::$view),+];
 
         /// The state of every view, one field per view folder, named after it; each starts as its
@@ -98,8 +98,10 @@ registry! {
     restitution::Restitution,
 }
 
-// The digit keys 1–9 open the views.
-const _: () = assert!(!VIEWS.is_empty() && VIEWS.len() <= 9);
+const _: () = assert!(!VIEWS.is_empty());
+
+/// How many views have a digit key: 1–9.
+const DIGITS: usize = 9;
 
 impl Tab {
     /// The view this tab shows.
@@ -112,14 +114,31 @@ impl Tab {
         (0..VIEWS.len()).map(Tab)
     }
 
-    /// The digit key that opens the tab.
-    pub fn key(self) -> char {
-        char::from(b'1' + self.0 as u8)
+    /// The digit key that opens the tab: the first nine have one.
+    pub fn key(self) -> Option<char> {
+        char::from_digit(u32::try_from(self.0 + 1).ok()?, 10).filter(|_| self.0 < DIGITS)
     }
 
     /// The tab of a digit key, if any.
     pub fn of_key(key: char) -> Option<Tab> {
-        Tab::all().find(|t| t.key() == key)
+        Tab::all().find(|t| t.key() == Some(key))
+    }
+
+    /// How the help names the tab: its digit, else its title.
+    pub fn name(self) -> String {
+        match self.key() {
+            Some(key) => key.to_string(),
+            None => self.view().short_title().to_string(),
+        }
+    }
+
+    /// The next (`Up`) or previous (`Down`) tab, wrapping around.
+    pub fn cycle(self, direction: Nudge) -> Tab {
+        let n = VIEWS.len();
+        Tab(match direction {
+            Nudge::Up => (self.0 + 1) % n,
+            Nudge::Down => (self.0 + n - 1) % n,
+        })
     }
 
     /// The tab of a view's [`View::id`], if any.
@@ -133,9 +152,12 @@ impl Tab {
     }
 }
 
-/// The keys of all views as the status line names them: `1-5`.
+/// The keys of the views as the status line names them: `1-5`, or `1-9 v` when some have no digit.
 pub fn keys_hint() -> String {
-    format!("1-{}", VIEWS.len())
+    match VIEWS.len() {
+        n if n <= DIGITS => format!("1-{n}"),
+        _ => format!("1-{DIGITS} v"),
+    }
 }
 
 /// Whether a study the shown view draws is running.
@@ -163,16 +185,35 @@ mod tests {
     use super::*;
 
     #[test]
-    fn digits_one_to_five_open_the_tabs_in_order() {
-        let keys: String = Tab::all().map(|t| t.key()).collect();
-        assert_eq!(keys, "12345");
+    fn digits_open_the_first_nine_tabs_in_order() {
         for tab in Tab::all() {
-            assert_eq!(Tab::of_key(tab.key()), Some(tab));
+            let digit = (tab.0 < 9).then(|| char::from_digit(tab.0 as u32 + 1, 10).unwrap());
+            assert_eq!(tab.key(), digit);
+            if let Some(key) = tab.key() {
+                assert_eq!(Tab::of_key(key), Some(tab));
+            }
             assert_eq!(Tab::named(tab.view().id()), Some(tab));
         }
-        assert_eq!(Tab::of_key('6'), None);
-        assert_eq!(Tab::of_key('0'), None);
+        for key in ('0'..='9').filter(|k| !Tab::all().any(|t| t.key() == Some(*k))) {
+            assert_eq!(Tab::of_key(key), None);
+        }
         assert_eq!(Tab::HOME.view().id(), "explorer");
+    }
+
+    #[test]
+    fn cycling_visits_every_tab_and_wraps() {
+        let mut tab = Tab::HOME;
+        let mut seen = Vec::new();
+        for _ in Tab::all() {
+            seen.push(tab);
+            tab = tab.cycle(Nudge::Up);
+        }
+        assert_eq!(tab, Tab::HOME, "wraps after the last");
+        assert_eq!(seen, Tab::all().collect::<Vec<_>>());
+        for tab in Tab::all() {
+            assert_eq!(tab.cycle(Nudge::Up).cycle(Nudge::Down), tab);
+        }
+        assert_eq!(Tab::HOME.cycle(Nudge::Down), Tab(VIEWS.len() - 1));
     }
 
     #[test]
