@@ -241,3 +241,31 @@ fn normal(key: KeyEvent) -> Option<Action> {
         _ => return None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::wrap;
+
+    #[test]
+    fn a_long_list_goes_on_over_lines_within_the_width_and_keeps_every_item() {
+        let items: Vec<String> = (0..12).map(|i| format!("view{i}")).collect();
+        for width in [12, 20, 33, 58] {
+            let lines = wrap(&items, width);
+            assert!(lines.len() > 1, "12 items need more than {width} columns");
+            for line in &lines {
+                assert!(line.chars().count() <= width, "{line:?} over {width}");
+            }
+            let (last, going_on) = lines.split_last().unwrap();
+            assert!(going_on.iter().all(|l| l.ends_with(" ·")));
+            assert!(!last.ends_with('·'));
+            let joined = lines.join(" ").replace(" · ", " ").replace(" ·", "");
+            let words: Vec<&str> = joined.split(' ').collect();
+            assert_eq!(words, items, "every item once, in order");
+        }
+        assert_eq!(
+            wrap(&items[..2], 20),
+            ["view0 · view1"],
+            "one line when it fits"
+        );
+    }
+}
