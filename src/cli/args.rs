@@ -113,8 +113,8 @@ pub struct PlotArgs {
     /// The chart.
     #[arg(long, value_enum)]
     pub chart: ChartChoice,
-    /// Force model (repeatable; default all five; the first is focused, and the one studied by
-    /// work-precision and stability, default proposed).
+    /// Force model (repeatable; default every law of the table; the first is focused, and the one
+    /// studied by work-precision and stability, default proposed).
     #[arg(long = "model", value_name = "MODEL")]
     pub models: Vec<ForceModel>,
     /// Solution method of fx, ft, vx and sweep (default auto).

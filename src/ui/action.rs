@@ -5,9 +5,10 @@ use tui_input::InputRequest;
 use crate::model::scene_key::BodyIndex;
 
 use super::field::Nudge;
-use super::study_worker::StudyReport;
+use super::jobs::Report;
+use super::solutions::Outcome;
 use super::tab::Tab;
-use super::worker::Report;
+use crate::model::study::runner::StudyOutcome;
 
 /// One step of the state machine, from a key, the terminal or the solver.
 #[derive(Debug, Clone)]
@@ -53,6 +54,8 @@ pub enum Action {
     ToggleCalibration,
     /// Shows a view: the explorer or a study.
     Tab(Tab),
+    /// Shows the next (`Up`) or previous (`Down`) view, wrapping around.
+    CycleView(Nudge),
     Help,
     /// Opens the engine panel: the scene's contact parameters for a simulation engine.
     Engines,
@@ -68,9 +71,9 @@ pub enum Action {
     /// The terminal has this many columns and rows: redraw (and size sweeps to it).
     Resize(u16, u16),
     /// The solver finished a job (or failed).
-    Solved(Report),
-    /// The study worker finished a study (or panicked).
-    Studied(StudyReport),
+    Solved(Report<Outcome>),
+    /// The studies' job queue finished a study (or it panicked).
+    Studied(Report<StudyOutcome>),
 }
 
 /// Where `Home` `End` `PgUp` `PgDn` go.

@@ -8,7 +8,7 @@ use tui_input::Input;
 use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
-use crate::model::scene_file::View;
+use crate::model::scene_file::SceneView;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
@@ -19,8 +19,7 @@ use super::picker::Picker;
 use super::solutions::{Job, Solutions};
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
-use super::views::sweep::settings::{SweepField, SweepSettings};
-use crate::chart::work_precision::Cost;
+use super::views::ViewStates;
 use crate::model::study::runner::{StudyJob, StudySpec};
 use crate::ui::studies::Studies;
 
@@ -36,10 +35,8 @@ pub enum Cursor {
 pub enum EditTarget {
     /// A field of the explorer's form.
     Field(Field),
-    /// The step of the stability view.
-    Step,
-    /// A row of the sweep form.
-    Sweep(SweepField),
+    /// A row of the shown view's own form, numbered by the view.
+    Row(usize),
 }
 
 /// A field being edited.
@@ -130,7 +127,7 @@ pub struct App {
     /// The scene as last loaded or saved, for the unsaved-changes mark.
     pub(super) saved: Scene,
     /// The view (models, solver settings) as last loaded or saved, for resetting the solver rows.
-    pub(super) saved_view: View,
+    pub(super) saved_view: SceneView,
     /// The preset the scene was loaded from or saved as, if any.
     pub preset: Option<String>,
     /// The description of that preset, kept when the scene is saved.
@@ -148,8 +145,6 @@ pub struct App {
     pub(super) checked: [bool; LAW_COUNT],
     /// Each law's damping calibrated so that it realises the scene's e (docs/physics.md §6.4).
     pub calibrate: bool,
-    /// The restitution view shows its table instead of its charts.
-    pub restitution_table: bool,
     pub focused: ForceModel,
     pub cursor: Cursor,
     pub mode: Mode,
@@ -157,19 +152,10 @@ pub struct App {
     pub tab: Tab,
     /// Results of the studies of tabs 2–4.
     pub studies: Studies,
-    /// The step of the stability view, s; `None` follows the scene (the RK4 critical step).
-    pub step: Option<f64>,
-    pub sweep: SweepSettings,
-    /// The row of the sweep form under the cursor.
-    pub sweep_cursor: SweepField,
-    /// The work-precision chart shown where only one fits.
-    pub cost: Cost,
+    /// Each view's own state (its settings, cursor, chart shown).
+    pub views: ViewStates,
     /// Terminal size (columns, rows), for sizing sweeps to their chart; (0, 0) until known.
     pub screen: (u16, u16),
-    /// The chart shown first (alone where only one fits).
-    pub chart: ChartKind,
-    /// The explorer's data cursor, per mille along the charts' x axes (`None`: hidden).
-    pub data_cursor: Option<u16>,
     pub marker: MarkerStyle,
     pub theme: Theme,
     pub message: Option<Message>,
@@ -188,7 +174,7 @@ pub(super) fn model_index(model: ForceModel) -> usize {
 impl App {
     /// The explorer on `scene`, with the solves of the checked models queued.
     pub fn new(scene: Scene, registry: Registry, marker: MarkerStyle, theme: Theme) -> App {
-        let view = View {
+        let view = SceneView {
             models: DEFAULT_CHECKED.to_vec(),
             options: SolveOptions::default(),
         };
@@ -198,7 +184,7 @@ impl App {
     /// The explorer on `scene` as `view` asks (checked models, the first focused; solver settings).
     pub fn open(
         scene: Scene,
-        view: View,
+        view: SceneView,
         registry: Registry,
         marker: MarkerStyle,
         theme: Theme,
@@ -225,19 +211,13 @@ impl App {
             solutions: Solutions::default(),
             checked: [false; LAW_COUNT],
             calibrate: false,
-            restitution_table: false,
             focused: view.focused(),
             cursor: Cursor::Field(Field::Number(SceneKey::V0)),
             mode: Mode::Normal,
             tab: Tab::HOME,
             studies: Studies::default(),
-            step: None,
-            sweep: SweepSettings::default(),
-            sweep_cursor: SweepField::Parameter,
-            cost: Cost::Seconds,
+            views: ViewStates::default(),
             screen: (0, 0),
-            chart: ChartKind::ForceDisplacement,
-            data_cursor: None,
             marker,
             theme,
             message: None,
@@ -266,9 +246,9 @@ impl App {
         }
     }
 
-    /// The view to save: the focused model first if checked, then the other checked ones; the
+    /// The scene view to save: the focused model first if checked, then the other checked ones; the
     /// solver settings of the draft.
-    pub fn view(&self) -> View {
+    pub fn scene_view(&self) -> SceneView {
         let mut models = self.checked_models();
         if let Some(i) = models.iter().position(|&m| m == self.focused) {
             models[..=i].rotate_right(1);
@@ -276,7 +256,7 @@ impl App {
         if models.is_empty() {
             models = self.saved_view.models.clone();
         }
-        View {
+        SceneView {
             models,
             options: self.draft.options,
         }
@@ -312,7 +292,7 @@ impl App {
         std::mem::take(&mut self.outbox)
     }
 
-    /// The studies requested since the last call, for the study worker.
+    /// The studies requested since the last call, for the studies' job queue.
     pub fn take_studies(&mut self) -> Vec<StudyJob> {
         std::mem::take(&mut self.study_outbox)
     }
@@ -348,7 +328,7 @@ impl App {
             .filter(|dt| *dt > 0.0 && dt.is_finite())
     }
 
-    /// Queues `spec` for the study worker unless the same study is held or running.
+    /// Queues `spec` for the studies' job queue unless the same study is held or running.
     pub(crate) fn queue_study(&mut self, spec: StudySpec) {
         if let Some(job) = self.studies.request(spec) {
             self.study_outbox.push(job);

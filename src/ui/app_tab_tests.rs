@@ -10,7 +10,7 @@ use crate::model::scene_key::SceneKey;
 use crate::model::study::stability::critical_step;
 
 use super::action::Action;
-use super::app::{App, Cursor, EditTarget, Mode};
+use super::app::{App, Cursor, Mode};
 use super::field::Field;
 use super::keymap::action_for_event;
 use super::style::{MarkerStyle, Theme};
@@ -90,16 +90,16 @@ fn digits_switch_tabs_and_each_tab_asks_only_for_its_studies() {
 #[test]
 fn c_switches_the_chart_of_the_shown_tab_only() {
     let mut a = app();
-    let chart = a.chart;
+    let chart = a.views.explorer.chart;
     key(&mut a, KeyCode::Char('2'));
-    assert_eq!(a.cost, Cost::Seconds);
+    assert_eq!(a.views.work_precision.cost, Cost::Seconds);
     key(&mut a, KeyCode::Char('c'));
-    assert_eq!(a.cost, Cost::ForceEvals);
-    assert_eq!(a.chart, chart, "the explorer's chart stays");
+    assert_eq!(a.views.work_precision.cost, Cost::ForceEvals);
+    assert_eq!(a.views.explorer.chart, chart, "the explorer's chart stays");
     key(&mut a, KeyCode::Char('1'));
     key(&mut a, KeyCode::Char('c'));
-    assert_ne!(a.chart, chart);
-    assert_eq!(a.cost, Cost::ForceEvals);
+    assert_ne!(a.views.explorer.chart, chart);
+    assert_eq!(a.views.work_precision.cost, Cost::ForceEvals);
 }
 
 #[test]
@@ -153,10 +153,10 @@ fn the_stability_step_defaults_to_rk4_critical_and_halves_doubles_and_types() {
     key(&mut a, KeyCode::Right);
     assert_eq!(views::stability::step(&a), Some(critical * 2.0));
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(&a.mode, Mode::Editing(e) if e.target == EditTarget::Step));
+    assert!(matches!(&a.mode, Mode::Editing(e) if e.target == views::stability::STEP_EDITOR));
     enter_text(&mut a, "2 µs");
     assert!(matches!(a.mode, Mode::Normal));
-    assert_eq!(a.step, Some(2e-6));
+    assert_eq!(a.views.stability.step, Some(2e-6));
     // Three steps were asked for since: ×2, ×2 and 2 µs; the last is the one that counts.
     let jobs = a.take_studies();
     assert_eq!(jobs.len(), 3);
@@ -172,7 +172,7 @@ fn the_stability_step_defaults_to_rk4_critical_and_halves_doubles_and_types() {
         other => panic!("{other:?}"),
     }
     enter_text(&mut a, "auto");
-    assert_eq!(a.step, None);
+    assert_eq!(a.views.stability.step, None);
     assert_eq!(views::stability::step(&a), Some(critical));
     // Digits typed into the editor are text, not tab switches.
     key(&mut a, KeyCode::Enter);
@@ -200,14 +200,16 @@ fn the_sweep_form_moves_edits_and_follows_the_checked_models() {
     // ↓ to the output, → for the next one: a new sweep (the same rows, another output drawn
     // from them would do, but the spec is the sweep's identity).
     key(&mut a, KeyCode::Down);
-    assert_eq!(a.sweep_cursor, SweepField::Output);
-    let before = a.sweep.output;
+    assert_eq!(a.views.sweep.cursor, SweepField::Output);
+    let before = a.views.sweep.settings.output;
     key(&mut a, KeyCode::Right);
-    assert_ne!(a.sweep.output, before);
+    assert_ne!(a.views.sweep.settings.output, before);
     // The from bound, typed with a unit.
     key(&mut a, KeyCode::Down);
     key(&mut a, KeyCode::Enter);
-    assert!(matches!(&a.mode, Mode::Editing(e) if e.target == EditTarget::Sweep(SweepField::From)));
+    assert!(
+        matches!(&a.mode, Mode::Editing(e) if e.target == views::sweep::editor(SweepField::From))
+    );
     enter_text(&mut a, "10 mm/s");
     let jobs = a.take_studies();
     let StudySpec::Sweep { spec, .. } = &jobs[0].spec else {
@@ -231,7 +233,26 @@ fn the_sweep_form_moves_edits_and_follows_the_checked_models() {
     assert_eq!(spec.points, views::sweep::max_points(&a));
     assert!(spec.points < 200);
     // Enter on the scale switches it.
-    a.sweep_cursor = SweepField::Scale;
+    a.views.sweep.cursor = SweepField::Scale;
     key(&mut a, KeyCode::Enter);
-    assert!(!a.sweep.range(&a.draft.scene).unwrap().log);
+    assert!(!a.views.sweep.settings.range(&a.draft.scene).unwrap().log);
+}
+
+#[test]
+fn v_and_shift_v_step_through_every_view_and_wrap() {
+    let mut a = app();
+    let mut seen = vec![a.tab];
+    for _ in 1..views::VIEWS.len() {
+        key(&mut a, KeyCode::Char('v'));
+        seen.push(a.tab);
+    }
+    assert_eq!(
+        seen,
+        Tab::all().collect::<Vec<_>>(),
+        "v visits each in order"
+    );
+    key(&mut a, KeyCode::Char('v'));
+    assert_eq!(a.tab, Tab::HOME, "and wraps to the first");
+    key(&mut a, KeyCode::Char('V'));
+    assert_eq!(a.tab, Tab::all().last().unwrap(), "V goes back, wrapping");
 }

@@ -270,7 +270,7 @@ fn view_changes_solve_nothing() {
     ] {
         key(&mut a, code);
     }
-    assert_eq!(a.chart, ChartKind::VelocityDisplacement);
+    assert_eq!(a.views.explorer.chart, ChartKind::VelocityDisplacement);
     assert!(a.take_jobs().is_empty());
     // Re-entering the same value solves nothing either.
     key(&mut a, KeyCode::Enter);

@@ -13,19 +13,66 @@ use super::field::Nudge;
 use super::tab::Tab;
 
 /// The key bindings, as the help screen lists them: (keys, what they do), the views and their
-/// digits first, the keys of every view, each view's own, then help and quit; one line each at 80
-/// columns, and all of them with the input hints within 24 rows.
+/// keys first, the keys of every view, each view's own, then help and quit; each fits one line at
+/// 80 columns (the list of views goes on over as many lines as it needs, its keys column empty).
 pub fn bindings() -> Vec<(String, String)> {
-    let digits: Vec<String> = Tab::all().map(|t| t.key().to_string()).collect();
-    let names: Vec<&str> = Tab::all().map(|t| t.view().short_title()).collect();
-    let views = (digits.join(" "), format!("views: {}", names.join(" · ")));
-    let own = Tab::all().filter_map(|t| Some((format!("in {}", t.key()), t.view().help()?)));
+    let digits: Vec<String> = Tab::all()
+        .filter_map(|t| Some(t.key()?.to_string()))
+        .collect();
+    let views_keys = format!("{} v V", digits.join(" "));
+    let own = Tab::all().filter_map(|t| Some((format!("in {}", t.name()), t.view().help()?)));
     let fixed = |&(keys, what): &(&str, &str)| (keys.to_string(), what.to_string());
-    std::iter::once(views)
-        .chain(SHARED.iter().map(fixed))
+    let rest: Vec<(String, String)> = SHARED
+        .iter()
+        .map(fixed)
         .chain(own.map(|(keys, what)| (keys, what.to_string())))
         .chain(CLOSING.iter().map(fixed))
+        .collect();
+    let key_width = rest
+        .iter()
+        .map(|(keys, _)| keys.chars().count())
+        .chain([views_keys.chars().count()])
+        .max()
+        .unwrap_or(0);
+    // The help's text at 80 columns: within its borders, a space, the keys, two spaces.
+    let width = usize::from(HELP_COLUMNS - 2) - 3 - key_width;
+    let names: Vec<String> = Tab::all()
+        .enumerate()
+        .map(|(i, t)| match i {
+            0 => format!("views: {}", t.view().short_title()),
+            _ => t.view().short_title().to_string(),
+        })
+        .collect();
+    let mut views = wrap(&names, width).into_iter();
+    let first = (views_keys, views.next().unwrap_or_default());
+    std::iter::once(first)
+        .chain(views.map(|more| (String::new(), more)))
+        .chain(rest)
         .collect()
+}
+
+/// The narrowest terminal the help fits whole.
+pub const HELP_COLUMNS: u16 = 80;
+
+/// `items` joined by ` · ` in lines of at most `width` characters, a line that goes on ending in
+/// `·`; an item longer than `width` has a line of its own.
+fn wrap(items: &[String], width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for (i, item) in items.iter().enumerate() {
+        // Room for the ` ·` that ends the line if more items follow.
+        let tail = if i + 1 < items.len() { 2 } else { 0 };
+        if line.is_empty() {
+            line.clone_from(item);
+        } else if line.chars().count() + 3 + item.chars().count() + tail <= width {
+            line = format!("{line} · {item}");
+        } else {
+            lines.push(format!("{line} ·"));
+            line.clone_from(item);
+        }
+    }
+    lines.push(line);
+    lines
 }
 
 /// The keys every view shares, in the help.
@@ -186,9 +233,39 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('r') => Action::ResetField,
         KeyCode::Char('m') => Action::ToggleMouse,
         KeyCode::Char('f') => Action::Figure,
+        KeyCode::Char('v') => Action::CycleView(Nudge::Up),
+        KeyCode::Char('V') => Action::CycleView(Nudge::Down),
         KeyCode::Char('<') | KeyCode::Char(',') => Action::MoveCursor(false),
         KeyCode::Char('>') | KeyCode::Char('.') => Action::MoveCursor(true),
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wrap;
+
+    #[test]
+    fn a_long_list_goes_on_over_lines_within_the_width_and_keeps_every_item() {
+        let items: Vec<String> = (0..12).map(|i| format!("view{i}")).collect();
+        for width in [12, 20, 33, 58] {
+            let lines = wrap(&items, width);
+            assert!(lines.len() > 1, "12 items need more than {width} columns");
+            for line in &lines {
+                assert!(line.chars().count() <= width, "{line:?} over {width}");
+            }
+            let (last, going_on) = lines.split_last().unwrap();
+            assert!(going_on.iter().all(|l| l.ends_with(" ·")));
+            assert!(!last.ends_with('·'));
+            let joined = lines.join(" ").replace(" · ", " ").replace(" ·", "");
+            let words: Vec<&str> = joined.split(' ').collect();
+            assert_eq!(words, items, "every item once, in order");
+        }
+        assert_eq!(
+            wrap(&items[..2], 20),
+            ["view0 · view1"],
+            "one line when it fits"
+        );
+    }
 }

@@ -4,8 +4,8 @@
 //! turns keys into actions; [`render`] draws the screen from `&App`: the tab bar, the shown view
 //! and the status line. Each tab is a folder of [`views`] (its keys, panes and charts) registered
 //! in [`views::VIEWS`]; the panes they share are in [`widgets`], the looks in [`style`].
-//! [`worker`] solves off the UI thread and [`study_worker`] computes the [`studies`] of the study
-//! views on a thread of its own; `runtime` ties them to the terminal. The UI holds no physics:
+//! The solves ([`worker`]) and the [`studies`] of the study views run off the UI thread, each on a
+//! [`jobs`] queue of its own; `runtime` ties them to the terminal. The UI holds no physics:
 //! every number comes from `crate::model`.
 
 pub mod action;
@@ -21,6 +21,7 @@ mod edited;
 pub mod export;
 pub mod field;
 pub mod figure_export;
+pub mod jobs;
 pub mod keymap;
 pub mod layout;
 mod mouse;
@@ -29,7 +30,6 @@ pub mod render;
 mod runtime;
 pub mod solutions;
 pub mod studies;
-pub mod study_worker;
 pub mod style;
 pub mod tab;
 #[cfg(test)]
@@ -48,7 +48,7 @@ use color_eyre::eyre::WrapErr;
 
 use crate::model::Scene;
 use crate::model::presets::Registry;
-use crate::model::scene_file::View;
+use crate::model::scene_file::SceneView;
 
 use app::App;
 use style::Theme;
@@ -57,7 +57,12 @@ use style::Theme;
 /// (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
-pub fn run(scene: Scene, view: View, source: &str, marker: MarkerStyle) -> color_eyre::Result<()> {
+pub fn run(
+    scene: Scene,
+    view: SceneView,
+    source: &str,
+    marker: MarkerStyle,
+) -> color_eyre::Result<()> {
     let registry = Registry::load()
         .or_else(|_| Registry::builtin())
         .wrap_err("cannot load the presets")?;

@@ -1,6 +1,6 @@
 //! The event loop: blocks until a key, a resize or a solver or study report arrives, updates,
-//! redraws. Input is read on its own thread, solves run on the worker and studies on the study
-//! worker, so none blocks another.
+//! redraws. Input is read on its own thread, solves and studies each on a job queue of their own,
+//! so none blocks another.
 //!
 //! Redraws are coalesced: everything already waiting is handled before one draw, and while keys
 //! keep arriving (a held key over a slow link) the loop waits a few milliseconds for the next one
@@ -23,17 +23,18 @@ use ratatui::{DefaultTerminal, Terminal};
 
 use super::action::Action;
 use super::app::App;
+use super::jobs::{Jobs, Report};
 use super::keymap::action_for_event;
 use super::render;
-use super::study_worker::{StudyReport, StudyWorker};
+use super::solutions::{Job, Outcome};
 use super::update::update;
-use super::worker::{Report, Worker};
+use crate::model::study::runner::{StudyJob, StudyOutcome};
 
 /// What wakes the loop.
 enum Wake {
     Terminal(event::Event),
-    Solver(Report),
-    Study(StudyReport),
+    Solver(Report<Outcome>),
+    Study(Report<StudyOutcome>),
     InputFailed(String),
 }
 
@@ -120,18 +121,22 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     let (events, wakes) = mpsc::channel();
     spawn_input(events.clone()).wrap_err("cannot start the input thread")?;
     let reports = events.clone();
-    let worker = Worker::spawn(move |report| reports.send(Wake::Solver(report)).is_ok())
-        .wrap_err("cannot start the solver thread")?;
+    let solves: Jobs<Job> = Jobs::spawn("hertz-solver", move |report| {
+        reports.send(Wake::Solver(report)).is_ok()
+    })
+    .wrap_err("cannot start the solver thread")?;
     let study_reports = events.clone();
-    let studies = StudyWorker::spawn(move |report| study_reports.send(Wake::Study(report)).is_ok())
-        .wrap_err("cannot start the study thread")?;
+    let studies: Jobs<StudyJob> = Jobs::spawn("hertz-studies", move |report| {
+        study_reports.send(Wake::Study(report)).is_ok()
+    })
+    .wrap_err("cannot start the study thread")?;
     drop(events);
     // The sweep view sizes its sweeps to the chart: the app needs the size before any resize.
     let size = terminal.size().wrap_err("cannot read the terminal size")?;
     update(&mut app, Action::Resize(size.width, size.height));
     loop {
         for job in app.take_jobs() {
-            if !worker.submit(job) {
+            if !solves.submit(job) {
                 return Err(eyre!("the solver thread stopped"));
             }
         }

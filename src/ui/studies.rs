@@ -2,14 +2,47 @@
 //! [`Solutions`](super::solutions::Solutions) for impacts: a slot remembers the inputs of its latest
 //! request, so asking again with the same inputs computes nothing; every request gets a new
 //! generation and an outcome of an older one is stale. The studies themselves run in
-//! [`crate::model::study::runner`].
+//! [`crate::model::study::runner`], on the [`Jobs`](super::jobs::Jobs) queue of the studies: a
+//! newer request of a kind supersedes the queued one and stops the running one between rungs or
+//! points.
 
 use std::sync::Arc;
 
 use crate::model::study::runner::{
-    CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob, StudyKind,
-    StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
+    self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
+    StudyKind, StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
 };
+
+use super::jobs::Background;
+
+impl Background for StudyJob {
+    /// A newer study of the same kind supersedes the queued and the running one.
+    type Slot = StudyKind;
+    type Outcome = StudyOutcome;
+
+    fn slot(&self) -> StudyKind {
+        self.spec.kind()
+    }
+
+    fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    fn priority(&self) -> u8 {
+        self.spec.kind().priority()
+    }
+
+    fn run(&self, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutcome> {
+        runner::run(self, stop)
+    }
+
+    fn panicked(&self, message: &str) -> String {
+        format!(
+            "a {:?} study panicked ({message}): this is a bug",
+            self.spec.kind()
+        )
+    }
+}
 
 #[derive(Debug, Clone, Default)]
 struct Slot {
@@ -111,6 +144,7 @@ mod tests {
     use super::*;
     use crate::model::ForceModel;
     use crate::model::study::sweep::SweepError;
+    use crate::ui::jobs::{Jobs, supersede, take_next};
     use crate::ui::testing::fig5_params;
 
     fn bounds(v0: f64) -> StudySpec {
@@ -153,5 +187,52 @@ mod tests {
             .is_some()
         );
         assert_eq!(s.request(bounds(0.4)), None, "answered: asks nothing again");
+    }
+
+    /// A job of `kind`, one of those the tests queue.
+    fn job(generation: u64, kind: StudyKind) -> StudyJob {
+        let (model, params) = (ForceModel::Proposed, fig5_params(0.3));
+        let spec = match kind {
+            StudyKind::WorkPrecision => StudySpec::WorkPrecision { model, params },
+            StudyKind::Runs => StudySpec::Runs {
+                model,
+                params,
+                dt: 1e-6,
+            },
+            StudyKind::Bounds => StudySpec::Bounds { model, params },
+            other => panic!("the tests queue no {other:?} study"),
+        };
+        StudyJob { generation, spec }
+    }
+
+    #[test]
+    fn newer_studies_replace_queued_ones_and_quick_kinds_go_first() {
+        let mut queue = vec![
+            job(1, StudyKind::WorkPrecision),
+            job(2, StudyKind::Bounds),
+            job(3, StudyKind::Runs),
+        ];
+        supersede(&mut queue, job(4, StudyKind::Runs));
+        let kinds: Vec<StudyKind> = queue.iter().map(|j| j.spec.kind()).collect();
+        assert_eq!(
+            kinds,
+            [StudyKind::WorkPrecision, StudyKind::Bounds, StudyKind::Runs]
+        );
+        assert_eq!(take_next(&mut queue).map(|j| j.generation), Some(4));
+        assert_eq!(take_next(&mut queue).map(|j| j.generation), Some(2));
+        assert_eq!(take_next(&mut queue).map(|j| j.generation), Some(1));
+        assert!(take_next(&mut queue).is_none());
+    }
+
+    #[test]
+    fn a_study_on_its_queue_reports_and_the_queue_ends_with_its_handle() {
+        let (tx, rx) = std::sync::mpsc::channel();
+        let queue = Jobs::spawn("test-studies", move |report| tx.send(report).is_ok()).unwrap();
+        assert!(queue.submit(job(3, StudyKind::Runs)));
+        let outcome = rx.recv().unwrap().unwrap();
+        assert_eq!(outcome.generation, 3);
+        assert!(matches!(outcome.result, StudyResult::Runs(Ok(_))));
+        drop(queue);
+        assert!(rx.recv().is_err(), "the thread ended");
     }
 }

@@ -5,22 +5,22 @@ use std::path::{Path, PathBuf};
 use tui_input::{Input, InputRequest};
 
 use crate::model::presets::{Origin, Registry, SaveTarget, is_kebab_case, kebab_case};
-use crate::model::scene_file::View;
+use crate::model::scene_file::SceneView;
 use crate::model::scene_key::BodyIndex;
 use crate::model::{ForceModel, Scene};
 
 use super::action::{Action, Jump};
 use super::app::{App, Confirm, Cursor, Editor, Mode, Prompt, PromptKind};
-use super::data_cursor;
 use super::edited;
 use super::export;
 use super::field::Nudge;
 use super::figure_export;
+use super::jobs::Report;
 use super::mouse;
 use super::picker::{EntryKind, Picker};
-use super::study_worker::StudyReport;
+use super::solutions::Outcome;
 use super::views;
-use super::worker::Report;
+use crate::model::study::runner::StudyOutcome;
 
 /// Advances the state machine by one action.
 pub fn update(app: &mut App, action: Action) {
@@ -120,7 +120,7 @@ fn confirming(app: &mut App, confirm: Confirm, action: Action) {
     }
 }
 
-fn solved(app: &mut App, report: Report) {
+fn solved(app: &mut App, report: Report<Outcome>) {
     match report {
         Ok(outcome) => {
             if app.solutions.accept(outcome) && !app.solutions.any_pending() {
@@ -132,7 +132,7 @@ fn solved(app: &mut App, report: Report) {
     }
 }
 
-fn studied(app: &mut App, report: StudyReport) {
+fn studied(app: &mut App, report: Report<StudyOutcome>) {
     match report {
         Ok(outcome) => {
             app.studies.accept(outcome);
@@ -156,6 +156,7 @@ fn normal(app: &mut App, action: Action) {
     };
     match action {
         Action::Tab(tab) => app.tab = tab,
+        Action::CycleView(direction) => app.tab = app.tab.cycle(direction),
         Action::ToggleModel => match app.cursor {
             Cursor::Model(model) => app.toggle(model),
             Cursor::Field(_) => app.toggle(app.focused),
@@ -181,9 +182,6 @@ fn normal(app: &mut App, action: Action) {
                 input: Input::new(suggestion),
                 error: None,
             });
-        }
-        Action::MoveCursor(forward) => {
-            app.data_cursor = Some(data_cursor::moved(app.data_cursor, forward));
         }
         Action::Figure => match figure_export::write_view(app) {
             Ok(news) => app.say(news, false),
@@ -214,7 +212,6 @@ fn normal(app: &mut App, action: Action) {
                 );
             }
         }
-        Action::Cancel => app.data_cursor = None,
         Action::Paste(_) => app.say(
             "paste ignored: move to a field of the explorer (1) and paste there",
             true,
@@ -227,6 +224,8 @@ fn normal(app: &mut App, action: Action) {
         | Action::ResetField
         | Action::Enter
         | Action::CycleChart
+        | Action::MoveCursor(_)
+        | Action::Cancel
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
         | Action::Quit
@@ -440,7 +439,7 @@ fn save_preset(app: &mut App, name: &str) -> Result<String, String> {
 /// becomes the preset shown.
 fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<String, String> {
     let scene = scene_to_save(app, name);
-    let view = app.view();
+    let view = app.scene_view();
     let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
     let written = app
         .registry
@@ -469,7 +468,7 @@ fn scene_to_save(app: &App, name: &str) -> Scene {
 }
 
 /// After a save: the saved scene is the reference for `*` and resets, the registry lists it.
-fn saved(app: &mut App, scene: Scene, view: View, preset: Option<&str>) {
+fn saved(app: &mut App, scene: Scene, view: SceneView, preset: Option<&str>) {
     app.draft.scene.name = scene.name.clone();
     app.saved = scene;
     app.saved_view = view;

@@ -8,7 +8,7 @@ use hertz_tui::model::ForceModel;
 use hertz_tui::model::impact::{MethodChoice, SolveOptions};
 use hertz_tui::model::ode::Method;
 use hertz_tui::model::presets::{Registry, SaveTarget};
-use hertz_tui::model::scene_file::{Document, PAPER_MODELS, View, decode_view, parse_scene};
+use hertz_tui::model::scene_file::{Document, PAPER_MODELS, SceneView, decode_view, parse_scene};
 
 /// A valid scene file without a view; tests add lines after line 1 (so `models` is on line 2).
 const SCENE: &str = r#"name = "view test"
@@ -30,7 +30,7 @@ fn with_models(models_line: &str, solver: &str) -> String {
     format!("{first}\n{models_line}\n{rest}{solver}")
 }
 
-fn view_of(text: &str) -> Result<View, String> {
+fn view_of(text: &str) -> Result<SceneView, String> {
     let registry = Registry::builtin().unwrap();
     // The strict scene reader refuses a bad view as well as the view reader does.
     let scene = parse_scene("test.toml", text, registry.material_catalog());
@@ -142,7 +142,7 @@ fn saving_writes_the_view_back() {
     fs::create_dir_all(&dir).unwrap();
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene("fig4-steel-sphere-r10-plate").unwrap();
-    let view = View {
+    let view = SceneView {
         models: vec![ForceModel::HuntCrossley, ForceModel::DryFriction],
         options: SolveOptions {
             method: MethodChoice::Integrator(Method::Verlet),

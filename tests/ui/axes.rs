@@ -182,7 +182,7 @@ fn explorer_peaks_lie_where_the_ticks_say() {
         let x_at_peak = solution.trajectory.at(s.t_f_max).x;
         let mut seen = 0;
         for kind in ChartKind::ALL {
-            app.chart = kind;
+            app.views.explorer.chart = kind;
             let terminal = render(&app, size.0, size.1);
             let buf = terminal.backend().buffer();
             let found = charts(buf);
@@ -243,7 +243,7 @@ fn work_precision_marks_the_explorers_solve_where_the_ticks_say() {
             other => panic!("{other:?}"),
         };
         for cost in [Cost::Seconds, Cost::ForceEvals] {
-            app.cost = cost;
+            app.views.work_precision.cost = cost;
             let terminal = render(&app, size.0, size.1);
             let buf = terminal.backend().buffer();
             let found = charts(buf);

@@ -12,7 +12,7 @@ use super::user_dir::user_dir;
 use crate::model::material::Material;
 use crate::model::overrides::{self, Override};
 use crate::model::scene::Scene;
-use crate::model::scene_file::{self, Document, View};
+use crate::model::scene_file::{self, Document, SceneView};
 
 /// Where a preset comes from.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -173,7 +173,7 @@ impl Registry {
     }
 
     /// The view (checked models, solver settings) of a scene preset or scene file.
-    pub fn scene_view(&self, name_or_path: &str) -> Result<View, PresetError> {
+    pub fn scene_view(&self, name_or_path: &str) -> Result<SceneView, PresetError> {
         let (origin, text) = self.source(name_or_path)?;
         Ok(scene_file::decode_view(&Document::parse(origin, &text)?)?)
     }
@@ -203,7 +203,7 @@ impl Registry {
         &self,
         scene: &Scene,
         description: Option<&str>,
-        view: &View,
+        view: &SceneView,
         target: SaveTarget<'_>,
     ) -> Result<PathBuf, PresetError> {
         save_scene_in(

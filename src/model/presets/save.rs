@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use super::error::PresetError;
 use super::user_dir::user_dir;
 use crate::model::scene::Scene;
-use crate::model::scene_file::{self, View};
+use crate::model::scene_file::{self, SceneView};
 
 /// Where to save a scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -58,7 +58,7 @@ pub(super) fn save_scene_in(
     user_dir: Option<&Path>,
     scene: &Scene,
     description: Option<&str>,
-    view: Option<&View>,
+    view: Option<&SceneView>,
     target: SaveTarget<'_>,
 ) -> Result<PathBuf, PresetError> {
     scene.validate().map_err(PresetError::InvalidScene)?;

@@ -8,7 +8,7 @@ use super::document::{Document, Problem, SceneFileError, join};
 use super::schema::{
     BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, SHAPES, shape_keys,
 };
-use super::view::View;
+use super::view::SceneView;
 use crate::model::body::{Body, Shape};
 use crate::model::material::Material;
 use crate::model::scene::{ImpactConditions, Scene};
@@ -303,7 +303,7 @@ pub fn decode_scene(
 }
 
 /// Decodes the view of a scene file: its `models` and `[solver]`, defaults where absent.
-pub fn decode_view(doc: &Document) -> Result<View, SceneFileError> {
+pub fn decode_view(doc: &Document) -> Result<SceneView, SceneFileError> {
     let decoder = Decoder {
         doc,
         materials: &BTreeMap::new(),

@@ -23,23 +23,23 @@ pub const PAPER_MODELS: [ForceModel; 5] = [
 
 /// The view a scene file asks for.
 #[derive(Debug, Clone, PartialEq)]
-pub struct View {
+pub struct SceneView {
     /// Checked models, the first focused; never empty, no repeats.
     pub models: Vec<ForceModel>,
     /// Method, tolerances and step; the rest as [`SolveOptions::default`].
     pub options: SolveOptions,
 }
 
-impl Default for View {
-    fn default() -> View {
-        View {
+impl Default for SceneView {
+    fn default() -> SceneView {
+        SceneView {
             models: PAPER_MODELS.to_vec(),
             options: SolveOptions::default(),
         }
     }
 }
 
-impl View {
+impl SceneView {
     /// The focused model: the first checked one.
     pub fn focused(&self) -> ForceModel {
         self.models.first().copied().unwrap_or(ForceModel::Proposed)
@@ -78,8 +78,8 @@ impl View {
 
 impl Decoder<'_> {
     /// `models` and `[solver]` of the top-level table, defaults where absent.
-    pub(super) fn view(&self, root: &Table) -> Result<View, SceneFileError> {
-        let defaults = View::default();
+    pub(super) fn view(&self, root: &Table) -> Result<SceneView, SceneFileError> {
+        let defaults = SceneView::default();
         let models = match root.get("models") {
             None => defaults.models,
             Some(value) => self.models(value)?,
@@ -89,7 +89,7 @@ impl Decoder<'_> {
             Some(Value::Table(table)) => self.solver(table)?,
             Some(other) => return Err(self.wrong_type("solver", "a table", other)),
         };
-        Ok(View { models, options })
+        Ok(SceneView { models, options })
     }
 
     fn models(&self, value: &Value) -> Result<Vec<ForceModel>, SceneFileError> {

@@ -5,7 +5,7 @@ use toml::Value;
 use crate::model::body::Shape;
 use crate::model::scene::Scene;
 
-use super::view::View;
+use super::view::SceneView;
 
 /// A float as TOML text that reads back to exactly the same f64, in plain or exponent notation
 /// (Rust prints the shortest round-tripping digits in both).
@@ -36,7 +36,11 @@ pub fn to_toml(scene: &Scene, description: Option<&str>) -> String {
 }
 
 /// [`to_toml`] with the view's `models` and `[solver]` written too.
-pub fn to_toml_with_view(scene: &Scene, description: Option<&str>, view: Option<&View>) -> String {
+pub fn to_toml_with_view(
+    scene: &Scene,
+    description: Option<&str>,
+    view: Option<&SceneView>,
+) -> String {
     let mut out = String::new();
     let quote = |s: &str| Value::String(s.to_string()).to_string();
     out.push_str(&format!("name = {}\n", quote(&scene.name)));

@@ -3,9 +3,10 @@
 //! needs, its lines in the help and the figure `f` writes all come from [`VIEWS`]. A new view is a
 //! folder implementing [`View`] plus one line in the `registry!` below.
 //!
-//! A view reads the app (`&App`) to draw and acts on it (`&mut App`) for its own keys. The app
-//! state holds the views' settings (their types live in the view folders, e.g. `sweep::settings`)
-//! and the shown [`Tab`], but never imports a view's drawing or keys.
+//! Each folder also defines the view's own state, `State` (its settings, cursor, chart shown…),
+//! and the same registry line gives it a field of [`ViewStates`], which the app holds: a view with
+//! state and a study is one folder plus one line. A view reads the app (`&App`) to draw and acts on
+//! it (`&mut App`) for its own keys; the app never imports a view's drawing or keys.
 
 use ratatui::Frame;
 use ratatui::layout::Position;
@@ -32,7 +33,7 @@ pub trait View: Sync {
     fn id(&self) -> &'static str;
     /// The name on the tab bar.
     fn title(&self) -> &'static str;
-    /// The name in the help's list of views (all of them on one line at 80 columns).
+    /// The name in the help's list of views (short names keep it on one line at 80 columns).
     fn short_title(&self) -> &'static str {
         self.title()
     }
@@ -70,14 +71,22 @@ pub trait View: Sync {
     fn charts(&self, app: &App) -> Vec<Chart>;
 }
 
-/// Declares each view's folder as a module and lists it in [`VIEWS`], from one line per view.
+/// Declares each view's folder as a module, lists it in [`VIEWS`] and gives its `State` a field
+/// of [`ViewStates`], from one line per view.
 macro_rules! registry {
     ($($folder:ident::$view:ident),+ $(,)?) => {
         $(pub mod $folder;)+
 
-        /// Every view, in tab order: the first is where the explorer opens, the n-th opens with
-        /// digit n.
+        /// Every view, in tab order: the first is where the explorer opens, the n-th of the first
+        /// nine opens with digit n; `v` and `V` step through all of them.
         pub static VIEWS: &[&dyn View] = &[$(&$folder::$view),+];
+
+        /// The state of every view, one field per view folder, named after it; each starts as its
+        /// `State::default()`.
+        #[derive(Debug, Default)]
+        pub struct ViewStates {
+            $(pub $folder: $folder::State,)+
+        }
     };
 }
 
@@ -89,8 +98,10 @@ registry! {
     restitution::Restitution,
 }
 
-// The digit keys 1–9 open the views.
-const _: () = assert!(!VIEWS.is_empty() && VIEWS.len() <= 9);
+const _: () = assert!(!VIEWS.is_empty());
+
+/// How many views have a digit key: 1–9.
+const DIGITS: usize = 9;
 
 impl Tab {
     /// The view this tab shows.
@@ -103,14 +114,31 @@ impl Tab {
         (0..VIEWS.len()).map(Tab)
     }
 
-    /// The digit key that opens the tab.
-    pub fn key(self) -> char {
-        char::from(b'1' + self.0 as u8)
+    /// The digit key that opens the tab: the first nine have one.
+    pub fn key(self) -> Option<char> {
+        char::from_digit(u32::try_from(self.0 + 1).ok()?, 10).filter(|_| self.0 < DIGITS)
     }
 
     /// The tab of a digit key, if any.
     pub fn of_key(key: char) -> Option<Tab> {
-        Tab::all().find(|t| t.key() == key)
+        Tab::all().find(|t| t.key() == Some(key))
+    }
+
+    /// How the help names the tab: its digit, else its title.
+    pub fn name(self) -> String {
+        match self.key() {
+            Some(key) => key.to_string(),
+            None => self.view().short_title().to_string(),
+        }
+    }
+
+    /// The next (`Up`) or previous (`Down`) tab, wrapping around.
+    pub fn cycle(self, direction: Nudge) -> Tab {
+        let n = VIEWS.len();
+        Tab(match direction {
+            Nudge::Up => (self.0 + 1) % n,
+            Nudge::Down => (self.0 + n - 1) % n,
+        })
     }
 
     /// The tab of a view's [`View::id`], if any.
@@ -124,9 +152,12 @@ impl Tab {
     }
 }
 
-/// The keys of all views as the status line names them: `1-5`.
+/// The keys of the views as the status line names them: `1-5`, or `1-9 v` when some have no digit.
 pub fn keys_hint() -> String {
-    format!("1-{}", VIEWS.len())
+    match VIEWS.len() {
+        n if n <= DIGITS => format!("1-{n}"),
+        _ => format!("1-{DIGITS} v"),
+    }
 }
 
 /// Whether a study the shown view draws is running.
@@ -156,22 +187,35 @@ mod tests {
     /// However many views there are, the n-th opens with digit n and by its id, and no other key
     /// opens one; the explorer is where the app opens.
     #[test]
-    fn each_views_digit_opens_it_in_order() {
-        for (n, tab) in Tab::all().enumerate() {
-            assert_eq!(
-                tab.key().to_digit(10),
-                Some(n as u32 + 1),
-                "{}",
-                tab.title()
-            );
-            assert_eq!(Tab::of_key(tab.key()), Some(tab));
+    fn digits_open_the_first_nine_tabs_in_order() {
+        for tab in Tab::all() {
+            let digit = (tab.0 < 9).then(|| char::from_digit(tab.0 as u32 + 1, 10).unwrap());
+            assert_eq!(tab.key(), digit);
+            if let Some(key) = tab.key() {
+                assert_eq!(Tab::of_key(key), Some(tab));
+            }
             assert_eq!(Tab::named(tab.view().id()), Some(tab));
         }
-        assert_eq!(Tab::all().count(), VIEWS.len());
-        for key in ('\0'..='\u{7f}').filter(|k| !Tab::all().any(|t| t.key() == *k)) {
-            assert_eq!(Tab::of_key(key), None, "{key:?}");
+        for key in ('0'..='9').filter(|k| !Tab::all().any(|t| t.key() == Some(*k))) {
+            assert_eq!(Tab::of_key(key), None);
         }
         assert_eq!(Tab::HOME.view().id(), "explorer");
+    }
+
+    #[test]
+    fn cycling_visits_every_tab_and_wraps() {
+        let mut tab = Tab::HOME;
+        let mut seen = Vec::new();
+        for _ in Tab::all() {
+            seen.push(tab);
+            tab = tab.cycle(Nudge::Up);
+        }
+        assert_eq!(tab, Tab::HOME, "wraps after the last");
+        assert_eq!(seen, Tab::all().collect::<Vec<_>>());
+        for tab in Tab::all() {
+            assert_eq!(tab.cycle(Nudge::Up).cycle(Nudge::Down), tab);
+        }
+        assert_eq!(Tab::HOME.cycle(Nudge::Down), Tab(VIEWS.len() - 1));
     }
 
     #[test]

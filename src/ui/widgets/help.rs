@@ -28,7 +28,10 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
             ])
         })
         .collect();
-    lines.push(Line::default());
+    // A blank line before the input hints, where the screen has a row for it.
+    if lines.len() + 1 + INPUT_HINTS.len() + 2 <= usize::from(area.height) {
+        lines.push(Line::default());
+    }
     lines.extend(
         INPUT_HINTS
             .iter()

@@ -31,7 +31,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
 /// The key, title and gap of a tab's label on the bar.
 fn labels(tab: Tab) -> [String; 3] {
     [
-        format!(" {}", tab.key()),
+        tab.key().map(|key| format!(" {key}")).unwrap_or_default(),
         format!(" {} ", tab.title()),
         " ".into(),
     ]

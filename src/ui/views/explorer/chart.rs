@@ -76,7 +76,7 @@ pub fn describe(app: &App, kind: ChartKind, columns: u16, rows: u16) -> Chart {
             )),
         });
     }
-    if let Some(at) = app.data_cursor {
+    if let Some(at) = app.views.explorer.data_cursor {
         let x = x_range[0] + (x_range[1] - x_range[0]) * f64::from(at) / f64::from(FULL);
         cursor(app, kind, &models, &mut chart, x, (x_scale, y_scale));
     }

@@ -1,8 +1,9 @@
 //! The explorer's keys: the form's cursor, nudges, resets and line editors, the model checklist
-//! under the same cursor, and the chart shown first.
+//! under the same cursor, the chart shown first and the data cursor.
 
 use crate::ui::action::Action;
 use crate::ui::app::{App, Cursor, EditTarget};
+use crate::ui::data_cursor;
 use crate::ui::edited;
 use crate::ui::field::Field;
 
@@ -26,7 +27,13 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
             }
             Cursor::Model(model) => app.toggle(model),
         },
-        Action::CycleChart => app.chart = app.chart.next(),
+        Action::CycleChart => app.views.explorer.chart = app.views.explorer.chart.next(),
+        Action::MoveCursor(forward) => {
+            let at = &mut app.views.explorer.data_cursor;
+            *at = Some(data_cursor::moved(*at, forward));
+        }
+        // Esc hides the data cursor.
+        Action::Cancel => app.views.explorer.data_cursor = None,
         // A paste outside an editor opens the field under the cursor with the pasted text (its
         // first line), so that pasted characters never run commands.
         Action::Paste(text) => {

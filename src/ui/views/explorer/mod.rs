@@ -24,6 +24,24 @@ use super::{FIGURE_COLUMNS, Hints, View};
 
 pub struct Explorer;
 
+/// The explorer's own state.
+#[derive(Debug, Clone)]
+pub struct State {
+    /// The chart shown first (alone where only one fits).
+    pub chart: ChartKind,
+    /// The data cursor, per mille along the charts' x axes (`None`: hidden).
+    pub data_cursor: Option<u16>,
+}
+
+impl Default for State {
+    fn default() -> State {
+        State {
+            chart: ChartKind::ForceDisplacement,
+            data_cursor: None,
+        }
+    }
+}
+
 impl View for Explorer {
     fn id(&self) -> &'static str {
         "explorer"
@@ -34,7 +52,7 @@ impl View for Explorer {
     }
 
     fn render(&self, frame: &mut Frame, _screen: &ScreenLayout, app: &App) {
-        let Some(areas) = layout::layout(frame.area(), app.chart, |w| form::resting_height(app, w)) else {
+        let Some(areas) = layout::layout(frame.area(), app.views.explorer.chart, |w| form::resting_height(app, w)) else {
             return;
         };
         regime::render(frame, areas.info, app, areas.roomy);

@@ -25,7 +25,7 @@ enum Target {
 
 fn target(app: &App, position: Position) -> Option<Target> {
     let (width, height) = app.screen;
-    let areas = layout::layout(Rect::new(0, 0, width, height), app.chart, |w| form::resting_height(app, w))?;
+    let areas = layout::layout(Rect::new(0, 0, width, height), app.views.explorer.chart, |w| form::resting_height(app, w))?;
     if let Some(field) = form::field_at(app, areas.form, areas.roomy, position) {
         return Some(Target::Field(field));
     }
@@ -55,7 +55,7 @@ pub fn click(app: &mut App, position: Position) {
                 app.focused = model;
             }
         }
-        Some(Target::Chart(at)) => app.data_cursor = Some(at),
+        Some(Target::Chart(at)) => app.views.explorer.data_cursor = Some(at),
         None => {}
     }
 }

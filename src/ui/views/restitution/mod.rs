@@ -15,6 +15,13 @@ use super::{FIGURE_TICKS, Hints, View};
 
 pub struct Restitution;
 
+/// The restitution view's own state.
+#[derive(Debug, Clone, Default)]
+pub struct State {
+    /// The table shows instead of the charts.
+    pub table: bool,
+}
+
 impl View for Restitution {
     fn id(&self) -> &'static str {
         "restitution"
@@ -42,7 +49,7 @@ impl View for Restitution {
         match action {
             // The table instead of the charts.
             Action::CycleChart => {
-                app.restitution_table = !app.restitution_table;
+                app.views.restitution.table = !app.views.restitution.table;
                 None
             }
             action => Some(action),

@@ -41,7 +41,7 @@ pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {
             return note(frame, right, app, screen.roomy, text);
         }
     };
-    if app.restitution_table {
+    if app.views.restitution.table {
         table(frame, right, app, &data, screen.roomy);
     } else {
         let [top, bottom] =

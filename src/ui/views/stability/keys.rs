@@ -1,7 +1,7 @@
 //! The stability view's keys: ←→ halve and double the step, Enter types it.
 
 use crate::ui::action::Action;
-use crate::ui::app::{App, EditTarget};
+use crate::ui::app::App;
 use crate::ui::field::Nudge;
 use crate::format::units;
 
@@ -18,7 +18,7 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
                     Nudge::Down => dt / 2.0,
                 };
                 if (STEP_LIMITS.0..=STEP_LIMITS.1).contains(&next) {
-                    app.step = Some(next);
+                    app.views.stability.step = Some(next);
                 } else {
                     app.say("the step stays within 1 fs … 1 s", true);
                 }
@@ -26,11 +26,11 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
             None
         }
         Action::Enter => {
-            let text = match app.step {
+            let text = match app.views.stability.step {
                 Some(dt) => units::engineering(dt, units::SECOND, 4),
                 None => "auto".into(),
             };
-            app.open_editor(EditTarget::Step, text);
+            app.open_editor(super::STEP_EDITOR, text);
             None
         }
         action => Some(action),
@@ -40,13 +40,13 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
 /// Commits a typed step (or `auto`); the reason if it is refused.
 pub fn commit_step(app: &mut App, text: &str) -> Result<(), String> {
     if text.trim() == "auto" {
-        app.step = None;
+        app.views.stability.step = None;
         return Ok(());
     }
     let dt = units::parse(text, units::SECOND)?;
     if !(STEP_LIMITS.0..=STEP_LIMITS.1).contains(&dt) {
         return Err("the step must be within 1 fs … 1 s (or auto)".into());
     }
-    app.step = Some(dt);
+    app.views.stability.step = Some(dt);
     Ok(())
 }

@@ -20,6 +20,16 @@ use super::{FIGURE_COLUMNS, FIGURE_TICKS, Hints, View};
 
 pub struct Stability;
 
+/// The line editor of the step.
+pub const STEP_EDITOR: EditTarget = EditTarget::Row(0);
+
+/// The stability view's own state.
+#[derive(Debug, Clone, Default)]
+pub struct State {
+    /// The step, s; `None` follows the scene (the RK4 critical step).
+    pub step: Option<f64>,
+}
+
 impl View for Stability {
     fn id(&self) -> &'static str {
         "stability"
@@ -47,7 +57,7 @@ impl View for Stability {
 
     fn commit(&self, app: &mut App, target: EditTarget, text: &str) -> Result<(), String> {
         match target {
-            EditTarget::Step => keys::commit_step(app, text),
+            STEP_EDITOR => keys::commit_step(app, text),
             _ => Ok(()),
         }
     }
@@ -82,7 +92,7 @@ impl View for Stability {
 /// The step of the view: the user's, else the RK4 critical step of the last valid scene (the
 /// largest step at which RK4 is stable in theory).
 pub fn step(app: &App) -> Option<f64> {
-    app.step.or_else(|| {
+    app.views.stability.step.or_else(|| {
         app.valid
             .as_ref()
             .and_then(|v| critical_step(Method::Rk4, &v.params))

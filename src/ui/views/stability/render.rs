@@ -13,7 +13,7 @@ use crate::model::impact::MethodUsed;
 use crate::model::ode::Method;
 use crate::model::study::reference::REFERENCE_RTOL;
 use crate::model::study::stability::{Verdict, stability_bound};
-use crate::ui::app::{App, ChartKind, EditTarget, Mode};
+use crate::ui::app::{App, ChartKind, Mode};
 use crate::model::study::runner::{MeasuredBound, MethodRun, StabilityData, StudyKind};
 use crate::ui::style::{Role, Theme, sample};
 use crate::format::units::{self, sig};
@@ -92,11 +92,11 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
 fn header(frame: &mut Frame, area: Rect, app: &App, data: Option<&StabilityData>) {
     let theme = app.theme;
     let editor = match &app.mode {
-        Mode::Editing(e) if e.target == EditTarget::Step => Some(e),
+        Mode::Editing(e) if e.target == super::STEP_EDITOR => Some(e),
         _ => None,
     };
     let step = super::step(app);
-    let value = match (step, app.step) {
+    let value = match (step, app.views.stability.step) {
         (Some(dt), None) => format!(
             "{} (auto: the rk4 critical step)",
             units::engineering(dt, units::SECOND, 4)

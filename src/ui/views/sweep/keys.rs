@@ -2,21 +2,21 @@
 //! row that has choices rather than a value).
 
 use crate::ui::action::Action;
-use crate::ui::app::{App, EditTarget};
+use crate::ui::app::App;
 use crate::ui::field::Nudge;
 
 use super::settings::SweepField;
 
 pub fn handle(app: &mut App, action: Action) -> Option<Action> {
     match action {
-        Action::Up => app.sweep_cursor = app.sweep_cursor.step(false),
-        Action::Down => app.sweep_cursor = app.sweep_cursor.step(true),
-        Action::Nudge(direction) => nudge(app, app.sweep_cursor, direction),
+        Action::Up => app.views.sweep.cursor = app.views.sweep.cursor.step(false),
+        Action::Down => app.views.sweep.cursor = app.views.sweep.cursor.step(true),
+        Action::Nudge(direction) => nudge(app, app.views.sweep.cursor, direction),
         Action::Enter => {
-            let field = app.sweep_cursor;
+            let field = app.views.sweep.cursor;
             if field.is_typed() {
-                let text = app.sweep.edit_text(field, &sweep_scene(app));
-                app.open_editor(EditTarget::Sweep(field), text);
+                let text = app.views.sweep.settings.edit_text(field, &sweep_scene(app));
+                app.open_editor(super::editor(field), text);
             } else {
                 nudge(app, field, Nudge::Up);
             }
@@ -37,5 +37,5 @@ pub fn sweep_scene(app: &App) -> crate::model::Scene {
 fn nudge(app: &mut App, field: SweepField, direction: Nudge) {
     let scene = sweep_scene(app);
     let max = super::max_points(app);
-    app.sweep.nudge(field, direction, &scene, max);
+    app.views.sweep.settings.nudge(field, direction, &scene, max);
 }

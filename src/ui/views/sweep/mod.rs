@@ -16,10 +16,33 @@ use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
 
 use crate::chart::sweep::SweepSet;
+use settings::{SweepField, SweepSettings};
 
 use super::{FIGURE_TICKS, Hints, View};
 
 pub struct Sweep;
+
+/// The line editor of a row of the form.
+pub fn editor(field: SweepField) -> EditTarget {
+    EditTarget::Row(SweepField::ALL.iter().position(|&f| f == field).unwrap_or_default())
+}
+
+/// The sweep view's own state.
+#[derive(Debug, Clone)]
+pub struct State {
+    pub settings: SweepSettings,
+    /// The row of the form under the cursor.
+    pub cursor: SweepField,
+}
+
+impl Default for State {
+    fn default() -> State {
+        State {
+            settings: SweepSettings::default(),
+            cursor: SweepField::Parameter,
+        }
+    }
+}
 
 impl View for Sweep {
     fn id(&self) -> &'static str {
@@ -54,9 +77,12 @@ impl View for Sweep {
 
     fn commit(&self, app: &mut App, target: EditTarget, text: &str) -> Result<(), String> {
         match target {
-            EditTarget::Sweep(field) => {
+            EditTarget::Row(row) => {
+                let Some(&field) = SweepField::ALL.get(row) else {
+                    return Ok(());
+                };
                 let scene = keys::sweep_scene(app);
-                app.sweep.apply(field, text, &scene)
+                app.views.sweep.settings.apply(field, text, &scene)
             }
             _ => Ok(()),
         }
@@ -67,7 +93,7 @@ impl View for Sweep {
     }
 
     fn study_specs(&self, app: &App, valid: &Valid) -> Vec<StudySpec> {
-        match app.sweep.spec(
+        match app.views.sweep.settings.spec(
             &valid.scene,
             app.checked_models(),
             app.draft.options,
@@ -97,7 +123,7 @@ impl View for Sweep {
                 };
                 vec![plot::chart(
                     &[set],
-                    app.sweep.output,
+                    app.views.sweep.settings.output,
                     Some(app.focused),
                     FIGURE_TICKS,
                 )]

@@ -8,7 +8,7 @@ use ratatui::widgets::Paragraph;
 
 use crate::model::Scene;
 use crate::model::scene_key::SceneKey;
-use crate::ui::app::{App, EditTarget, Mode};
+use crate::ui::app::{App, Mode};
 use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, SweepData};
 use crate::ui::style::Role;
@@ -60,14 +60,14 @@ fn form(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, roomy: bool) {
                 width: inner.width,
                 label: field.label(),
                 label_width: LABEL_WIDTH,
-                value: app.sweep.display_within(
+                value: app.views.sweep.settings.display_within(
                     field,
                     scene,
                     max_points,
                     usize::from(inner.width).saturating_sub(LABEL_WIDTH + 1),
                 ),
-                editor: editor.filter(|e| e.target == EditTarget::Sweep(field)),
-                under_cursor: app.sweep_cursor == field && editor.is_none(),
+                editor: editor.filter(|e| e.target == super::editor(field)),
+                under_cursor: app.views.sweep.cursor == field && editor.is_none(),
             },
             theme,
         );
@@ -77,7 +77,7 @@ fn form(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, roomy: bool) {
     let help = match editor.and_then(|e| e.error.as_ref()) {
         Some(error) => span(format!("  ✗ {error}"), theme.style(Role::Error)),
         None => span(
-            match app.sweep_cursor {
+            match app.views.sweep.cursor {
                 SweepField::Parameter => "  ← → any scene key",
                 SweepField::Output => "  ← → p₀, a|b, x_max, F_max, t_c, v_out, e_out",
                 SweepField::From | SweepField::To => "  Enter types it (10 mm/s) · ← → steps",
@@ -99,7 +99,7 @@ fn notes(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, data: Option<&
     let theme = app.theme;
     let width = usize::from(area.width.saturating_sub(1));
     let mut texts: Vec<(String, Role)> = Vec::new();
-    if let Err(reason) = app.sweep.spec(
+    if let Err(reason) = app.views.sweep.settings.spec(
         scene,
         app.checked_models(),
         app.draft.options,
@@ -161,7 +161,7 @@ fn chart(frame: &mut Frame, area: Rect, app: &App, data: Option<&SweepData>, roo
         data,
         yield_stress,
     };
-    let chart = plot::chart(&[set], app.sweep.output, Some(app.focused), budget);
+    let chart = plot::chart(&[set], app.views.sweep.settings.output, Some(app.focused), budget);
     let mut title = chart.title.clone();
     if computing {
         title.push_str(" · computing…");

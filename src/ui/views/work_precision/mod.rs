@@ -17,6 +17,21 @@ use super::{FIGURE_TICKS, Hints, View};
 
 pub struct WorkPrecision;
 
+/// The work-precision view's own state.
+#[derive(Debug, Clone)]
+pub struct State {
+    /// The chart shown where only one fits.
+    pub cost: Cost,
+}
+
+impl Default for State {
+    fn default() -> State {
+        State {
+            cost: Cost::Seconds,
+        }
+    }
+}
+
 impl View for WorkPrecision {
     fn id(&self) -> &'static str {
         "work-precision"
@@ -38,7 +53,7 @@ impl View for WorkPrecision {
         match action {
             // The cost axis shown where only one chart fits.
             Action::CycleChart => {
-                app.cost = app.cost.other();
+                app.views.work_precision.cost = app.views.work_precision.cost.other();
                 None
             }
             action => Some(action),

@@ -74,7 +74,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         let [a, b] = Layout::vertical([Constraint::Fill(1); 2]).areas(charts);
         vec![(Cost::Seconds, a), (Cost::ForceEvals, b)]
     } else {
-        vec![(app.cost, charts)]
+        vec![(app.views.work_precision.cost, charts)]
     };
     let single = shown.len() == 1;
     for (cost, rect) in shown {
