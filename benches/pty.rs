@@ -353,8 +353,11 @@ impl Session {
                     return Err(format!("{}: no frame within {LIMIT:?}", self.label));
                 }
                 Err(RecvTimeoutError::Disconnected) => {
-                    let status = self.child.try_wait().ok().flatten();
-                    return Err(format!("{}: the binary stopped ({status:?})", self.label));
+                    let status = match self.child.try_wait() {
+                        Ok(Some(status)) => status.to_string(),
+                        _ => "its output closed".into(),
+                    };
+                    return Err(format!("{}: the binary stopped ({status})", self.label));
                 }
             }
             if Instant::now() > deadline {
