@@ -50,7 +50,8 @@ fn main() {
     let samples: usize = std::env::var("HERTZ_PTY_SAMPLES")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(200);
+        .unwrap_or(200)
+        .max(1);
     let mut builds = vec![Build {
         label: "this",
         path: PathBuf::from(env!("CARGO_BIN_EXE_hertz-tui")),
