@@ -2,11 +2,13 @@
 //! redraws. Input is read on its own thread, solves and studies each on a job queue of their own,
 //! so none blocks another.
 //!
-//! Redraws are coalesced: everything already waiting is handled before one draw, and while keys
-//! keep arriving (a held key over a slow link) the loop waits a few milliseconds for the next one
-//! before drawing. Each frame is wrapped in synchronized output (terminals that support it show it
-//! at once; others ignore the sequence). Bracketed paste is on, so that pasted text arrives as one
-//! paste and never as keys; mouse capture follows the app's `m` toggle.
+//! Redraws are coalesced without waiting: the input thread reads every event the terminal has
+//! already sent and passes them on together, and the loop handles everything waiting in its
+//! channel before one draw. A single key is drawn at once; a burst (keys typed ahead over a slow
+//! link, a held key while a frame is drawn) is drawn once. Each frame is wrapped in synchronized
+//! output (terminals that support it show it at once; others ignore the sequence). Bracketed
+//! paste is on, so that pasted text arrives as one paste and never as keys; mouse capture follows
+//! the app's `m` toggle.
 
 use std::io::Write;
 use std::sync::mpsc::{self, Receiver, Sender};
@@ -32,7 +34,8 @@ use crate::model::study::runner::{StudyJob, StudyOutcome};
 
 /// What wakes the loop.
 enum Wake {
-    Terminal(event::Event),
+    /// Every terminal event that was waiting when the input thread read (never empty).
+    Terminal(Vec<event::Event>),
     Solver(Report<Outcome>),
     Study(Report<StudyOutcome>),
     InputFailed(String),
@@ -43,8 +46,8 @@ fn spawn_input(events: Sender<Wake>) -> std::io::Result<()> {
         .name("hertz-input".into())
         .spawn(move || {
             loop {
-                let wake = match event::read() {
-                    Ok(e) => Wake::Terminal(e),
+                let wake = match read_waiting(event::read, || event::poll(Duration::ZERO)) {
+                    Ok(events) => Wake::Terminal(events),
                     Err(e) => Wake::InputFailed(e.to_string()),
                 };
                 let failed = matches!(wake, Wake::InputFailed(_));
@@ -56,9 +59,18 @@ fn spawn_input(events: Sender<Wake>) -> std::io::Result<()> {
     Ok(())
 }
 
-/// How long the loop waits for the next key of a burst before drawing: below the ~30 ms of a
-/// key repeat, so a held key draws about once per repeat burst and a single key at once.
-const KEY_BURST_WAIT: Duration = Duration::from_millis(8);
+/// Blocks in `read` for one event, then reads those `ready` says are already there (crossterm
+/// parses a whole read of the terminal at once, so the keys of a burst are all ready together).
+fn read_waiting<E>(
+    mut read: impl FnMut() -> std::io::Result<E>,
+    mut ready: impl FnMut() -> std::io::Result<bool>,
+) -> std::io::Result<Vec<E>> {
+    let mut events = vec![read()?];
+    while ready()? {
+        events.push(read()?);
+    }
+    Ok(events)
+}
 
 /// Runs `app` in `terminal` until it quits, with bracketed paste (and mouse capture while the app
 /// wants it) on meanwhile; both are turned off again on every exit.
@@ -95,24 +107,9 @@ where
     Ok(())
 }
 
-/// Whether a wake is a key (the kind that comes in bursts).
-fn is_key(wake: &Wake) -> bool {
-    matches!(wake, Wake::Terminal(event::Event::Key(_)))
-}
-
-/// The wakes waiting now, and while the last is a key, those that follow within a burst.
-fn burst(first: Wake, wakes: &Receiver<Wake>) -> Vec<Wake> {
-    let mut batch: Vec<Wake> = std::iter::once(first).chain(wakes.try_iter()).collect();
-    while batch.last().is_some_and(is_key) {
-        match wakes.recv_timeout(KEY_BURST_WAIT) {
-            Ok(wake) => {
-                batch.push(wake);
-                batch.extend(wakes.try_iter());
-            }
-            Err(_) => break,
-        }
-    }
-    batch
+/// `first` and every wake already waiting behind it: what one draw answers.
+fn waiting(first: Wake, wakes: &Receiver<Wake>) -> Vec<Wake> {
+    std::iter::once(first).chain(wakes.try_iter()).collect()
 }
 
 /// Sleeps in `recv` between events: no busy loop.
@@ -157,11 +154,17 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
         let first = wakes
             .recv()
             .wrap_err("the input and solver threads stopped")?;
-        for wake in burst(first, &wakes) {
+        for wake in waiting(first, &wakes) {
             match wake {
-                Wake::Terminal(e) => {
-                    if let Some(action) = action_for_event(&app.mode, &e) {
-                        update(&mut app, action);
+                Wake::Terminal(events) => {
+                    for e in events {
+                        if let Some(action) = action_for_event(&app.mode, &e) {
+                            update(&mut app, action);
+                        }
+                        // Keys typed after a quit are not the app's any more.
+                        if app.quit {
+                            return Ok(());
+                        }
                     }
                 }
                 Wake::Solver(Err(message)) => return Err(eyre!(message)),
@@ -189,11 +192,13 @@ mod tests {
     use ratatui::backend::TestBackend;
     use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
-    fn key(c: char) -> Wake {
-        Wake::Terminal(Event::Key(KeyEvent::new(
-            KeyCode::Char(c),
-            KeyModifiers::NONE,
-        )))
+    fn key(c: char) -> Event {
+        Event::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE))
+    }
+
+    /// The keys of `text`, read together.
+    fn key_wake(text: &str) -> Wake {
+        Wake::Terminal(text.chars().map(key).collect())
     }
 
     #[test]
@@ -219,20 +224,49 @@ mod tests {
     }
 
     #[test]
-    fn keys_of_a_burst_share_one_draw() {
+    fn a_read_takes_every_event_already_there() {
+        // Five keys arrived together (one read of the terminal): one wake carries them all.
+        let arrived = std::cell::RefCell::new(std::collections::VecDeque::from_iter(
+            "llllh".chars().map(key),
+        ));
+        let read = || {
+            Ok(arrived
+                .borrow_mut()
+                .pop_front()
+                .expect("only what is ready"))
+        };
+        let events = read_waiting(read, || Ok(!arrived.borrow().is_empty())).unwrap();
+        assert_eq!(
+            events,
+            "llllh".chars().map(key).collect::<Vec<_>>(),
+            "one wake, in order"
+        );
+        // A lone key is passed on at once: nothing else is ready, so nothing is waited for.
+        let mut lone = Some(key('l'));
+        let read = || Ok(lone.take().expect("one key"));
+        assert_eq!(read_waiting(read, || Ok(false)).unwrap(), [key('l')]);
+    }
+
+    #[test]
+    fn every_waiting_wake_shares_one_draw() {
         let (send, wakes) = mpsc::channel();
-        // Keys waiting when the first is read join it (a held key's repeats). No key is sent from
-        // a timed thread: under load a sleep of a few ms can outlast the burst wait, and a test
-        // must not depend on the scheduler.
-        for c in "llllh".chars() {
-            send.send(key(c)).unwrap();
-        }
+        send.send(key_wake("llllh")).unwrap();
+        send.send(Wake::Solver(Err("a report".into()))).unwrap();
+        send.send(key_wake("h")).unwrap();
         let first = wakes.recv().unwrap();
-        let batch = burst(first, &wakes);
-        assert_eq!(batch.len(), 5, "five waiting keys, one draw");
-        // A solver report alone is drawn at once: no wait.
+        let batch = waiting(first, &wakes);
+        assert_eq!(batch.len(), 3, "all three wakes before one draw");
+        let keys: usize = batch
+            .iter()
+            .map(|w| match w {
+                Wake::Terminal(events) => events.len(),
+                _ => 0,
+            })
+            .sum();
+        assert_eq!(keys, 6);
+        // Nothing waiting: the wake alone, at once.
         send.send(Wake::InputFailed("test".into())).unwrap();
         let first = wakes.recv().unwrap();
-        assert_eq!(burst(first, &wakes).len(), 1);
+        assert_eq!(waiting(first, &wakes).len(), 1);
     }
 }
