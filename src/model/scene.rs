@@ -21,6 +21,7 @@ pub struct ImpactConditions {
 
 impl ImpactConditions {
     /// Checks v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0 (0: no permanent deformation); field names are `impact.…`.
+    /// The one check of these inputs: [`ImpactParams::validate`] calls it too.
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("impact.v0", self.v0)?;
         require("impact.restitution", self.restitution, "in (0, 1]", |e| {

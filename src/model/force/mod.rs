@@ -6,8 +6,9 @@ use std::str::FromStr;
 
 use serde::Serialize;
 
-use super::error::{ModelError, require, require_positive};
+use super::error::{ModelError, require_positive};
 use super::power_law::PowerLaw;
+use super::scene::ImpactConditions;
 
 pub mod any;
 pub mod contact;
@@ -49,22 +50,14 @@ pub struct ImpactParams {
 }
 
 impl ImpactParams {
-    /// Checks m > 0, a valid power law (k > 0, n ≥ 1), v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0, all finite, and
+    /// Checks m > 0, a valid power law (k > 0, n ≥ 1), the impact conditions (v₀ > 0, 0 < e ≤ 1,
+    /// x_pl ≥ 0, all finite: [`ImpactConditions::validate`]), the contact, and
     /// that the elastic scales x_max, x_max/v₀ and F_max are finite and non-zero (they scale the
     /// solver; t_c is x_max/v₀ times a constant of n).
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("mass", self.mass)?;
         PowerLaw::new(self.law.k, self.law.n)?;
-        require_positive("impact.v0", self.v0)?;
-        require("impact.restitution", self.restitution, "in (0, 1]", |e| {
-            e > 0.0 && e <= 1.0
-        })?;
-        require(
-            "impact.plastic_indentation",
-            self.plastic_indentation,
-            "a finite number ≥ 0",
-            |x| x >= 0.0,
-        )?;
+        self.conditions().validate()?;
         self.contact.validate()?;
         let x_max = self.law.max_approach(self.mass, self.v0);
         let t_ref = x_max / self.v0;
@@ -91,6 +84,18 @@ impl ImpactParams {
             });
         }
         Ok(())
+    }
+}
+
+impl ImpactParams {
+    /// The impact conditions among these inputs (v₀, e, x_pl), checked by
+    /// [`ImpactConditions::validate`], the one check of them.
+    pub fn conditions(&self) -> ImpactConditions {
+        ImpactConditions {
+            v0: self.v0,
+            restitution: self.restitution,
+            plastic_indentation: self.plastic_indentation,
+        }
     }
 }
 

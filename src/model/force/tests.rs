@@ -189,38 +189,74 @@ fn every_law_is_zero_out_of_contact_and_splits_into_elastic_plus_dissipative() {
 
 #[test]
 fn invalid_parameters_are_refused_with_the_field_named() {
+    // Each bad input, the field the error must name and the value it must carry.
     let bad = [
-        ImpactParams {
-            mass: 0.0,
-            ..fig5()
-        },
-        ImpactParams { v0: -1.0, ..fig5() },
-        ImpactParams {
-            restitution: 0.0,
-            ..fig5()
-        },
-        ImpactParams {
-            restitution: 1.5,
-            ..fig5()
-        },
-        ImpactParams {
-            plastic_indentation: f64::NAN,
-            ..fig5()
-        },
-        ImpactParams {
-            law: PowerLaw { k: 1e10, n: 0.5 },
-            ..fig5()
-        },
-        ImpactParams {
-            mass: 1e300,
-            v0: 1e300,
-            ..fig5()
-        },
+        (
+            ImpactParams {
+                mass: 0.0,
+                ..fig5()
+            },
+            "mass",
+            0.0,
+        ),
+        (ImpactParams { v0: -1.0, ..fig5() }, "impact.v0", -1.0),
+        (
+            ImpactParams {
+                restitution: 0.0,
+                ..fig5()
+            },
+            "impact.restitution",
+            0.0,
+        ),
+        (
+            ImpactParams {
+                restitution: 1.5,
+                ..fig5()
+            },
+            "impact.restitution",
+            1.5,
+        ),
+        (
+            ImpactParams {
+                plastic_indentation: f64::NAN,
+                ..fig5()
+            },
+            "impact.plastic_indentation",
+            f64::NAN,
+        ),
+        (
+            ImpactParams {
+                law: PowerLaw { k: 1e10, n: 0.5 },
+                ..fig5()
+            },
+            "n",
+            0.5,
+        ),
     ];
-    for p in bad {
+    for (p, want_field, want_value) in bad {
         let err = ForceModel::HuntCrossley.law(&p).unwrap_err();
-        assert!(!err.to_string().is_empty());
+        let ModelError::InvalidParameter { field, value, .. } = &err else {
+            panic!("{want_field}: not an invalid parameter: {err}");
+        };
+        assert_eq!(field, want_field, "{err}");
+        assert!(
+            value.to_bits() == want_value.to_bits(),
+            "{want_field}: carries {value}, not {want_value}"
+        );
+        assert!(err.to_string().starts_with(want_field), "{err}");
     }
+    // Valid one by one, together they overflow the elastic scales: refused naming them.
+    let overflow = ImpactParams {
+        mass: 1e300,
+        v0: 1e300,
+        ..fig5()
+    };
+    let err = ForceModel::HuntCrossley.law(&overflow).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("elastic impact scales (eqs 5–7): x_max = inf m"),
+        "{err}"
+    );
     assert!(ForceModel::Proposed.law(&fig5()).is_ok());
 }
 
