@@ -5,6 +5,7 @@
 //! ln((1 + χ)/(1 − χ·e_out)) = χ·(1 + e_out), whatever n, k, m and v₀. Thornton's law by inverting
 //! his closed-form e(V) (spheres) or its line-contact counterpart (a quadrature). Every other law with a damping parameter by a bracketed root of
 //! e_out(d) − e over solves at tight tolerance.
+#![warn(missing_docs)]
 
 use thiserror::Error;
 
@@ -28,23 +29,35 @@ const MAX_DOUBLINGS: usize = 80;
 /// Why a law could not be calibrated.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CalibrationError {
+    /// The law has no damping parameter (elastic Hertz, the exact line-contact law).
     #[error("{0} has no damping parameter to calibrate")]
     NoDamping(ForceModel),
+    /// No value of the damping parameter realises the requested e.
     #[error(
         "{model} cannot reach e = {target}: its realised e stays at {lowest:.6} or above ({symbol} up to {damping:.4e})"
     )]
     Unreachable {
+        /// The law.
         model: ForceModel,
+        /// The requested restitution.
         target: f64,
+        /// The lowest restitution the law realised.
         lowest: f64,
+        /// The damping parameter's symbol (α, b, P, …).
         symbol: &'static str,
+        /// The largest damping tried, in the parameter's SI unit.
         damping: f64,
     },
+    /// An impact solve inside the calibration failed.
     #[error("{model}: calibration solve failed at {symbol} = {damping:.4e}: {source}")]
     Solve {
+        /// The law.
         model: ForceModel,
+        /// The damping parameter's symbol.
         symbol: &'static str,
+        /// The damping the solve was at, in the parameter's SI unit.
         damping: f64,
+        /// Why the solve failed.
         #[source]
         source: ImpactError,
     },
@@ -53,7 +66,9 @@ pub enum CalibrationError {
 /// A calibrated law and what it realises.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Calibrated {
+    /// The law with its calibrated damping, ready for [`solve_law`].
     pub law: AnyLaw,
+    /// The calibrated damping parameter: its symbol, value and unit.
     pub damping: Damping,
     /// The realised restitution of the calibrated law (at the calibration's tolerance).
     pub e_out: f64,

@@ -1,5 +1,6 @@
 //! Realised against requested restitution, per law (docs/physics.md §6.4): each law's damping is
 //! set from the requested e by its own rule, and the impact says what e it really gives.
+#![warn(missing_docs)]
 
 use serde::Serialize;
 
@@ -14,16 +15,32 @@ pub const REQUESTED: [f64; 5] = [0.1, 0.3, 0.5, 0.7, 0.9];
 /// One requested e and what the law gives for it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RestitutionPoint {
+    /// The requested e the law's damping was set from.
     pub e_requested: f64,
     /// v_out/v₀, `None` when the solve failed.
     pub e_out: Option<f64>,
-    pub error: Option<String>,
+    /// Why the solve failed, `None` when it did not (JSON writes its message).
+    #[serde(serialize_with = "as_message")]
+    pub error: Option<ImpactError>,
+}
+
+/// An error as its message, for JSON.
+fn as_message<S: serde::Serializer>(
+    error: &Option<ImpactError>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    match error {
+        Some(e) => serializer.collect_str(e),
+        None => serializer.serialize_none(),
+    }
 }
 
 /// One law's realised e over the requested values.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RestitutionRow {
+    /// The law.
     pub model: ForceModel,
+    /// One point per requested e, in the order asked.
     pub points: Vec<RestitutionPoint>,
 }
 
@@ -63,7 +80,7 @@ pub fn table(
                     Err(err) => RestitutionPoint {
                         e_requested: e,
                         e_out: None,
-                        error: Some(err.to_string()),
+                        error: Some(err),
                     },
                 })
                 .collect(),

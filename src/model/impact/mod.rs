@@ -1,4 +1,5 @@
 //! The impact solver: integrates m·ẍ = −F(x, ẋ) from x = 0, ẋ = v₀ until contact ends.
+#![warn(missing_docs)]
 
 use std::fmt;
 use std::str::FromStr;
@@ -52,6 +53,7 @@ impl FromStr for MethodChoice {
 /// summary's warnings flag the scene as ill-conditioned.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveOptions {
+    /// The solution path: `auto` or one integrator.
     pub method: MethodChoice,
     /// The accuracy asked of adaptive methods and `auto` (see above).
     pub rtol: f64,
@@ -82,6 +84,7 @@ impl Default for SolveOptions {
 pub enum MethodUsed {
     /// A closed form or quadrature (elastic Hertz, energy integrals); the curves come from a tight-tolerance integrator.
     Exact,
+    /// This integrator.
     Integrator(Method),
 }
 
@@ -116,7 +119,9 @@ pub struct TensileCutoff {
 /// The numbers of one impact, SI units.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ImpactSummary {
+    /// The force law solved.
     pub model: ForceModel,
+    /// The solution path used.
     pub method: MethodUsed,
     /// Maximum approach (at ẋ = 0), m.
     pub x_max: f64,
@@ -153,29 +158,49 @@ pub struct ImpactSummary {
 /// One point of a trajectory.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
+    /// Time since first contact, s.
     pub t: f64,
+    /// Approach x, m.
     pub x: f64,
+    /// Approach velocity ẋ, m/s.
     pub v: f64,
+    /// Contact force F, N.
     pub f: f64,
 }
 
 /// Ways an impact solve fails. Each says what happened and when.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ImpactError {
+    /// The inputs or options are invalid; the error names the field.
     #[error(transparent)]
     InvalidInput(#[from] ModelError),
+    /// The integrator failed.
     #[error("{method}: {source}")]
     Integration {
+        /// The integrator that failed.
         method: Method,
+        /// Its error, in the solver's time in seconds.
         #[source]
         source: OdeError,
     },
+    /// The mechanical energy grew past [`ENERGY_LIMIT`]: the method is unstable at its step.
     #[error(
         "{method}: energy grew by {growth:.1} % at t = {t:.6e} s: the method is unstable at this step"
     )]
-    EnergyGrowth { method: Method, t: f64, growth: f64 },
+    EnergyGrowth {
+        /// The integrator.
+        method: Method,
+        /// When, s.
+        t: f64,
+        /// The growth, % of the initial kinetic energy.
+        growth: f64,
+    },
+    /// Contact lasted past [`TIME_LIMIT_CONTACTS`] elastic contact times.
     #[error("contact did not end within {t_limit:.3e} s")]
-    NoSeparation { t_limit: f64 },
+    NoSeparation {
+        /// The time limit, s.
+        t_limit: f64,
+    },
 }
 
 mod auto;
@@ -193,7 +218,9 @@ pub use trajectory::Trajectory;
 /// A solved impact: the numbers and the continuous curves.
 #[derive(Debug, Clone)]
 pub struct ImpactSolution {
+    /// The numbers: peaks, contact time, realised restitution, work.
     pub summary: ImpactSummary,
+    /// The continuous curves x(t), ẋ(t), F(t).
     pub trajectory: Trajectory,
 }
 

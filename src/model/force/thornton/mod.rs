@@ -338,7 +338,7 @@ impl ForceLaw for Thornton {
     }
 
     /// Three conservative phases: closed forms on spheres, a quadrature of the capped loading's
-    /// time on strips ([`exact`]).
+    /// time on strips (the `exact` module).
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
         Some(self.exact_impact(rtol)).filter(ExactImpact::is_valid)
     }
