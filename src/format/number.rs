@@ -244,7 +244,7 @@ impl Shortest {
 
 impl Rounded {
     /// `value` (finite, non-zero) rounded to `digits` significant digits (at least one, at most
-    /// [`MAX_DIGITS`]).
+    /// `MAX_DIGITS`).
     ///
     /// From Żmij's shortest digits S of the double v, rounded half up, when that is v's own
     /// rounding: S and v lie in v's rounding interval, so a rounding boundary (a number of
@@ -252,7 +252,7 @@ impl Rounded {
     /// `digits` + 1 digits in S there is none (S is the shortest in the interval); with exactly
     /// that many, none either unless S ends in that 5 (S is the nearest of its length), so that
     /// case goes to the exact formatter; with `digits` or fewer, a boundary is farther from S
-    /// than v can be, for normal doubles up to [`SHORTEST_EXACT_UP_TO`] digits. Subnormals
+    /// than v can be, for normal doubles up to `SHORTEST_EXACT_UP_TO` digits. Subnormals
     /// (whose interval is wide) and more digits go to the exact formatter.
     pub fn new(value: f64, digits: usize) -> Self {
         let wanted = digits.clamp(1, MAX_DIGITS);

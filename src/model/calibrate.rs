@@ -120,6 +120,33 @@ pub fn hunt_crossley_chi(e: f64) -> Option<f64> {
 }
 
 /// The law `model` with its damping calibrated so that e_out equals `params.restitution`.
+///
+/// Hunt–Crossley on the paper's Fig. 5 scene, whose own rule χ = 3(1 − e)/2 gives 0.712 for the
+/// requested e = 0.6; calibrated, its χ solves ln((1 + χ)/(1 − χ·e)) = χ·(1 + e)
+/// (docs/physics.md §6.4) and the impact rebounds at 0.6:
+///
+/// ```
+/// use hertz_tui::model::ForceModel;
+/// use hertz_tui::model::calibrate::calibrate;
+/// use hertz_tui::model::impact::{SolveOptions, solve_impact, solve_law};
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let params = scene.impact_params(&scene.quasistatic()?);
+/// let options = SolveOptions::default();
+/// assert_eq!(params.restitution, 0.6);
+///
+/// let own_rule = solve_impact(ForceModel::HuntCrossley, &params, &options)?.summary.e_out;
+/// assert!((own_rule - 0.712).abs() < 1e-3);
+///
+/// let calibrated = calibrate(ForceModel::HuntCrossley, &params)?;
+/// assert_eq!(calibrated.damping.param.symbol, "χ");
+/// let (e, chi) = (0.6, calibrated.damping.value);
+/// assert!((((1.0 + chi) / (1.0 - chi * e)).ln() - chi * (1.0 + e)).abs() < 1e-9);
+/// let e_out = solve_law(&calibrated.law, &options)?.summary.e_out;
+/// assert!((e_out - 0.6).abs() < 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated, CalibrationError> {
     let target = params.restitution;
     let Some(param) = model.spec().damping else {

@@ -59,6 +59,33 @@ pub fn realised(
 }
 
 /// The realised e of every model in `models` for every requested value.
+///
+/// Hunt–Crossley's rule χ = 3(1 − e)/2 (eq 19) realises, by its exact unloading relation
+/// ([`hunt_crossley_restitution`](crate::model::calibrate::hunt_crossley_restitution),
+/// docs/physics.md §6.4), 0.581 where 0.3 is asked; the solved table agrees:
+///
+/// ```
+/// use hertz_tui::model::ForceModel;
+/// use hertz_tui::model::calibrate::hunt_crossley_restitution;
+/// use hertz_tui::model::impact::SolveOptions;
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+/// use hertz_tui::model::restitution::{REQUESTED, table};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let params = scene.impact_params(&scene.quasistatic()?);
+/// let models = [ForceModel::Quasistatic, ForceModel::HuntCrossley];
+/// let rows = table(&models, &params, &REQUESTED, &SolveOptions::default());
+///
+/// // Elastic Hertz ignores the request: e_out = 1 throughout.
+/// assert!(rows[0].points.iter().all(|p| (p.e_out.unwrap() - 1.0).abs() < 1e-9));
+/// for point in &rows[1].points {
+///     let exact = hunt_crossley_restitution(1.5 * (1.0 - point.e_requested));
+///     assert!((point.e_out.unwrap() - exact).abs() < 1e-6, "{point:?}");
+/// }
+/// assert_eq!(rows[1].points[1].e_requested, 0.3);
+/// assert!((rows[1].points[1].e_out.unwrap() - 0.581).abs() < 1e-3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn table(
     models: &[ForceModel],
     params: &ImpactParams,

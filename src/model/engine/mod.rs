@@ -66,6 +66,34 @@ pub fn find(id: &str) -> Result<&'static Engine, EngineError> {
 }
 
 /// Translates `scene` for the engine `id`.
+///
+/// Drake's Hunt–Crossley point contact for the paper's Fig. 5 scene: its stiffness is chosen so
+/// that π·√(m/k) is the Hertz contact time (k = k₁/2, Drake combining two equal geometries), and
+/// its dissipation so that the engine's law, solved here, rebounds at the scene's e = 0.6:
+///
+/// ```
+/// use std::f64::consts::PI;
+///
+/// use hertz_tui::model::engine::translate;
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let hertz = scene.quasistatic()?;
+/// let drake = translate("drake", &scene)?;
+///
+/// let k1 = drake
+///     .parameters
+///     .iter()
+///     .find(|p| p.name == "point_contact_stiffness")
+///     .map(|p| p.value)
+///     .unwrap();
+/// let k = k1 / 2.0;
+/// assert!((PI * (hertz.reduced_mass / k).sqrt() / hertz.t_contact - 1.0).abs() < 1e-9);
+/// assert_eq!(drake.e_requested, 0.6);
+/// assert!((drake.realised.e_out - 0.6).abs() < 1e-8);
+/// assert!(drake.fragments[0].text.contains(&drake.parameters[0].text()));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
     let engine = find(id)?;
     (engine.translate)(&EngineScene::new(scene)?)

@@ -234,6 +234,32 @@ pub struct ImpactSolution {
 /// when the scene is stiff. Failures are typed: invalid input, an integrator error (in seconds),
 /// energy growth beyond [`ENERGY_LIMIT`], or no separation within [`TIME_LIMIT_CONTACTS`] elastic
 /// contact times.
+///
+/// The paper's Fig. 5 scene, a steel sphere R = 10 mm dropped at v₀ = 0.3 m/s on a steel plate:
+///
+/// ```
+/// use hertz_tui::model::ForceModel;
+/// use hertz_tui::model::impact::{MethodUsed, SolveOptions, solve_impact};
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let params = scene.impact_params(&scene.quasistatic()?);
+/// let options = SolveOptions::default();
+///
+/// // Elastic Hertz (eq 1) is solved exactly: Table 1's x_max = 9.115 µm (eq 5) and
+/// // F_max = 403.2 N (eq 6), t_c = 2.9432·x_max/v₀ (eq 7, (4/5)·B(2/5, 1/2)), all energy back.
+/// let elastic = solve_impact(ForceModel::Quasistatic, &params, &options)?.summary;
+/// assert_eq!(elastic.method, MethodUsed::Exact);
+/// assert!((elastic.x_max / 9.115e-6 - 1.0).abs() < 1e-3);
+/// assert!((elastic.f_max / 403.2 - 1.0).abs() < 1e-3);
+/// assert!((elastic.t_contact / (2.9432 * elastic.x_max / 0.3) - 1.0).abs() < 1e-4);
+/// assert!((elastic.e_out - 1.0).abs() < 1e-9);
+///
+/// // Hunt–Crossley (eq 19) at e = 0.6 leaves at 0.2136 m/s, faster than v₀·e = 0.18 m/s.
+/// let hunt_crossley = solve_impact(ForceModel::HuntCrossley, &params, &options)?;
+/// assert!((hunt_crossley.summary.v_out - 0.2136).abs() < 1e-4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn solve_impact(
     model: ForceModel,
     params: &ImpactParams,
