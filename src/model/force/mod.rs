@@ -187,20 +187,19 @@ impl Serialize for ForceModel {
     }
 }
 
+/// A model id that names no row of [`LAWS`]; the message lists the ids that do.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown model '{0}' (expected one of: {ids})", ids = ForceModel::ALL.map(ForceModel::name).join(", "))]
+pub struct UnknownModel(pub String);
+
 impl FromStr for ForceModel {
-    type Err = String;
+    type Err = UnknownModel;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         ForceModel::ALL
             .into_iter()
             .find(|m| m.name() == s)
-            .ok_or_else(|| {
-                let names: Vec<_> = ForceModel::ALL.iter().map(|m| m.name()).collect();
-                format!(
-                    "unknown model '{s}' (expected one of: {})",
-                    names.join(", ")
-                )
-            })
+            .ok_or_else(|| UnknownModel(s.to_string()))
     }
 }
 

@@ -297,9 +297,13 @@ fn the_law_table_has_unique_ids_and_the_paper_five_keep_theirs() {
         );
     }
     let err = "hertz".parse::<ForceModel>().unwrap_err();
+    assert_eq!(err, UnknownModel("hertz".into()));
+    let message = err.to_string();
     assert!(
-        err.contains("kelvin-voigt") && err.contains("gharib-hurmuzlu"),
-        "{err}"
+        message.starts_with("unknown model 'hertz' (expected one of: quasistatic, ")
+            && message.contains("kelvin-voigt")
+            && message.contains("gharib-hurmuzlu"),
+        "{message}"
     );
 }
 

@@ -7,6 +7,7 @@ use super::decode::Decoder;
 use super::document::{Problem, SceneFileError};
 use super::write::toml_float;
 use crate::model::ForceModel;
+use crate::model::force::UnknownModel;
 use crate::model::impact::{MethodChoice, SolveOptions};
 
 /// Keys of `[solver]`, as on the command line (`--method`, `--rtol`, `--atol`, `--dt`).
@@ -110,7 +111,7 @@ impl Decoder<'_> {
             let Value::String(name) = item else {
                 return Err(self.wrong_type("models", "an array of model names", item));
             };
-            let model: ForceModel = name.parse().map_err(bad)?;
+            let model: ForceModel = name.parse().map_err(|e: UnknownModel| bad(e.to_string()))?;
             if models.contains(&model) {
                 return Err(bad(format!("\"{name}\" is listed twice")));
             }
