@@ -23,6 +23,31 @@ pub enum ModelError {
         formula: &'static str,
         detail: String,
     },
+    /// Inputs valid one by one whose elastic scales x_max (eq 5), x_max/v₀ and F_max (eq 6) are
+    /// not all finite and non-zero in double precision: the solver could not scale them.
+    #[error(
+        "elastic impact scales (eqs 5–7): x_max = {x_max:e} m, x_max/v₀ = {t_ref:e} s, F_max = {f_max:e} N are not all finite and non-zero"
+    )]
+    ImpactScales {
+        /// x_max, m.
+        x_max: f64,
+        /// x_max/v₀, s.
+        t_ref: f64,
+        /// F_max, N.
+        f_max: f64,
+    },
+    /// A plastic indentation whose proposed damping b = k·x_pl/(v₀·e) (eq 18) overflows.
+    #[error(
+        "proposed damping b = k·x_pl/(v₀·e) (eq 18): impact.plastic_indentation = {plastic_indentation:e} m gives b = {damping:e}; use a plastic indentation of the order of x_max = {x_max:e} m"
+    )]
+    ProposedDamping {
+        /// The scene's x_pl, m.
+        plastic_indentation: f64,
+        /// The damping b it gives, N·s/m^n.
+        damping: f64,
+        /// The elastic x_max (eq 5), m: the order x_pl should have.
+        x_max: f64,
+    },
     /// The power-law fit of a cylinder force law did not converge.
     #[error("power-law fit F = a·xⁿ + c failed: {0}")]
     FitFailed(String),

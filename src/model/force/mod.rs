@@ -66,21 +66,18 @@ impl ImpactParams {
             .iter()
             .any(|q| !(q.is_finite() && q.is_normal()))
         {
-            return Err(ModelError::OutOfDomain {
-                formula: "elastic impact scales (eqs 5–7)",
-                detail: format!(
-                    "x_max = {x_max:e} m, x_max/v₀ = {t_ref:e} s, F_max = {f_max:e} N are not all finite and non-zero"
-                ),
+            return Err(ModelError::ImpactScales {
+                x_max,
+                t_ref,
+                f_max,
             });
         }
         let damping = self.law.k * self.plastic_indentation / (self.v0 * self.restitution);
         if !damping.is_finite() {
-            return Err(ModelError::OutOfDomain {
-                formula: "proposed damping b = k·x_pl/(v₀·e) (eq 18)",
-                detail: format!(
-                    "impact.plastic_indentation = {:e} m gives b = {damping:e}; use a plastic indentation of the order of x_max = {x_max:e} m",
-                    self.plastic_indentation
-                ),
+            return Err(ModelError::ProposedDamping {
+                plastic_indentation: self.plastic_indentation,
+                damping,
+                x_max,
             });
         }
         Ok(())

@@ -253,6 +253,10 @@ fn invalid_parameters_are_refused_with_the_field_named() {
     };
     let err = ForceModel::HuntCrossley.law(&overflow).unwrap_err();
     assert!(
+        matches!(err, ModelError::ImpactScales { x_max, .. } if x_max == f64::INFINITY),
+        "{err:?}"
+    );
+    assert!(
         err.to_string()
             .starts_with("elastic impact scales (eqs 5–7): x_max = inf m"),
         "{err}"
@@ -264,7 +268,20 @@ fn invalid_parameters_are_refused_with_the_field_named() {
 fn an_infinite_proposed_damping_is_refused_naming_the_plastic_indentation() {
     let mut p = fig5();
     p.plastic_indentation = 1e300;
-    let msg = p.validate().unwrap_err().to_string();
+    let err = p.validate().unwrap_err();
+    let ModelError::ProposedDamping {
+        plastic_indentation,
+        damping,
+        x_max,
+    } = err
+    else {
+        panic!("{err:?}");
+    };
+    assert_eq!(plastic_indentation, 1e300);
+    assert!(damping.is_infinite());
+    // Table 1's x_max for the fixture's m = 0.033 kg, a little over the scene's 32.67 g.
+    assert!((x_max / 9.15e-6 - 1.0).abs() < 0.01, "{x_max}");
+    let msg = err.to_string();
     assert!(
         msg.starts_with(
             "proposed damping b = k·x_pl/(v₀·e) (eq 18): impact.plastic_indentation = 1e300 m"
