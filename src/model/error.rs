@@ -48,6 +48,17 @@ pub enum ModelError {
         /// The elastic x_max (eq 5), m: the order x_pl should have.
         x_max: f64,
     },
+    /// A quantity of the quasistatic estimate (eqs 1–14) left double precision (inputs each valid,
+    /// together out of range, e.g. v₀ = 1e200 m/s).
+    #[error(
+        "quasistatic estimate: {quantity} = {value} is out of double-precision range; check the units of v0, radii, masses and moduli"
+    )]
+    EstimateOutOfRange {
+        /// The first quantity out of range, as the estimate names it (`x_max`, `f_max`, …).
+        quantity: &'static str,
+        /// Its value: infinite, NaN or not positive.
+        value: f64,
+    },
     /// The power-law fit of a cylinder force law did not converge.
     #[error("power-law fit F = a·xⁿ + c failed: {0}")]
     FitFailed(String),

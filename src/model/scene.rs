@@ -130,12 +130,7 @@ fn require_finite_results(q: &Quasistatic) -> Result<(), ModelError> {
     ];
     match values.iter().find(|(_, v)| !(v.is_finite() && *v > 0.0)) {
         None => Ok(()),
-        Some((name, value)) => Err(ModelError::OutOfDomain {
-            formula: "quasistatic estimate",
-            detail: format!(
-                "{name} = {value} is out of double-precision range; check the units of v0, radii, masses and moduli"
-            ),
-        }),
+        Some(&(quantity, value)) => Err(ModelError::EstimateOutOfRange { quantity, value }),
     }
 }
 
@@ -240,7 +235,15 @@ pub(crate) mod tests {
     fn overflowing_inputs_are_an_error_not_infinity() {
         let mut scene = fig5_scene();
         scene.impact.v0 = 1e200;
-        let err = scene.quasistatic().unwrap_err().to_string();
+        let err = scene.quasistatic().unwrap_err();
+        assert_eq!(
+            err,
+            ModelError::EstimateOutOfRange {
+                quantity: "x_max",
+                value: f64::INFINITY
+            }
+        );
+        let err = err.to_string();
         assert!(
             err.starts_with("quasistatic estimate: x_max = inf is out of double-precision range"),
             "{err}"
