@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use crate::format::{Zeros, scientific};
+
 /// Everything the quasistatic model layer can refuse.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ModelError {
@@ -12,11 +14,12 @@ pub enum ModelError {
         requirement: &'static str,
         value: f64,
     },
-    /// A pair of shapes the model has no contact law for.
+    /// A pair of shapes the model has no contact law for: the two shapes' names, body 1's first.
     #[error(
-        "{0} contact is not supported (supported: sphere–sphere, sphere–plane, cylinder–cylinder, cylinder–plane)"
+        "{}–{} contact is not supported (supported: sphere–sphere, sphere–plane, cylinder–cylinder, cylinder–plane)",
+        .0[0], .0[1]
     )]
-    UnsupportedPair(String),
+    UnsupportedPair([&'static str; 2]),
     /// A formula was asked for a value outside the domain where it holds.
     #[error("{formula}: {detail}")]
     OutOfDomain {
@@ -59,9 +62,28 @@ pub enum ModelError {
         /// Its value: infinite, NaN or not positive.
         value: f64,
     },
+    /// A line-contact impact storing more energy than eqs 13–14 hold for: they stop holding at
+    /// `force_limit`, where they store `stored`.
+    #[error(
+        "eqs 13–14 (line contact): the impact energy {} J exceeds the {} J the formulas store up to F = {} N, where they stop holding; lower impact.v0",
+        sci(*.energy), sci(*.stored), sci(*.force_limit)
+    )]
+    LineContactEnergy {
+        /// The impact energy ½·m·v₀², J.
+        energy: f64,
+        /// The energy eqs 13–14 store up to their force limit, J.
+        stored: f64,
+        /// The force up to which eqs 13–14 hold, N.
+        force_limit: f64,
+    },
     /// The power-law fit of a cylinder force law did not converge.
     #[error("power-law fit F = a·xⁿ + c failed: {0}")]
     FitFailed(String),
+}
+
+/// `value` in 4 significant digits, scientific, as the messages write it.
+fn sci(value: f64) -> String {
+    scientific(value, 4, Zeros::Trim)
 }
 
 impl ModelError {

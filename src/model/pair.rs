@@ -39,7 +39,7 @@ impl ContactPair {
             (Sphere { .. }, Plane) | (Plane, Sphere { .. }) => PairKind::SpherePlane,
             (Cylinder { .. }, Cylinder { .. }) => PairKind::CylinderCylinder,
             (Cylinder { .. }, Plane) | (Plane, Cylinder { .. }) => PairKind::CylinderPlane,
-            (a, b) => return Err(ModelError::UnsupportedPair(format!("{a}–{b}"))),
+            (a, b) => return Err(ModelError::UnsupportedPair([a.name(), b.name()])),
         };
         let pair = ContactPair { body1, body2, kind };
         if !pair.reduced_mass().is_finite() {
