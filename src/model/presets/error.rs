@@ -15,10 +15,13 @@ pub enum PresetError {
     File(#[from] SceneFileError),
     #[error(transparent)]
     Override(#[from] OverrideError),
-    #[error("unknown scene \"{name}\" (scenes: {known}; or give the path of a .toml scene file)")]
-    UnknownScene { name: String, known: String },
-    #[error("unknown material \"{name}\" (materials: {known})")]
-    UnknownMaterial { name: String, known: String },
+    #[error(
+        "unknown scene \"{name}\" (scenes: {}; or give the path of a .toml scene file)",
+        .known.join(", ")
+    )]
+    UnknownScene { name: String, known: Vec<String> },
+    #[error("unknown material \"{name}\" (materials: {})", .known.join(", "))]
+    UnknownMaterial { name: String, known: Vec<String> },
     #[error("cannot read {}: {message}", path.display())]
     Read { path: PathBuf, message: String },
     #[error("cannot write {}: {message}", path.display())]

@@ -140,7 +140,7 @@ impl Registry {
             .cloned()
             .ok_or_else(|| PresetError::UnknownMaterial {
                 name: name.to_string(),
-                known: names(&self.catalog),
+                known: self.catalog.keys().cloned().collect(),
             })
     }
 
@@ -241,7 +241,7 @@ impl Registry {
         }
         Err(PresetError::UnknownScene {
             name: name_or_path.to_string(),
-            known: self.scenes.keys().cloned().collect::<Vec<_>>().join(", "),
+            known: self.scenes.keys().cloned().collect(),
         })
     }
 
@@ -350,8 +350,4 @@ impl Registry {
         }
         files
     }
-}
-
-fn names(catalog: &BTreeMap<String, Material>) -> String {
-    catalog.keys().cloned().collect::<Vec<_>>().join(", ")
 }
