@@ -78,7 +78,69 @@ pub enum ModelError {
     },
     /// The power-law fit of a cylinder force law did not converge.
     #[error("power-law fit F = a·xⁿ + c failed: {0}")]
-    FitFailed(String),
+    FitFailed(FitFailure),
+}
+
+/// Why the power-law fit F = a·xⁿ + c of a line contact (eq 13/14) failed, with its numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum FitFailure {
+    /// The force range [f_min, f_max] is narrower than `ratio`·f_min allows.
+    #[error(
+        "the force range [{f_min:e}, {f_max:e}] N is too narrow; f_max must be at least {ratio}·f_min to determine a, n and c"
+    )]
+    RangeTooNarrow {
+        /// Lower end of the range, N.
+        f_min: f64,
+        /// Upper end of the range, N.
+        f_max: f64,
+        /// The smallest f_max/f_min the fit accepts.
+        ratio: f64,
+    },
+    /// The residuals at the log-log starting guess are not finite.
+    #[error("the log-log starting guess is not finite")]
+    StartNotFinite,
+    /// Levenberg–Marquardt did not converge within `iterations`.
+    #[error("Levenberg–Marquardt did not converge in {iterations} iterations")]
+    NotConverged {
+        /// The iteration limit.
+        iterations: usize,
+    },
+    /// The fit converged to a stiffness that is not finite and positive.
+    #[error(
+        "the fit over [{f_min:e}, {f_max:e}] N gave a = {a:e}, n = {n}, c = {c:e}; the stiffness a must be finite and positive"
+    )]
+    BadStiffness {
+        /// Lower end of the range, N.
+        f_min: f64,
+        /// Upper end of the range, N.
+        f_max: f64,
+        /// The fitted a, N/mⁿ.
+        a: f64,
+        /// The fitted n.
+        n: f64,
+        /// The fitted c, N.
+        c: f64,
+    },
+    /// The fitted law gives no finite peak force at v₀.
+    #[error("the fitted law a = {a:e}, n = {n} gives no finite F_max at v0 = {v0} m/s")]
+    NoFiniteMaxForce {
+        /// The fitted a, N/mⁿ.
+        a: f64,
+        /// The fitted n.
+        n: f64,
+        /// The impact velocity, m/s.
+        v0: f64,
+    },
+    /// No fit range [F/10, F] reproduces its own F as the peak force below `ceiling`.
+    #[error(
+        "the fit range did not settle at v0 = {v0} m/s: no force F with F_max(fit over [F/10, F]) = F below {ceiling:e} N"
+    )]
+    RangeUnsettled {
+        /// The impact velocity, m/s.
+        v0: f64,
+        /// The highest force searched, N.
+        ceiling: f64,
+    },
 }
 
 /// `value` in 4 significant digits, scientific, as the messages write it.
