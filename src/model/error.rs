@@ -23,8 +23,10 @@ pub enum ModelError {
     /// A formula was asked for a value outside the domain where it holds.
     #[error("{formula}: {detail}")]
     OutOfDomain {
+        /// The formula, with its equation number.
         formula: &'static str,
-        detail: String,
+        /// What lies outside its domain, with the numbers.
+        detail: Domain,
     },
     /// Inputs valid one by one whose elastic scales x_max (eq 5), x_max/v₀ and F_max (eq 6) are
     /// not all finite and non-zero in double precision: the solver could not scale them.
@@ -79,6 +81,142 @@ pub enum ModelError {
     /// The power-law fit of a cylinder force law did not converge.
     #[error("power-law fit F = a·xⁿ + c failed: {0}")]
     FitFailed(FitFailure),
+}
+
+/// What put a formula's input outside its domain, with the numbers ([`ModelError::OutOfDomain`]).
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum Domain {
+    /// The line-contact formulas asked of a pair that touches at a point: the two shapes.
+    #[error(
+        "{}–{} is a point contact; the line-contact formulas need a cylinder on a cylinder or on a plane",
+        .0[0], .0[1]
+    )]
+    PointContact([&'static str; 2]),
+    /// A force so small that the approach x(F) underflows.
+    #[error("force F = {force:e} N is too small: the approach x underflows to {approach:e} m")]
+    ForceTooSmall {
+        /// F, N.
+        force: f64,
+        /// x(F), m.
+        approach: f64,
+    },
+    /// An approach past the largest the line-contact formula gives.
+    #[error(
+        "approach x = {approach:e} m is beyond x = {x_limit:e} m, the largest approach the formula gives (at F = {f_limit:e} N); use a smaller approach"
+    )]
+    ApproachBeyondLimit {
+        /// x, m.
+        approach: f64,
+        /// The largest approach, m.
+        x_limit: f64,
+        /// The force there, N.
+        f_limit: f64,
+    },
+    /// The inversion F(x) found no positive force.
+    #[error(
+        "the Newton–bisection solve for F at x = {approach:e} m found no positive force (x too small to resolve)"
+    )]
+    NoForceAt {
+        /// x, m.
+        approach: f64,
+    },
+    /// A force at or past the line-contact formula's limit; `bound` says what sets the limit.
+    #[error(
+        "force F = {force:e} N is at or beyond the limit {limit:e} N ({bound}); the line-contact formula does not hold there — lower the force or the impact velocity, or use longer cylinders"
+    )]
+    ForceBeyondLimit {
+        /// F, N.
+        force: f64,
+        /// The limit, N.
+        limit: f64,
+        /// What bounds the formula there.
+        bound: &'static str,
+    },
+    /// An impact that reaches the formula's force limit before the contact yields.
+    #[error(
+        "an impact at v0 = {v0} m/s reaches the force limit {limit:e} N of the formula before the contact yields; lower impact.v0 or use longer cylinders"
+    )]
+    LimitBeforeYield {
+        /// v₀, m/s.
+        v0: f64,
+        /// The force limit, N.
+        limit: f64,
+    },
+    /// An impact energy beyond what eqs 13–14 store up to their force limit.
+    #[error("the impact energy {energy:e} J exceeds what the formulas store up to F = {limit:e} N")]
+    EnergyBeyondLimit {
+        /// ½·m·v₀², J.
+        energy: f64,
+        /// The force limit, N.
+        limit: f64,
+    },
+    /// No peak force stores the impact energy (the root search failed).
+    #[error("no peak force stores the impact energy")]
+    NoPeakForce,
+    /// The fitted exponent of a line contact outside the paper's 1 ≤ n ≤ 1.5.
+    #[error(
+        "the fit of eq 13/14 over {f_min:.4e}…{f_max:.4e} N gives n = {n:.4}, outside the paper's 1 ≤ n ≤ 1.5: the scene is near the end of the formulas' domain; lower impact.v0 or change the geometry"
+    )]
+    FitExponent {
+        /// Lower end of the fit range, N.
+        f_min: f64,
+        /// Upper end of the fit range, N.
+        f_max: f64,
+        /// The fitted n.
+        n: f64,
+    },
+    /// An impact whose F_max is past the force up to which eq 13/14 holds.
+    #[error(
+        "impact.v0 = {v0} m/s reaches F_max = {f_max:.4e} N, beyond the {limit:.4e} N up to which eq 13/14 holds (half-width b below the cylinder diameter); lower impact.v0"
+    )]
+    PeakBeyondLimit {
+        /// v₀, m/s.
+        v0: f64,
+        /// F_max, N.
+        f_max: f64,
+        /// The force limit, N.
+        limit: f64,
+    },
+    /// Thornton's law on a point contact whose exponent is not Hertz's 3/2.
+    #[error("on a point contact it is Hertz's sphere (n = 3/2), and these parameters have n = {n}")]
+    NotHertzExponent {
+        /// The parameters' n.
+        n: f64,
+    },
+    /// A yield velocity that is not finite and positive.
+    #[error("v_yield = {v_yield} m/s: the yield velocity must be finite and > 0")]
+    YieldVelocity {
+        /// v_y, m/s.
+        v_yield: f64,
+    },
+    /// An impact energy past what the law can store in double precision.
+    #[error("the impact energy ½·m·v₀² = {energy:e} J is beyond what the law can store in f64")]
+    EnergyBeyondF64 {
+        /// ½·m·v₀², J.
+        energy: f64,
+    },
+    /// Thornton's law without the bodies its yield velocity comes from.
+    #[error(
+        "its yield velocity comes from the yield stress and elastic constants of the bodies, and these parameters carry none (built without a scene); give v_y explicitly"
+    )]
+    YieldNeedsBodies,
+    /// The exact contact law without the bodies its equations come from.
+    #[error(
+        "it needs the bodies (the cylinders' eq 13/14, or a sphere's eq 1), and these parameters carry none (built without a scene)"
+    )]
+    ExactNeedsBodies,
+    /// A model index with no row in the law table.
+    #[error("no row for model index {0}")]
+    NoLawRow(usize),
+    /// A law without a damping parameter asked for one: its id.
+    #[error("{0} has no damping parameter")]
+    NoDampingParameter(&'static str),
+    /// A Hunt–Crossley-family row without a χ(e) rule: its id.
+    #[error("{0} is built as a Hunt–Crossley law but has no χ(e)")]
+    NoChiRule(&'static str),
+    /// Two bodies of infinite mass.
+    #[error("both bodies have infinite mass; give one of them a mass")]
+    InfiniteMasses,
 }
 
 /// Why the power-law fit F = a·xⁿ + c of a line contact (eq 13/14) failed, with its numbers.

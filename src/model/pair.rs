@@ -1,7 +1,7 @@
 //! Two bodies in contact: which contact law applies, reduced mass and radius, elastic factor.
 
 use super::body::{Body, Shape};
-use super::error::ModelError;
+use super::error::{Domain, ModelError};
 
 /// The supported combinations of shapes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -45,7 +45,7 @@ impl ContactPair {
         if !pair.reduced_mass().is_finite() {
             return Err(ModelError::OutOfDomain {
                 formula: "reduced mass",
-                detail: "both bodies have infinite mass; give one of them a mass".into(),
+                detail: Domain::InfiniteMasses,
             });
         }
         Ok(pair)

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use super::cylinder::{self, PowerFit};
-use super::error::{ModelError, require_positive};
+use super::error::{Domain, ModelError, require_positive};
 use super::force::Contact;
 use super::pair::ContactPair;
 use super::power_law::PowerLaw;
@@ -173,10 +173,11 @@ impl PairEstimate {
         if !(1.0..=1.5).contains(&fit.n) {
             return Err(ModelError::OutOfDomain {
                 formula: "line contact (eqs 11–14)",
-                detail: format!(
-                    "the fit of eq 13/14 over {:.4e}…{:.4e} N gives n = {:.4}, outside the paper's 1 ≤ n ≤ 1.5: the scene is near the end of the formulas' domain; lower impact.v0 or change the geometry",
-                    fit.f_min, fit.f_max, fit.n
-                ),
+                detail: Domain::FitExponent {
+                    f_min: fit.f_min,
+                    f_max: fit.f_max,
+                    n: fit.n,
+                },
             });
         }
         let law = PowerLaw::new(fit.a, fit.n)?;
@@ -185,9 +186,7 @@ impl PairEstimate {
         if f_max >= limit {
             return Err(ModelError::OutOfDomain {
                 formula: "line contact (eqs 11–14)",
-                detail: format!(
-                    "impact.v0 = {v0} m/s reaches F_max = {f_max:.4e} N, beyond the {limit:.4e} N up to which eq 13/14 holds (half-width b below the cylinder diameter); lower impact.v0"
-                ),
+                detail: Domain::PeakBeyondLimit { v0, f_max, limit },
             });
         }
         let pressure = cylinder::pressure_law(self.eta, self.radius, length);

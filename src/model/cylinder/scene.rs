@@ -1,6 +1,6 @@
 //! The force range an impact reaches, and the power-law fit over it (Table 2).
 
-use super::super::error::{FitFailure, ModelError, require_positive};
+use super::super::error::{Domain, FitFailure, ModelError, require_positive};
 use super::super::pair::ContactPair;
 use super::super::power_law::PowerLaw;
 use super::super::pressure::YIELD_FACTOR;
@@ -123,9 +123,6 @@ fn secant_law_max_force(
 fn beyond_domain(contact: &LineContact, v0: f64, limit: f64) -> ModelError {
     ModelError::OutOfDomain {
         formula: contact.formula(),
-        detail: format!(
-            "an impact at v0 = {v0} m/s reaches the force limit {limit:e} N of the formula \
-             before the contact yields; lower impact.v0 or use longer cylinders"
-        ),
+        detail: Domain::LimitBeforeYield { v0, limit },
     }
 }

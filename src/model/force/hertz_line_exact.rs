@@ -7,7 +7,7 @@ use lambert_w::lambert_wm1;
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{Contact, ForceModel, ImpactParams};
 use crate::model::cylinder::LineContact;
-use crate::model::error::ModelError;
+use crate::model::error::{Domain, ModelError};
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
 /// The elastic law of the contact: eqs 13–14 for cylinders, eq 1 for spheres.
@@ -109,9 +109,7 @@ impl HertzLineExact {
             Contact::Unspecified => {
                 return Err(ModelError::OutOfDomain {
                     formula: "exact contact law (eqs 1, 13–14)",
-                    detail: "it needs the bodies (the cylinders' eq 13/14, or a sphere's eq 1), \
-                             and these parameters carry none (built without a scene)"
-                        .into(),
+                    detail: Domain::ExactNeedsBodies,
                 });
             }
         };
