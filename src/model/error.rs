@@ -1,4 +1,5 @@
 //! Typed errors of the model layer. Every message names the field or the domain it is about.
+#![warn(missing_docs)]
 
 use thiserror::Error;
 
@@ -10,8 +11,11 @@ pub enum ModelError {
     /// A parameter is non-finite or outside its physical range.
     #[error("{field} must be {requirement}, got {value}")]
     InvalidParameter {
+        /// The dotted field, e.g. `body1.material.poisson_ratio`.
         field: String,
+        /// What the field must be, e.g. `in [0, 0.5)`.
         requirement: &'static str,
+        /// The value given.
         value: f64,
     },
     /// A pair of shapes the model has no contact law for: the two shapes' names, body 1's first.

@@ -1,4 +1,5 @@
 //! A resolved scene: two bodies with their materials and the impact conditions, SI units.
+#![warn(missing_docs)]
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -40,9 +41,13 @@ impl ImpactConditions {
 /// A scene with materials resolved and every value in SI units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    /// The scene's title.
     pub name: String,
+    /// The first body (the impactor in the paper's scenes).
     pub body1: Body,
+    /// The second body.
     pub body2: Body,
+    /// v₀, e and x_pl.
     pub impact: ImpactConditions,
 }
 
@@ -95,6 +100,7 @@ pub struct SceneBodies {
 }
 
 impl SceneBodies {
+    /// Evaluates what `scene`'s bodies fix.
     pub fn of(scene: &Scene) -> Self {
         SceneBodies {
             estimate: scene.pair().map(PairEstimate::new),

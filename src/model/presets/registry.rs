@@ -17,6 +17,7 @@ use crate::model::scene_file::{self, Document, View};
 /// Where a preset comes from.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Origin {
+    /// Shipped with hertz-tui (`presets/`).
     BuiltIn,
     /// A file in the user preset folder.
     User(PathBuf),
@@ -38,6 +39,7 @@ pub struct PresetInfo {
     pub name: String,
     /// The file's `description`, or empty.
     pub description: String,
+    /// Built-in or user.
     pub origin: Origin,
     /// A user preset that replaces a built-in of the same name.
     pub overrides_builtin: bool,
