@@ -4,9 +4,9 @@ use std::collections::BTreeMap;
 
 use toml::{Table, Value};
 
-use super::document::{Document, Problem, SceneFileError, join};
+use super::document::{Document, Problem, SceneFileError, ValueIssue, join};
 use super::schema::{
-    BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, SHAPES, shape_keys,
+    BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, shape_keys,
 };
 use super::view::View;
 use crate::model::body::{Body, Shape};
@@ -179,10 +179,7 @@ impl Decoder<'_> {
                     &shape_path,
                     Problem::BadValue {
                         key: shape_path.clone(),
-                        message: format!(
-                            "unknown shape \"{other}\" (expected one of: {})",
-                            SHAPES.join(", ")
-                        ),
+                        issue: ValueIssue::UnknownShape(other.to_string()),
                     },
                 ));
             }
@@ -233,16 +230,14 @@ impl Decoder<'_> {
         match body.get("material") {
             None => Err(self.missing(&path, " (a preset material name or an inline table)")),
             Some(Value::String(name)) => self.materials.get(name).cloned().ok_or_else(|| {
-                let known: Vec<&str> = self.materials.keys().map(String::as_str).collect();
                 self.doc.error(
                     &path,
                     Problem::BadValue {
                         key: path.clone(),
-                        message: format!(
-                            "unknown material \"{name}\" (known: {}; or give an inline table with the keys {})",
-                            known.join(", "),
-                            MATERIAL_KEYS.join(", ")
-                        ),
+                        issue: ValueIssue::UnknownMaterial {
+                            name: name.clone(),
+                            known: self.materials.keys().cloned().collect(),
+                        },
                     },
                 )
             }),
