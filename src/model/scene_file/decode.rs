@@ -36,7 +36,7 @@ impl Decoder<'_> {
         &self,
         path: &str,
         table: &Table,
-        allowed: &[&str],
+        allowed: &'static [&'static str],
     ) -> Result<(), SceneFileError> {
         match table.keys().find(|k| !allowed.contains(&k.as_str())) {
             Some(key) => {
@@ -45,7 +45,7 @@ impl Decoder<'_> {
                     &key,
                     Problem::UnknownKey {
                         key: key.clone(),
-                        allowed: allowed.join(", "),
+                        allowed,
                     },
                 ))
             }

@@ -78,8 +78,11 @@ pub enum ValueIssue {
 pub enum Problem {
     #[error("TOML syntax error: {0}")]
     Syntax(String),
-    #[error("unknown key `{key}` (allowed here: {allowed})")]
-    UnknownKey { key: String, allowed: String },
+    #[error("unknown key `{key}` (allowed here: {})", .allowed.join(", "))]
+    UnknownKey {
+        key: String,
+        allowed: &'static [&'static str],
+    },
     #[error("missing key `{key}`{why}")]
     MissingKey { key: String, why: String },
     #[error("`{key}` must be {expected}, found {found}")]
