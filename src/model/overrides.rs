@@ -27,8 +27,8 @@ pub struct Override {
 pub enum OverrideError {
     #[error("--set \"{0}\": expected KEY=VALUE, e.g. impact.v0=0.5")]
     Syntax(String),
-    #[error("--set {key}: unknown scene key (known keys: {known})")]
-    UnknownKey { key: String, known: String },
+    #[error("--set {key}: unknown scene key (known keys: {KNOWN_KEYS})")]
+    UnknownKey { key: String },
     #[error("--set {key}: {problem}")]
     BadValue { key: String, problem: ValueProblem },
 }
@@ -67,7 +67,6 @@ impl Override {
         if scene_file::key_kind(&path).is_none() {
             return Err(OverrideError::UnknownKey {
                 key: key.to_string(),
-                known: KNOWN_KEYS.to_string(),
             });
         }
         Ok(Override {
@@ -124,10 +123,8 @@ fn apply_one(
     materials: &BTreeMap<String, Material>,
 ) -> Result<(), OverrideError> {
     let path: Vec<&str> = o.key.split('.').collect();
-    let kind = scene_file::key_kind(&path).ok_or_else(|| OverrideError::UnknownKey {
-        key: o.key.clone(),
-        known: KNOWN_KEYS.to_string(),
-    })?;
+    let kind = scene_file::key_kind(&path)
+        .ok_or_else(|| OverrideError::UnknownKey { key: o.key.clone() })?;
     let value = parse_value(&o.key, &o.value, kind)?;
     let (parents, leaf) = path.split_at(path.len() - 1);
     let mut table = doc.table_mut();
