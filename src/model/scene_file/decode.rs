@@ -53,12 +53,12 @@ impl Decoder<'_> {
         }
     }
 
-    fn missing(&self, path: &str, why: &str) -> SceneFileError {
+    fn missing(&self, path: &str, why: &'static str) -> SceneFileError {
         self.doc.error(
             path,
             Problem::MissingKey {
                 key: path.to_string(),
-                why: why.to_string(),
+                why,
             },
         )
     }
@@ -113,7 +113,7 @@ impl Decoder<'_> {
         table: &Table,
         prefix: &str,
         key: &str,
-        why: &str,
+        why: &'static str,
     ) -> Result<f64, SceneFileError> {
         self.optional_number(table, prefix, key)?
             .ok_or_else(|| self.missing(&join(prefix, key), why))
@@ -167,11 +167,11 @@ impl Decoder<'_> {
         let shape_name = self.string(table, key, "shape")?;
         let shape = match shape_name {
             "sphere" => Shape::Sphere {
-                radius: self.geometry(table, key, "radius", shape_name)?,
+                radius: self.geometry(table, key, "radius", " (a sphere needs it)")?,
             },
             "cylinder" => Shape::Cylinder {
-                radius: self.geometry(table, key, "radius", shape_name)?,
-                length: self.geometry(table, key, "length", shape_name)?,
+                radius: self.geometry(table, key, "radius", " (a cylinder needs it)")?,
+                length: self.geometry(table, key, "length", " (a cylinder needs it)")?,
             },
             "plane" => Shape::Plane,
             other => {
@@ -206,20 +206,20 @@ impl Decoder<'_> {
     }
 
     /// A radius or length the body's shape needs; if missing, the error points at the `shape`
-    /// that asks for it (or at the `--set` that changed the shape).
+    /// that asks for it (or at the `--set` that changed the shape); `why` names that shape.
     fn geometry(
         &self,
         body: &Table,
         body_key: &str,
         field: &str,
-        shape: &str,
+        why: &'static str,
     ) -> Result<f64, SceneFileError> {
         self.optional_number(body, body_key, field)?.ok_or_else(|| {
             self.doc.error(
                 &join(body_key, "shape"),
                 Problem::MissingKey {
                     key: join(body_key, field),
-                    why: format!(" (a {shape} needs it)"),
+                    why,
                 },
             )
         })

@@ -84,7 +84,7 @@ pub enum Problem {
         allowed: &'static [&'static str],
     },
     #[error("missing key `{key}`{why}")]
-    MissingKey { key: String, why: String },
+    MissingKey { key: String, why: &'static str },
     #[error("`{key}` must be {expected}, found {found}")]
     WrongType {
         key: String,
