@@ -29,8 +29,16 @@ impl fmt::Display for MethodChoice {
     }
 }
 
+/// A method name that is neither `auto` nor an integrator's; the message lists those that are.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error(
+    "unknown method '{0}' (expected one of: auto, {methods})",
+    methods = Method::ALL.map(Method::name).join(", ")
+)]
+pub struct UnknownMethod(pub String);
+
 impl FromStr for MethodChoice {
-    type Err = String;
+    type Err = UnknownMethod;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         if s == "auto" {
@@ -38,7 +46,7 @@ impl FromStr for MethodChoice {
         } else {
             s.parse::<Method>()
                 .map(MethodChoice::Integrator)
-                .map_err(|e| e.replace("expected one of: ", "expected one of: auto, "))
+                .map_err(|_| UnknownMethod(s.to_string()))
         }
     }
 }

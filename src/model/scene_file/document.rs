@@ -10,6 +10,7 @@ use toml::{Table, Value};
 use super::schema::{MATERIAL_KEYS, SHAPES};
 use crate::model::error::ModelError;
 use crate::model::force::UnknownModel;
+use crate::model::impact::UnknownMethod;
 
 /// Where in its source a problem is.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -62,9 +63,9 @@ pub enum ValueIssue {
     /// An empty `models` list.
     #[error("lists no model (leave the key out for the paper's five)")]
     NoModels,
-    /// A solver method that does not parse: the solver's own message.
-    #[error("{0}")]
-    Method(String),
+    /// A solver method that is neither `auto` nor an integrator's.
+    #[error(transparent)]
+    UnknownMethod(#[from] UnknownMethod),
     /// A number outside its range.
     #[error("must be {requirement}, got {value}")]
     OutOfRange {

@@ -140,7 +140,7 @@ impl Decoder<'_> {
         if let Some(method) = self.optional_string(table, "solver", "method")? {
             options.method = method
                 .parse::<MethodChoice>()
-                .map_err(|e| bad("method", ValueIssue::Method(e)))?;
+                .map_err(|e| bad("method", e.into()))?;
         }
         if let Some(rtol) = self.optional_number(table, "solver", "rtol")? {
             if !(rtol > 0.0 && rtol < 1.0) {
