@@ -28,12 +28,6 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-/// mimalloc rather than the system allocator: the explorer's frame builds and drops its strings,
-/// spans and sample vectors every edit, and glibc's malloc and free took 9 % of an edit cycle's
-/// instructions. Set in the library so that the binary, the tests and the benches all run on it.
-#[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-
 pub mod chart;
 pub mod cli;
 pub mod format;

@@ -25,7 +25,7 @@ pub struct ChartDots {
 }
 
 /// Dots of t and of x between consecutive samples at most, on plots no taller for their width
-/// than [`REFERENCE_BEND`] says. The straight lines joining them stay within a fifth of a dot of
+/// than `REFERENCE_BEND` says. The straight lines joining them stay within a fifth of a dot of
 /// the curves on every law (tested against curves sampled 24 times as densely): an impact's
 /// curves are smooth between the extrema, which are samples of their own, and bend over tens of
 /// dots, so samples a dot apart were mostly spent where a line draws the same dots. Where they bend
@@ -56,7 +56,7 @@ impl ChartDots {
     };
 
     /// Dots between consecutive samples at most: [`STRIDE`], or closer on plots that bend their
-    /// curves more than [`REFERENCE_BEND`] (the tallest plot over the narrowest, conservatively).
+    /// curves more than `REFERENCE_BEND` (the tallest plot over the narrowest, conservatively).
     pub fn stride(self) -> f64 {
         let across = f64::from(self.time.min(self.approach).max(1));
         let bend = f64::from(self.high) / (across * across);

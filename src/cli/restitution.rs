@@ -71,7 +71,12 @@ fn render_csv(rows: &[RestitutionRow]) -> String {
                 row.model,
                 p.e_requested,
                 p.e_out.map_or(String::new(), |e| e.to_string()),
-                field(p.error.as_deref().unwrap_or(""))
+                field(
+                    &p.error
+                        .as_ref()
+                        .map(ToString::to_string)
+                        .unwrap_or_default()
+                )
             ));
         }
     }

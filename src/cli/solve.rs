@@ -4,6 +4,7 @@ use serde::Serialize;
 
 use super::args::{SceneSelection, SolveArgs};
 use super::error::CliError;
+use crate::format::recommendation;
 use crate::model::calibrate::scene_or_calibrated;
 use crate::model::force::Damping;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
@@ -239,7 +240,7 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
         recommendation: RecommendationRow {
             model: advice.model,
             fits: advice.fits,
-            why: advice.why,
+            why: recommendation::why(&advice.reason),
         },
         scene,
         quasistatic,

@@ -97,7 +97,7 @@ fn failures(row: &SweepRow) -> String {
 const PIECE: usize = 512;
 
 /// `--format csv`, streamed: pieces of points are solved and formatted on every core, each into a
-/// reused buffer, and written in order ([`write_in_order`]).
+/// reused buffer, and written in order (`write_in_order`).
 pub fn stream_csv(
     args: &SweepArgs,
     registry: &Registry,

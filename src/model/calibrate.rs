@@ -5,6 +5,7 @@
 //! ln((1 + χ)/(1 − χ·e_out)) = χ·(1 + e_out), whatever n, k, m and v₀. Thornton's law by inverting
 //! his closed-form e(V) (spheres) or its line-contact counterpart (a quadrature). Every other law with a damping parameter by a bracketed root of
 //! e_out(d) − e over solves at tight tolerance.
+#![warn(missing_docs)]
 
 use thiserror::Error;
 
@@ -28,23 +29,35 @@ const MAX_DOUBLINGS: usize = 80;
 /// Why a law could not be calibrated.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CalibrationError {
+    /// The law has no damping parameter (elastic Hertz, the exact line-contact law).
     #[error("{0} has no damping parameter to calibrate")]
     NoDamping(ForceModel),
+    /// No value of the damping parameter realises the requested e.
     #[error(
         "{model} cannot reach e = {target}: its realised e stays at {lowest:.6} or above ({symbol} up to {damping:.4e})"
     )]
     Unreachable {
+        /// The law.
         model: ForceModel,
+        /// The requested restitution.
         target: f64,
+        /// The lowest restitution the law realised.
         lowest: f64,
+        /// The damping parameter's symbol (α, b, P, …).
         symbol: &'static str,
+        /// The largest damping tried, in the parameter's SI unit.
         damping: f64,
     },
+    /// An impact solve inside the calibration failed.
     #[error("{model}: calibration solve failed at {symbol} = {damping:.4e}: {source}")]
     Solve {
+        /// The law.
         model: ForceModel,
+        /// The damping parameter's symbol.
         symbol: &'static str,
+        /// The damping the solve was at, in the parameter's SI unit.
         damping: f64,
+        /// Why the solve failed.
         #[source]
         source: ImpactError,
     },
@@ -53,7 +66,9 @@ pub enum CalibrationError {
 /// A calibrated law and what it realises.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Calibrated {
+    /// The law with its calibrated damping, ready for [`solve_law`].
     pub law: AnyLaw,
+    /// The calibrated damping parameter: its symbol, value and unit.
     pub damping: Damping,
     /// The realised restitution of the calibrated law (at the calibration's tolerance).
     pub e_out: f64,
@@ -105,6 +120,33 @@ pub fn hunt_crossley_chi(e: f64) -> Option<f64> {
 }
 
 /// The law `model` with its damping calibrated so that e_out equals `params.restitution`.
+///
+/// Hunt–Crossley on the paper's Fig. 5 scene, whose own rule χ = 3(1 − e)/2 gives 0.712 for the
+/// requested e = 0.6; calibrated, its χ solves ln((1 + χ)/(1 − χ·e)) = χ·(1 + e)
+/// (docs/physics.md §6.4) and the impact rebounds at 0.6:
+///
+/// ```
+/// use hertz_tui::model::ForceModel;
+/// use hertz_tui::model::calibrate::calibrate;
+/// use hertz_tui::model::impact::{SolveOptions, solve_impact, solve_law};
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let params = scene.impact_params(&scene.quasistatic()?);
+/// let options = SolveOptions::default();
+/// assert_eq!(params.restitution, 0.6);
+///
+/// let own_rule = solve_impact(ForceModel::HuntCrossley, &params, &options)?.summary.e_out;
+/// assert!((own_rule - 0.712).abs() < 1e-3);
+///
+/// let calibrated = calibrate(ForceModel::HuntCrossley, &params)?;
+/// assert_eq!(calibrated.damping.param.symbol, "χ");
+/// let (e, chi) = (0.6, calibrated.damping.value);
+/// assert!((((1.0 + chi) / (1.0 - chi * e)).ln() - chi * (1.0 + e)).abs() < 1e-9);
+/// let e_out = solve_law(&calibrated.law, &options)?.summary.e_out;
+/// assert!((e_out - 0.6).abs() < 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated, CalibrationError> {
     let target = params.restitution;
     let Some(param) = model.spec().damping else {

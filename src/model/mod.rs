@@ -1,4 +1,16 @@
-//! The model layer: contact mechanics and impact dynamics in SI units. Knows nothing of the UI.
+//! The model layer: contact mechanics and impact dynamics in SI units. Knows nothing of the UI,
+//! the command line or charts (`tests/architecture.rs` fails the build if it imports them), and
+//! words no text for them: errors carry their numbers and fields, results are data.
+//!
+//! Used as a library, its entry points are:
+//! - a scene: [`presets::Registry::scene`] (or [`scene_file::parse_scene`]), its quasistatic
+//!   estimate [`Scene::quasistatic`] (eqs 1–14) and the solver's inputs [`Scene::impact_params`];
+//! - solving an impact: [`impact::solve_impact`];
+//! - calibrating a law to a requested restitution: [`calibrate::calibrate`];
+//! - the restitution each law realises: [`restitution::table`];
+//! - contact parameters for a simulation engine: [`engine::translate`].
+//!
+//! Each has an example that runs as a test.
 
 pub mod body;
 pub mod calibrate;

@@ -27,10 +27,30 @@ pub struct Override {
 pub enum OverrideError {
     #[error("--set \"{0}\": expected KEY=VALUE, e.g. impact.v0=0.5")]
     Syntax(String),
-    #[error("--set {key}: unknown scene key (known keys: {known})")]
-    UnknownKey { key: String, known: String },
-    #[error("--set {key}: {message}")]
-    BadValue { key: String, message: String },
+    #[error("--set {key}: unknown scene key (known keys: {KNOWN_KEYS})")]
+    UnknownKey { key: String },
+    #[error("--set {key}: {problem}")]
+    BadValue { key: String, problem: ValueProblem },
+}
+
+/// What is wrong with an override's value.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ValueProblem {
+    /// A numeric key given text that does not parse as a number.
+    #[error("\"{0}\" is not a number (e.g. 0.5, 2e11, 2.3e-6)")]
+    NotANumber(String),
+    /// A shape that is not one of the scene schema's.
+    #[error("unknown shape \"{0}\" (expected one of: sphere, cylinder, plane)")]
+    UnknownShape(String),
+    /// A material given as an inline table that TOML does not read; TOML's reason when it has one.
+    #[error("not a valid inline table{}", .0.as_ref().map(|r| format!(": {r}")).unwrap_or_default())]
+    NotAnInlineTable(Option<String>),
+    /// A field set inside a material named by a preset that does not exist.
+    #[error("the body's material \"{name}\" is not a known material (known: {})", .known.join(", "))]
+    UnknownMaterial { name: String, known: Vec<String> },
+    /// A field set inside a key that holds a value, not a table.
+    #[error("cannot set a field inside `{part}`, which is a {found}")]
+    NotATable { part: String, found: &'static str },
 }
 
 /// Every key `--set` accepts, for messages.
@@ -47,7 +67,6 @@ impl Override {
         if scene_file::key_kind(&path).is_none() {
             return Err(OverrideError::UnknownKey {
                 key: key.to_string(),
-                known: KNOWN_KEYS.to_string(),
             });
         }
         Ok(Override {
@@ -91,10 +110,10 @@ pub fn apply(
     Ok(())
 }
 
-fn bad_value(key: &str, message: impl Into<String>) -> OverrideError {
+fn bad_value(key: &str, problem: ValueProblem) -> OverrideError {
     OverrideError::BadValue {
         key: key.to_string(),
-        message: message.into(),
+        problem,
     }
 }
 
@@ -104,10 +123,8 @@ fn apply_one(
     materials: &BTreeMap<String, Material>,
 ) -> Result<(), OverrideError> {
     let path: Vec<&str> = o.key.split('.').collect();
-    let kind = scene_file::key_kind(&path).ok_or_else(|| OverrideError::UnknownKey {
-        key: o.key.clone(),
-        known: KNOWN_KEYS.to_string(),
-    })?;
+    let kind = scene_file::key_kind(&path)
+        .ok_or_else(|| OverrideError::UnknownKey { key: o.key.clone() })?;
     let value = parse_value(&o.key, &o.value, kind)?;
     let (parents, leaf) = path.split_at(path.len() - 1);
     let mut table = doc.table_mut();
@@ -129,19 +146,14 @@ fn parse_value(key: &str, raw: &str, kind: KeyKind) -> Result<Value, OverrideErr
         .and_then(|r| r.strip_suffix('"'))
         .unwrap_or(raw);
     match kind {
-        KeyKind::Number => unquoted.parse::<f64>().map(Value::Float).map_err(|_| {
-            bad_value(
-                key,
-                format!("\"{raw}\" is not a number (e.g. 0.5, 2e11, 2.3e-6)"),
-            )
-        }),
+        KeyKind::Number => unquoted
+            .parse::<f64>()
+            .map(Value::Float)
+            .map_err(|_| bad_value(key, ValueProblem::NotANumber(raw.to_string()))),
         KeyKind::Text => Ok(Value::String(unquoted.to_string())),
         KeyKind::Shape => {
             if !scene_file::SHAPES.contains(&unquoted) {
-                Err(bad_value(
-                    key,
-                    format!("unknown shape \"{raw}\" (expected one of: sphere, cylinder, plane)"),
-                ))
+                Err(bad_value(key, ValueProblem::UnknownShape(raw.to_string())))
             } else {
                 Ok(Value::String(unquoted.to_string()))
             }
@@ -150,14 +162,12 @@ fn parse_value(key: &str, raw: &str, kind: KeyKind) -> Result<Value, OverrideErr
         KeyKind::Material if unquoted.trim_start().starts_with('{') => {
             let wrapped = format!("material = {unquoted}");
             let mut table: Table = wrapped.parse().map_err(|e: toml::de::Error| {
-                bad_value(
-                    key,
-                    format!("not a valid inline table: {}", e.message().trim()),
-                )
+                let reason = e.message().trim().to_string();
+                bad_value(key, ValueProblem::NotAnInlineTable(Some(reason)))
             })?;
             table
                 .remove("material")
-                .ok_or_else(|| bad_value(key, "not a valid inline table"))
+                .ok_or_else(|| bad_value(key, ValueProblem::NotAnInlineTable(None)))
         }
         KeyKind::Material => Ok(Value::String(unquoted.to_string())),
     }
@@ -177,14 +187,11 @@ fn descend<'t>(
         .or_insert_with(|| Value::Table(Table::new()));
     if let (true, Value::String(name)) = (is_material, &*slot) {
         let material = materials.get(name).ok_or_else(|| {
-            let known: Vec<&str> = materials.keys().map(String::as_str).collect();
-            bad_value(
-                key,
-                format!(
-                    "the body's material \"{name}\" is not a known material (known: {})",
-                    known.join(", ")
-                ),
-            )
+            let problem = ValueProblem::UnknownMaterial {
+                name: name.clone(),
+                known: materials.keys().cloned().collect(),
+            };
+            bad_value(key, problem)
         })?;
         *slot = Value::Table(material_table(material));
     }
@@ -192,10 +199,10 @@ fn descend<'t>(
         Value::Table(t) => Ok(t),
         other => Err(bad_value(
             key,
-            format!(
-                "cannot set a field inside `{part}`, which is a {}",
-                other.type_str()
-            ),
+            ValueProblem::NotATable {
+                part: part.to_string(),
+                found: other.type_str(),
+            },
         )),
     }
 }
@@ -326,6 +333,44 @@ plastic_indentation = 2.3e-6
             err,
             "test.toml (--set body1.material.poisson_ratio): body1.material.poisson_ratio must be in [0, 0.5), got 0.7"
         );
+    }
+
+    #[test]
+    fn value_problems_carry_the_key_and_what_was_given() {
+        let apply_one = |set: &str| {
+            let mut doc = Document::parse("test.toml", SCENE).unwrap();
+            apply(&mut doc, &[set.parse().unwrap()], &catalog()).unwrap_err()
+        };
+        assert_eq!(
+            apply_one("impact.v0=fast"),
+            OverrideError::BadValue {
+                key: "impact.v0".into(),
+                problem: ValueProblem::NotANumber("fast".into()),
+            }
+        );
+        // A field of a material named by no preset: the name and the known ones, as data.
+        let mut doc = Document::parse("test.toml", SCENE).unwrap();
+        let sets: Vec<Override> = ["body1.material=nope", "body1.material.density=3"]
+            .iter()
+            .map(|s| s.parse().unwrap())
+            .collect();
+        assert_eq!(
+            apply(&mut doc, &sets, &catalog()).unwrap_err(),
+            OverrideError::BadValue {
+                key: "body1.material.density".into(),
+                problem: ValueProblem::UnknownMaterial {
+                    name: "nope".into(),
+                    known: vec!["aluminium-alloy".into(), "steel".into()],
+                },
+            }
+        );
+        assert!(matches!(
+            apply_one("body1.material={ name = "),
+            OverrideError::BadValue {
+                problem: ValueProblem::NotAnInlineTable(Some(_)),
+                ..
+            }
+        ));
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! Two bodies in contact: which contact law applies, reduced mass and radius, elastic factor.
 
 use super::body::{Body, Shape};
-use super::error::ModelError;
+use super::error::{Domain, ModelError};
 
 /// The supported combinations of shapes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -39,13 +39,13 @@ impl ContactPair {
             (Sphere { .. }, Plane) | (Plane, Sphere { .. }) => PairKind::SpherePlane,
             (Cylinder { .. }, Cylinder { .. }) => PairKind::CylinderCylinder,
             (Cylinder { .. }, Plane) | (Plane, Cylinder { .. }) => PairKind::CylinderPlane,
-            (a, b) => return Err(ModelError::UnsupportedPair(format!("{a}–{b}"))),
+            (a, b) => return Err(ModelError::UnsupportedPair([a.name(), b.name()])),
         };
         let pair = ContactPair { body1, body2, kind };
         if !pair.reduced_mass().is_finite() {
             return Err(ModelError::OutOfDomain {
                 formula: "reduced mass",
-                detail: "both bodies have infinite mass; give one of them a mass".into(),
+                detail: Domain::InfiniteMasses,
             });
         }
         Ok(pair)

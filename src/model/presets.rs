@@ -2,6 +2,7 @@
 //!
 //! A preset's name is its file stem in kebab-case. User presets override built-ins of the same name;
 //! a user preset that does not parse is skipped with a warning instead of failing everything.
+#![warn(missing_docs)]
 
 mod builtin;
 mod error;

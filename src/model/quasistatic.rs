@@ -1,9 +1,10 @@
 //! The quasistatic Hertz estimate of an impact (the paper's §2–3, Tables 1–2).
+#![warn(missing_docs)]
 
 use serde::Serialize;
 
 use super::cylinder::{self, PowerFit};
-use super::error::{ModelError, require_positive};
+use super::error::{Domain, ModelError, require_positive};
 use super::force::Contact;
 use super::pair::ContactPair;
 use super::power_law::PowerLaw;
@@ -15,9 +16,17 @@ use super::sphere;
 #[serde(untagged)]
 pub enum ContactGeometry {
     /// Sphere contact: radius of the circular contact area at F_max, m (eq 8).
-    Point { contact_radius: f64 },
+    Point {
+        /// a, m.
+        contact_radius: f64,
+    },
     /// Cylinder contact: half-width of the strip at F_max, m (eq 11), and the fitted law.
-    Line { half_width: f64, fit: PowerFit },
+    Line {
+        /// b, m.
+        half_width: f64,
+        /// The power law F = a·xⁿ + c fitted to eq 13/14.
+        fit: PowerFit,
+    },
 }
 
 /// Everything the quasistatic model says about one impact, SI units.
@@ -27,15 +36,22 @@ pub struct Quasistatic {
     pub eta: f64,
     /// k of F = k·xⁿ used downstream, N/mⁿ (eq 2, or the fitted a for cylinders).
     pub k: f64,
+    /// n of F = k·xⁿ (3/2 for spheres, the fitted n for cylinders).
     pub n: f64,
+    /// Reduced mass m, kg (eq 4).
     pub reduced_mass: f64,
+    /// Maximum approach x_max at v₀, m (eq 5).
     pub x_max: f64,
+    /// Peak force F_max at v₀, N (eq 6).
     pub f_max: f64,
+    /// Contact time t_c at v₀, s (eq 7).
     pub t_contact: f64,
     /// Maximum pressure p₀ at F_max, Pa (eq 9 or 12).
     pub p_max: f64,
+    /// The velocities at which yield begins and becomes fully plastic, and the wave limit.
     #[serde(flatten)]
     pub onset: YieldOnset,
+    /// The contact area at F_max.
     #[serde(flatten)]
     pub geometry: ContactGeometry,
     /// The bodies as the laws that need more than k and n see them (force::Contact).
@@ -52,6 +68,7 @@ impl Quasistatic {
         }
     }
 
+    /// The yield regime of an impact at `v0`: elastic, yield begins, or fully plastic (§2).
     pub fn regime(&self, v0: f64) -> Regime {
         self.onset.regime(v0)
     }
@@ -90,6 +107,7 @@ enum PairLaw {
 }
 
 impl PairEstimate {
+    /// The part of the estimate that `pair` alone fixes.
     pub fn new(pair: ContactPair) -> Self {
         let eta = pair.elastic_factor();
         let radius = pair.reduced_radius();
@@ -173,10 +191,11 @@ impl PairEstimate {
         if !(1.0..=1.5).contains(&fit.n) {
             return Err(ModelError::OutOfDomain {
                 formula: "line contact (eqs 11–14)",
-                detail: format!(
-                    "the fit of eq 13/14 over {:.4e}…{:.4e} N gives n = {:.4}, outside the paper's 1 ≤ n ≤ 1.5: the scene is near the end of the formulas' domain; lower impact.v0 or change the geometry",
-                    fit.f_min, fit.f_max, fit.n
-                ),
+                detail: Domain::FitExponent {
+                    f_min: fit.f_min,
+                    f_max: fit.f_max,
+                    n: fit.n,
+                },
             });
         }
         let law = PowerLaw::new(fit.a, fit.n)?;
@@ -185,9 +204,7 @@ impl PairEstimate {
         if f_max >= limit {
             return Err(ModelError::OutOfDomain {
                 formula: "line contact (eqs 11–14)",
-                detail: format!(
-                    "impact.v0 = {v0} m/s reaches F_max = {f_max:.4e} N, beyond the {limit:.4e} N up to which eq 13/14 holds (half-width b below the cylinder diameter); lower impact.v0"
-                ),
+                detail: Domain::PeakBeyondLimit { v0, f_max, limit },
             });
         }
         let pressure = cylinder::pressure_law(self.eta, self.radius, length);

@@ -39,33 +39,75 @@ pub fn faithful_hysteresis_laws(e: f64) -> Vec<(ForceModel, f64)> {
         .collect()
 }
 
-/// The hysteresis law for `e` and the clause saying why: the first faithful one, or Hunt–Crossley
-/// calibrated; `others` are the rest of the faithful ones.
-fn hysteresis_choice(e: f64) -> (ForceModel, Vec<ForceModel>, String) {
+/// How the hysteresis law for a requested restitution was chosen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HysteresisChoice {
+    /// `model`'s χ(e) rule realises `realised` for the requested `restitution`, within
+    /// [`RESTITUTION_TOLERANCE`].
+    Faithful {
+        model: ForceModel,
+        realised: f64,
+        restitution: f64,
+    },
+    /// No χ(e) rule realises `restitution`: Hunt–Crossley calibrated to it, with the calibrated χ
+    /// (`None` where the calibration has no root).
+    Calibrated { restitution: f64, chi: Option<f64> },
+}
+
+impl HysteresisChoice {
+    /// The recommended law of this choice.
+    pub fn model(&self) -> ForceModel {
+        match *self {
+            HysteresisChoice::Faithful { model, .. } => model,
+            HysteresisChoice::Calibrated { .. } => ForceModel::HuntCrossley,
+        }
+    }
+}
+
+/// The hysteresis law for `e`: the first faithful one, or Hunt–Crossley calibrated; the second
+/// value is the rest of the faithful ones.
+fn hysteresis_choice(e: f64) -> (HysteresisChoice, Vec<ForceModel>) {
     let faithful = faithful_hysteresis_laws(e);
     match faithful.first() {
         Some(&(model, realised)) => (
-            model,
+            HysteresisChoice::Faithful {
+                model,
+                realised,
+                restitution: e,
+            },
             faithful.iter().skip(1).map(|&(m, _)| m).collect(),
-            format!(
-                "{} realises e = {} for e = {} (within {} %)",
-                model.label(),
-                short(realised),
-                short(e),
-                RESTITUTION_TOLERANCE * 100.0
-            ),
         ),
         None => (
-            ForceModel::HuntCrossley,
+            HysteresisChoice::Calibrated {
+                restitution: e,
+                chi: hunt_crossley_chi(e),
+            },
             Vec::new(),
-            format!(
-                "no χ(e) rule realises e = {} within {} %: calibrate Hunt–Crossley (χ = {}, solve --calibrate)",
-                short(e),
-                RESTITUTION_TOLERANCE * 100.0,
-                hunt_crossley_chi(e).map_or("?".into(), |chi| format!("{chi:.4}"))
-            ),
         ),
     }
+}
+
+/// Which case of the paper's guidance a scene falls in, with the numbers that decided it. The
+/// edges word it (`format::recommendation`); the model only decides.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Reason {
+    /// p₀ < 1.1·σ_y and e = 1: elastic Hertz (eq 1) is the whole story.
+    Lossless,
+    /// p₀ < 1.1·σ_y and v₀ ≤ 10⁻⁵·√(E/ρ): no yield, no dent; dry friction (eq 15) adds the loss
+    /// of `restitution` if it matters.
+    NoYieldNoDent { restitution: f64 },
+    /// p₀ < 1.1·σ_y but v₀ > 10⁻⁵·√(E/ρ): losses are likely, carried by the dissipative models.
+    NoYieldLossesLikely,
+    /// p₀ ≥ 2.8·σ_y: fully plastic, beyond Hertz theory; the proposed model extrapolates least.
+    FullyPlastic,
+    /// p₀ ≥ 1.1·σ_y and x_pl > 0: the surface keeps a dent, the proposed model (eq 18) leaves it.
+    DentKept,
+    /// p₀ ≥ 1.1·σ_y, v₀ ≤ 10⁻⁵·√(E/ρ) and x_pl = 0: loss without a dent, dry friction (eq 15).
+    LossWithoutDent,
+    /// p₀ ≥ 1.1·σ_y, e ≥ [`NEAR_ELASTIC_RESTITUTION`], x_pl = 0: small losses, hysteresis damping.
+    SmallLosses(HysteresisChoice),
+    /// p₀ ≥ 1.1·σ_y, v₀ > 10⁻⁵·√(E/ρ), e far from 1, x_pl = 0: a law that realises e.
+    LargeLosses(HysteresisChoice),
 }
 
 /// The model a scene needs, the models that fit its regime, and the reason.
@@ -78,10 +120,8 @@ pub struct Recommendation {
     pub model: ForceModel,
     /// Models valid in this regime, the recommended one first.
     pub fits: Vec<ForceModel>,
-    /// The gist, for narrow screens.
-    pub gist: &'static str,
-    /// Why, in one line.
-    pub why: String,
+    /// Why this model: the case of the guidance, with its numbers.
+    pub reason: Reason,
 }
 
 /// The recommendation for `scene`, whose quasistatic estimate is `quasistatic`.
@@ -95,101 +135,54 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
     let hysteresis = [ForceModel::LankaraniNikravesh, ForceModel::HuntCrossley];
     // Thornton's elastic–plastic law also leaves a dent, on spheres and cylinders (docs/physics.md §6.6).
     let thornton = ForceModel::with_id("thornton");
-    let (model, others, gist, why): (ForceModel, Vec<ForceModel>, &'static str, String) =
-        match regime {
-            Regime::Elastic if lossless => (
-                ForceModel::Quasistatic,
-                Vec::new(),
-                "nothing yields or is lost",
-                "p₀ < 1.1·σ_y and e = 1: nothing yields and nothing is lost, elastic Hertz (eq 1) \
-                 is the whole story"
-                    .into(),
-            ),
-            Regime::Elastic if within_wave_limit => (
-                ForceModel::Quasistatic,
-                vec![ForceModel::DryFriction],
-                "no yield, no dent",
-                format!(
-                    "p₀ < 1.1·σ_y and v₀ ≤ 10⁻⁵·√(E/ρ): no yield, no dent; elastic Hertz (eq 1) \
-                     gives the force, dry friction (eq 15, §4.1) adds the loss e = {} if it matters",
-                    short(e)
-                ),
-            ),
-            Regime::Elastic => (
-                ForceModel::Quasistatic,
-                [ForceModel::DryFriction]
-                    .into_iter()
-                    .chain(hysteresis)
-                    .collect(),
-                "no yield; losses likely",
-                "p₀ < 1.1·σ_y: elastic Hertz (eq 1) gives the force, but v₀ > 10⁻⁵·√(E/ρ): \
-                 expect losses, which the dissipative models (eqs 15, 19, 20) carry"
-                    .into(),
-            ),
-            Regime::FullyPlastic => (
-                ForceModel::Proposed,
-                Vec::new(),
-                "beyond Hertz: all extrapolate",
-                "p₀ ≥ 2.8·σ_y: fully plastic, beyond Hertz theory: every model extrapolates; the \
-                 proposed model (eq 18), with its permanent indentation, least"
-                    .into(),
-            ),
-            Regime::YieldBegins if x_pl > 0.0 => (
-                ForceModel::Proposed,
-                std::iter::once(thornton).chain(hysteresis).collect(),
-                "yield begins, a dent is kept",
-                "p₀ ≥ 1.1·σ_y: yield begins and the given x_pl > 0 says the surface keeps a dent: \
-                 the proposed model (eq 18, §4.2) leaves it and exits near v₀e"
-                    .into(),
-            ),
-            Regime::YieldBegins if within_wave_limit => (
-                ForceModel::DryFriction,
-                hysteresis.to_vec(),
-                "loss without a dent",
-                "p₀ ≥ 1.1·σ_y, but v₀ ≤ 10⁻⁵·√(E/ρ) and x_pl = 0: energy is lost without a dent, \
-                 as dry friction (eq 15, §4.1) models it"
-                    .into(),
-            ),
-            Regime::YieldBegins if near_elastic => {
-                let (model, others, clause) = hysteresis_choice(e);
-                (
-                    model,
-                    others.into_iter().chain([ForceModel::Proposed]).collect(),
-                    "small losses",
-                    format!(
-                        "p₀ ≥ 1.1·σ_y with e close to 1 and x_pl = 0: small losses, which hysteresis \
-                         damping was derived for; {clause}"
-                    ),
-                )
-            }
-            Regime::YieldBegins => {
-                let (model, others, clause) = hysteresis_choice(e);
-                (
-                    model,
-                    others.into_iter().chain([ForceModel::Proposed]).collect(),
-                    "large losses: faithful e",
-                    format!(
-                        "p₀ ≥ 1.1·σ_y and v₀ > 10⁻⁵·√(E/ρ) with e far from 1: {clause}; for the \
-                         dent this regime leaves, give x_pl > 0 (the proposed model, eq 18)"
-                    ),
-                )
-            }
-        };
+    let (model, others, reason): (ForceModel, Vec<ForceModel>, Reason) = match regime {
+        Regime::Elastic if lossless => (ForceModel::Quasistatic, Vec::new(), Reason::Lossless),
+        Regime::Elastic if within_wave_limit => (
+            ForceModel::Quasistatic,
+            vec![ForceModel::DryFriction],
+            Reason::NoYieldNoDent { restitution: e },
+        ),
+        Regime::Elastic => (
+            ForceModel::Quasistatic,
+            [ForceModel::DryFriction]
+                .into_iter()
+                .chain(hysteresis)
+                .collect(),
+            Reason::NoYieldLossesLikely,
+        ),
+        Regime::FullyPlastic => (ForceModel::Proposed, Vec::new(), Reason::FullyPlastic),
+        Regime::YieldBegins if x_pl > 0.0 => (
+            ForceModel::Proposed,
+            std::iter::once(thornton).chain(hysteresis).collect(),
+            Reason::DentKept,
+        ),
+        Regime::YieldBegins if within_wave_limit => (
+            ForceModel::DryFriction,
+            hysteresis.to_vec(),
+            Reason::LossWithoutDent,
+        ),
+        Regime::YieldBegins => {
+            let (choice, others) = hysteresis_choice(e);
+            let reason = if near_elastic {
+                Reason::SmallLosses(choice)
+            } else {
+                Reason::LargeLosses(choice)
+            };
+            (
+                choice.model(),
+                others.into_iter().chain([ForceModel::Proposed]).collect(),
+                reason,
+            )
+        }
+    };
     let fits = std::iter::once(model).chain(others).collect();
     Recommendation {
         regime,
         within_wave_limit,
         model,
         fits,
-        gist,
-        why,
+        reason,
     }
-}
-
-/// A restitution as the reason prints it: up to three significant digits.
-fn short(e: f64) -> String {
-    let text = format!("{e:.3}");
-    text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 #[cfg(test)]
@@ -233,8 +226,7 @@ mod tests {
             fig4.fits,
             [ForceModel::Quasistatic, ForceModel::DryFriction]
         );
-        assert!(fig4.why.contains("10⁻⁵·√(E/ρ)"), "{}", fig4.why);
-        assert!(fig4.why.contains("e = 0.9"), "{}", fig4.why);
+        assert_eq!(fig4.reason, Reason::NoYieldNoDent { restitution: 0.9 });
     }
 
     #[test]
@@ -246,7 +238,7 @@ mod tests {
         assert!(!fig5.fits.contains(&ForceModel::Quasistatic));
         assert!(fig5.fits.contains(&ForceModel::HuntCrossley));
         assert!(fig5.fits.contains(&ForceModel::with_id("thornton")));
-        assert!(fig5.why.contains("dent"), "{}", fig5.why);
+        assert_eq!(fig5.reason, Reason::DentKept);
     }
 
     #[test]
@@ -261,11 +253,16 @@ mod tests {
         let near_elastic = at(0.2, 0.95, 0.0);
         assert_eq!(near_elastic.model, ForceModel::HuntCrossley);
         assert!(near_elastic.fits.contains(&ForceModel::LankaraniNikravesh));
-        assert!(
-            near_elastic.why.contains("realises e = 0.952 for e = 0.95"),
-            "{}",
-            near_elastic.why
-        );
+        let Reason::SmallLosses(HysteresisChoice::Faithful {
+            model,
+            realised,
+            restitution,
+        }) = near_elastic.reason
+        else {
+            panic!("{:?}", near_elastic.reason);
+        };
+        assert_eq!((model, restitution), (ForceModel::HuntCrossley, 0.95));
+        assert!((realised - 0.9524).abs() < 5e-5, "{realised}");
         // Past the wave limit with a small e and no dent given: a law of the family whose rule
         // realises e (Gonthier's 0.304 for 0.3, where the paper's two give 0.581 and 0.684), the
         // proposed model for a dent.
@@ -275,18 +272,29 @@ mod tests {
         assert_eq!(lossy.model, faithful[0].0);
         assert_eq!(lossy.model.name(), "gonthier");
         assert!((faithful[0].1 / 0.3 - 1.0).abs() <= RESTITUTION_TOLERANCE);
-        assert!(lossy.why.contains("x_pl > 0"), "{}", lossy.why);
+        assert!(
+            matches!(
+                lossy.reason,
+                Reason::LargeLosses(HysteresisChoice::Faithful { model, .. }) if model == lossy.model
+            ),
+            "{:?}",
+            lossy.reason
+        );
         assert!(lossy.fits.contains(&ForceModel::Proposed));
         // Where no rule is faithful (at 0.5 the nearest, Gonthier's and Hu–Guo's, give 0.488),
         // Hunt–Crossley calibrated.
         assert!(faithful_hysteresis_laws(0.5).is_empty());
         let half = at(0.2, 0.5, 0.0);
         assert_eq!(half.model, ForceModel::HuntCrossley);
-        assert!(
-            half.why.contains("calibrate Hunt–Crossley (χ = 1.4328,"),
-            "{}",
-            half.why
-        );
+        let Reason::LargeLosses(HysteresisChoice::Calibrated {
+            restitution,
+            chi: Some(chi),
+        }) = half.reason
+        else {
+            panic!("{:?}", half.reason);
+        };
+        assert_eq!(restitution, 0.5);
+        assert!((chi - 1.4328).abs() < 5e-5, "{chi}");
     }
 
     #[test]
@@ -294,7 +302,7 @@ mod tests {
         let fast = at(1.0, 0.6, 2.3e-6);
         assert_eq!(fast.regime, Regime::FullyPlastic);
         assert_eq!(fast.fits, [ForceModel::Proposed]);
-        assert!(fast.why.contains("beyond Hertz"));
+        assert_eq!(fast.reason, Reason::FullyPlastic);
     }
 
     #[test]
@@ -304,7 +312,6 @@ mod tests {
                 for x_pl in [0.0, 1e-6] {
                     let r = at(v0, e, x_pl);
                     assert_eq!(r.fits[0], r.model, "v0 {v0} e {e} x_pl {x_pl}");
-                    assert!(!r.why.is_empty());
                     let mut unique = r.fits.clone();
                     unique.sort();
                     unique.dedup();

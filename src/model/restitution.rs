@@ -1,5 +1,6 @@
 //! Realised against requested restitution, per law (docs/physics.md §6.4): each law's damping is
 //! set from the requested e by its own rule, and the impact says what e it really gives.
+#![warn(missing_docs)]
 
 use serde::Serialize;
 
@@ -14,16 +15,32 @@ pub const REQUESTED: [f64; 5] = [0.1, 0.3, 0.5, 0.7, 0.9];
 /// One requested e and what the law gives for it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RestitutionPoint {
+    /// The requested e the law's damping was set from.
     pub e_requested: f64,
     /// v_out/v₀, `None` when the solve failed.
     pub e_out: Option<f64>,
-    pub error: Option<String>,
+    /// Why the solve failed, `None` when it did not (JSON writes its message).
+    #[serde(serialize_with = "as_message")]
+    pub error: Option<ImpactError>,
+}
+
+/// An error as its message, for JSON.
+fn as_message<S: serde::Serializer>(
+    error: &Option<ImpactError>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    match error {
+        Some(e) => serializer.collect_str(e),
+        None => serializer.serialize_none(),
+    }
 }
 
 /// One law's realised e over the requested values.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RestitutionRow {
+    /// The law.
     pub model: ForceModel,
+    /// One point per requested e, in the order asked.
     pub points: Vec<RestitutionPoint>,
 }
 
@@ -42,6 +59,33 @@ pub fn realised(
 }
 
 /// The realised e of every model in `models` for every requested value.
+///
+/// Hunt–Crossley's rule χ = 3(1 − e)/2 (eq 19) realises, by its exact unloading relation
+/// ([`hunt_crossley_restitution`](crate::model::calibrate::hunt_crossley_restitution),
+/// docs/physics.md §6.4), 0.581 where 0.3 is asked; the solved table agrees:
+///
+/// ```
+/// use hertz_tui::model::ForceModel;
+/// use hertz_tui::model::calibrate::hunt_crossley_restitution;
+/// use hertz_tui::model::impact::SolveOptions;
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+/// use hertz_tui::model::restitution::{REQUESTED, table};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let params = scene.impact_params(&scene.quasistatic()?);
+/// let models = [ForceModel::Quasistatic, ForceModel::HuntCrossley];
+/// let rows = table(&models, &params, &REQUESTED, &SolveOptions::default());
+///
+/// // Elastic Hertz ignores the request: e_out = 1 throughout.
+/// assert!(rows[0].points.iter().all(|p| (p.e_out.unwrap() - 1.0).abs() < 1e-9));
+/// for point in &rows[1].points {
+///     let exact = hunt_crossley_restitution(1.5 * (1.0 - point.e_requested));
+///     assert!((point.e_out.unwrap() - exact).abs() < 1e-6, "{point:?}");
+/// }
+/// assert_eq!(rows[1].points[1].e_requested, 0.3);
+/// assert!((rows[1].points[1].e_out.unwrap() - 0.581).abs() < 1e-3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn table(
     models: &[ForceModel],
     params: &ImpactParams,
@@ -63,7 +107,7 @@ pub fn table(
                     Err(err) => RestitutionPoint {
                         e_requested: e,
                         e_out: None,
-                        error: Some(err.to_string()),
+                        error: Some(err),
                     },
                 })
                 .collect(),

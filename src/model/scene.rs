@@ -1,4 +1,5 @@
 //! A resolved scene: two bodies with their materials and the impact conditions, SI units.
+#![warn(missing_docs)]
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -21,6 +22,7 @@ pub struct ImpactConditions {
 
 impl ImpactConditions {
     /// Checks v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0 (0: no permanent deformation); field names are `impact.…`.
+    /// The one check of these inputs: [`ImpactParams::validate`] calls it too.
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("impact.v0", self.v0)?;
         require("impact.restitution", self.restitution, "in (0, 1]", |e| {
@@ -39,9 +41,13 @@ impl ImpactConditions {
 /// A scene with materials resolved and every value in SI units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    /// The scene's title.
     pub name: String,
+    /// The first body (the impactor in the paper's scenes).
     pub body1: Body,
+    /// The second body.
     pub body2: Body,
+    /// v₀, e and x_pl.
     pub impact: ImpactConditions,
 }
 
@@ -94,6 +100,7 @@ pub struct SceneBodies {
 }
 
 impl SceneBodies {
+    /// Evaluates what `scene`'s bodies fix.
     pub fn of(scene: &Scene) -> Self {
         SceneBodies {
             estimate: scene.pair().map(PairEstimate::new),
@@ -129,12 +136,7 @@ fn require_finite_results(q: &Quasistatic) -> Result<(), ModelError> {
     ];
     match values.iter().find(|(_, v)| !(v.is_finite() && *v > 0.0)) {
         None => Ok(()),
-        Some((name, value)) => Err(ModelError::OutOfDomain {
-            formula: "quasistatic estimate",
-            detail: format!(
-                "{name} = {value} is out of double-precision range; check the units of v0, radii, masses and moduli"
-            ),
-        }),
+        Some(&(quantity, value)) => Err(ModelError::EstimateOutOfRange { quantity, value }),
     }
 }
 
@@ -255,7 +257,15 @@ pub(crate) mod tests {
     fn overflowing_inputs_are_an_error_not_infinity() {
         let mut scene = fig5_scene();
         scene.impact.v0 = 1e200;
-        let err = scene.quasistatic().unwrap_err().to_string();
+        let err = scene.quasistatic().unwrap_err();
+        assert_eq!(
+            err,
+            ModelError::EstimateOutOfRange {
+                quantity: "x_max",
+                value: f64::INFINITY
+            }
+        );
+        let err = err.to_string();
         assert!(
             err.starts_with("quasistatic estimate: x_max = inf is out of double-precision range"),
             "{err}"

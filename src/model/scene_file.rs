@@ -12,7 +12,7 @@ mod view;
 mod write;
 
 pub use decode::{decode_material, decode_scene, decode_view, parse_scene};
-pub use document::{Document, Location, Problem, SceneFileError};
+pub use document::{Document, Location, Problem, SceneFileError, ValueIssue};
 pub(crate) use schema::{KeyKind, SHAPES, key_kind, shape_keys};
 pub use view::{PAPER_MODELS, SceneView};
 pub use write::{to_toml, to_toml_with_view, toml_float};

@@ -115,7 +115,7 @@ impl SceneKey {
                     (BodyField::Length, Shape::Cylinder { length, .. }) => *length = value,
                     (BodyField::Radius | BodyField::Length, shape) => {
                         return Err(SceneKeyError::NotApplicable {
-                            key: self.path(),
+                            key: self,
                             shape: shape.name(),
                         });
                     }
@@ -203,7 +203,7 @@ pub enum SceneKeyError {
     )]
     Unknown(String),
     #[error("{key} does not apply: the body is a {shape}")]
-    NotApplicable { key: String, shape: &'static str },
+    NotApplicable { key: SceneKey, shape: &'static str },
 }
 
 #[cfg(test)]

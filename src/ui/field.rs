@@ -3,7 +3,7 @@
 //! Numeric fields are the model's [`SceneKey`]s; the UI adds units, display prefixes and steps.
 
 use crate::model::body::Shape;
-use crate::model::impact::{MethodChoice, SolveOptions};
+use crate::model::impact::{MethodChoice, SolveOptions, UnknownMethod};
 use crate::model::ode::Method;
 use crate::model::scene::Scene;
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
@@ -318,7 +318,10 @@ impl Field {
                 Ok(())
             }
             Field::Method => {
-                draft.options.method = text.trim().parse()?;
+                draft.options.method = text
+                    .trim()
+                    .parse()
+                    .map_err(|e: UnknownMethod| e.to_string())?;
                 Ok(())
             }
             Field::Rtol => {

@@ -218,7 +218,12 @@ fn the_recommendation_offers_it_where_cylinders_keep_a_dent() {
     let q = scene.quasistatic().unwrap();
     let advice = hertz_tui::model::recommend::recommend(&scene, &q);
     assert!(advice.fits.contains(&THORNTON), "{:?}", advice.fits);
-    assert!(advice.why.contains("dent"), "{}", advice.why);
+    assert_eq!(
+        advice.reason,
+        hertz_tui::model::recommend::Reason::DentKept,
+        "{:?}",
+        advice.reason
+    );
 }
 
 #[test]

@@ -134,9 +134,16 @@ fn builtin_materials_have_the_papers_values() {
         ),
         (7e10, 0.33, 340e6, 2700.0)
     );
-    let err = registry.material("titanium").unwrap_err().to_string();
+    let err = registry.material("titanium").unwrap_err();
     assert_eq!(
         err,
+        PresetError::UnknownMaterial {
+            name: "titanium".into(),
+            known: vec!["aluminium-alloy".into(), "steel".into()],
+        }
+    );
+    assert_eq!(
+        err.to_string(),
         "unknown material \"titanium\" (materials: aluminium-alloy, steel)"
     );
 }

@@ -5,10 +5,13 @@ use std::fs;
 use std::path::PathBuf;
 
 use hertz_tui::model::ForceModel;
+use hertz_tui::model::force::UnknownModel;
 use hertz_tui::model::impact::{MethodChoice, SolveOptions};
 use hertz_tui::model::ode::Method;
 use hertz_tui::model::presets::{Registry, SaveTarget};
-use hertz_tui::model::scene_file::{Document, PAPER_MODELS, SceneView, decode_view, parse_scene};
+use hertz_tui::model::scene_file::{
+    Document, PAPER_MODELS, Problem, SceneView, ValueIssue, decode_view, parse_scene,
+};
 
 /// A valid scene file without a view; tests add lines after line 1 (so `models` is on line 2).
 const SCENE: &str = r#"name = "view test"
@@ -134,6 +137,43 @@ fn bad_views_are_refused_at_their_line() {
         let got = view_of(&text).unwrap_err();
         assert!(got.starts_with(want), "got {got}\nwant {want}…");
     }
+}
+
+#[test]
+fn bad_view_values_carry_what_was_given() {
+    let issue = |text: &str| {
+        let err = Document::parse("test.toml", text)
+            .and_then(|doc| decode_view(&doc))
+            .unwrap_err();
+        match err.problem {
+            Problem::BadValue { key, issue } => (key, issue),
+            other => panic!("{other:?}"),
+        }
+    };
+    assert_eq!(
+        issue(&with_models("", "[solver]\nrtol = 2\n")),
+        (
+            "solver.rtol".to_string(),
+            ValueIssue::OutOfRange {
+                requirement: "> 0 and < 1",
+                value: 2.0
+            }
+        )
+    );
+    assert_eq!(
+        issue(&with_models("models = [\"proposed\", \"proposed\"]", "")),
+        (
+            "models".to_string(),
+            ValueIssue::ListedTwice("proposed".into())
+        )
+    );
+    assert_eq!(
+        issue(&with_models("models = [\"elastic\"]", "")),
+        (
+            "models".to_string(),
+            ValueIssue::UnknownModel(UnknownModel("elastic".into()))
+        )
+    );
 }
 
 #[test]

@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::super::body::Shape;
-use super::super::error::{ModelError, require_positive};
+use super::super::error::{Domain, ModelError, require_positive};
 use super::super::pair::{ContactPair, PairKind};
 use super::root;
 
@@ -50,12 +50,10 @@ impl LineContact {
             }),
             _ => Err(ModelError::OutOfDomain {
                 formula: "eqs 13–14 (line contact)",
-                detail: format!(
-                    "{}–{} is a point contact; the line-contact formulas need a cylinder on a \
-                     cylinder or on a plane",
-                    pair.body1().shape,
-                    pair.body2().shape
-                ),
+                detail: Domain::PointContact([
+                    pair.body1().shape.name(),
+                    pair.body2().shape.name(),
+                ]),
             }),
         }
     }
@@ -195,9 +193,10 @@ impl LineContact {
         } else {
             Err(ModelError::OutOfDomain {
                 formula: self.formula(),
-                detail: format!(
-                    "force F = {f:e} N is too small: the approach x underflows to {x:e} m"
-                ),
+                detail: Domain::ForceTooSmall {
+                    force: f,
+                    approach: x,
+                },
             })
         }
     }
@@ -211,10 +210,11 @@ impl LineContact {
         if x >= x_limit {
             return Err(ModelError::OutOfDomain {
                 formula: self.formula(),
-                detail: format!(
-                    "approach x = {x:e} m is beyond x = {x_limit:e} m, the largest approach the \
-                     formula gives (at F = {f_limit:e} N); use a smaller approach"
-                ),
+                detail: Domain::ApproachBeyondLimit {
+                    approach: x,
+                    x_limit,
+                    f_limit,
+                },
             });
         }
         // x(F)/F decreases (x is concave), so the secant through the domain's end starts at or
@@ -230,10 +230,7 @@ impl LineContact {
         .filter(|f| *f > 0.0)
         .ok_or_else(|| ModelError::OutOfDomain {
             formula: self.formula(),
-            detail: format!(
-                "the Newton–bisection solve for F at x = {x:e} m found no positive force \
-                 (x too small to resolve)"
-            ),
+            detail: Domain::NoForceAt { approach: x },
         })
     }
 
@@ -247,7 +244,7 @@ impl LineContact {
 
     /// The error for a force at or beyond the domain limit, saying what bounds it.
     pub(super) fn force_out_of_domain(&self, f: f64, limit: f64) -> ModelError {
-        let reason = match self {
+        let bound = match self {
             LineContact::TwoCylinders { .. } => {
                 "where the half-width b of eq 11 reaches the smaller cylinder diameter 2R or \
                  x(F) stops increasing"
@@ -256,11 +253,11 @@ impl LineContact {
         };
         ModelError::OutOfDomain {
             formula: self.formula(),
-            detail: format!(
-                "force F = {f:e} N is at or beyond the limit {limit:e} N ({reason}); the \
-                 line-contact formula does not hold there — lower the force or the impact \
-                 velocity, or use longer cylinders"
-            ),
+            detail: Domain::ForceBeyondLimit {
+                force: f,
+                limit,
+                bound,
+            },
         }
     }
 }

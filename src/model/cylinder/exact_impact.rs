@@ -9,7 +9,7 @@
 use serde::Serialize;
 
 use super::approach::LineContact;
-use crate::model::error::ModelError;
+use crate::model::error::{Domain, ModelError};
 use crate::model::exact::quadrature::tanh_sinh;
 use crate::model::numeric::roots::brent;
 use crate::model::power_law::PowerLaw;
@@ -61,16 +61,13 @@ pub fn line_contact_impact(
     if stored(0.0, limit) <= energy {
         return Err(ModelError::OutOfDomain {
             formula: "eqs 13–14 (line contact)",
-            detail: format!(
-                "the impact energy {energy:e} J exceeds what the formulas store up to F = {limit:e} N"
-            ),
+            detail: Domain::EnergyBeyondLimit { energy, limit },
         });
     }
-    let f_max =
-        brent(|f| stored(0.0, f) - energy, 0.0, limit).ok_or_else(|| ModelError::OutOfDomain {
-            formula: "eqs 13–14 (line contact)",
-            detail: "no peak force stores the impact energy".into(),
-        })?;
+    let f_max = brent(|f| stored(0.0, f) - energy, 0.0, limit).ok_or(ModelError::OutOfDomain {
+        formula: "eqs 13–14 (line contact)",
+        detail: Domain::NoPeakForce,
+    })?;
     let x_max = line.approach_unchecked(f_max);
     let t_contact = 2.0
         * tanh_sinh(

@@ -2,7 +2,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::super::error::{ModelError, require_positive};
+use super::super::error::{FitFailure, ModelError, require_positive};
 use super::super::pair::ContactPair;
 use super::PowerFit;
 use super::approach::LineContact;
@@ -40,10 +40,11 @@ pub(super) fn fit_line_contact(
     require_positive("fit range f_min", f_min)?;
     require_positive("fit range f_max", f_max)?;
     if f_max < MIN_RANGE_RATIO * f_min {
-        return Err(ModelError::FitFailed(format!(
-            "the force range [{f_min:e}, {f_max:e}] N is too narrow; f_max must be at least \
-             {MIN_RANGE_RATIO}·f_min to determine a, n and c"
-        )));
+        return Err(ModelError::FitFailed(FitFailure::RangeTooNarrow {
+            f_min,
+            f_max,
+            ratio: MIN_RANGE_RATIO,
+        }));
     }
     let limit = contact.force_limit();
     if f_max >= limit {
@@ -173,10 +174,13 @@ impl Samples {
         if [a, n, c, max_rel_error].iter().all(|v| v.is_finite()) && a > 0.0 {
             Ok(fit)
         } else {
-            Err(ModelError::FitFailed(format!(
-                "the fit over [{f_min:e}, {f_max:e}] N gave a = {a:e}, n = {n}, c = {c:e}; \
-                 the stiffness a must be finite and positive"
-            )))
+            Err(ModelError::FitFailed(FitFailure::BadStiffness {
+                f_min,
+                f_max,
+                a,
+                n,
+                c,
+            }))
         }
     }
 }
@@ -186,9 +190,7 @@ fn levenberg_marquardt(samples: &Samples) -> Result<Params, ModelError> {
     let mut p = samples.log_log_start();
     let mut cost = samples.cost(&p);
     if !cost.is_finite() {
-        return Err(ModelError::FitFailed(
-            "the log-log starting guess is not finite".into(),
-        ));
+        return Err(ModelError::FitFailed(FitFailure::StartNotFinite));
     }
     let mut lambda = 1e-3;
     for _ in 0..MAX_ITERATIONS {
@@ -220,9 +222,9 @@ fn levenberg_marquardt(samples: &Samples) -> Result<Params, ModelError> {
             Some(_) => {}
         }
     }
-    Err(ModelError::FitFailed(format!(
-        "Levenberg–Marquardt did not converge in {MAX_ITERATIONS} iterations"
-    )))
+    Err(ModelError::FitFailed(FitFailure::NotConverged {
+        iterations: MAX_ITERATIONS,
+    }))
 }
 
 #[cfg(test)]
@@ -339,10 +341,20 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(msg.starts_with("fit range f_max must be"), "{msg}");
-        let msg = fit_line_contact(&contact, 1e3, 1.2e3)
-            .unwrap_err()
-            .to_string();
-        assert!(msg.contains("too narrow"), "{msg}");
+        let err = fit_line_contact(&contact, 1e3, 1.2e3).unwrap_err();
+        assert_eq!(
+            err,
+            ModelError::FitFailed(FitFailure::RangeTooNarrow {
+                f_min: 1e3,
+                f_max: 1.2e3,
+                ratio: MIN_RANGE_RATIO
+            })
+        );
+        assert_eq!(
+            err.to_string(),
+            "power-law fit F = a·xⁿ + c failed: the force range [1e3, 1.2e3] N is too narrow; f_max \
+             must be at least 1.5·f_min to determine a, n and c"
+        );
         let msg = fit_line_contact(&contact, 1e3, 1e12)
             .unwrap_err()
             .to_string();

@@ -1,6 +1,6 @@
 //! The force range an impact reaches, and the power-law fit over it (Table 2).
 
-use super::super::error::{ModelError, require_positive};
+use super::super::error::{Domain, FitFailure, ModelError, require_positive};
 use super::super::pair::ContactPair;
 use super::super::power_law::PowerLaw;
 use super::super::pressure::YIELD_FACTOR;
@@ -58,10 +58,11 @@ pub fn scene_fit(pair: &ContactPair, v0: f64) -> Result<PowerFit, ModelError> {
         let law = PowerLaw { k: fit.a, n: fit.n };
         let next_top = law.max_force(mass, v0).min(yield_force);
         if !next_top.is_finite() || next_top <= 0.0 {
-            return Err(ModelError::FitFailed(format!(
-                "the fitted law a = {:e}, n = {} gives no finite F_max at v0 = {v0} m/s",
-                fit.a, fit.n
-            )));
+            return Err(ModelError::FitFailed(FitFailure::NoFiniteMaxForce {
+                a: fit.a,
+                n: fit.n,
+                v0,
+            }));
         }
         if (next_top / top - 1.0).abs() < RANGE_TOLERANCE {
             return Ok(fit);
@@ -79,11 +80,10 @@ pub fn scene_fit(pair: &ContactPair, v0: f64) -> Result<PowerFit, ModelError> {
     };
     let settled = brent(mismatch, ceiling * 1e-6, ceiling)
         .and_then(|top| fit_line_contact(&contact, FIT_RANGE_LOWER_FRACTION * top, top).ok());
-    settled.ok_or_else(|| {
-        ModelError::FitFailed(format!(
-            "the fit range did not settle at v0 = {v0} m/s: no force F with F_max(fit over [F/10, F]) = F below {ceiling:e} N"
-        ))
-    })
+    settled.ok_or(ModelError::FitFailed(FitFailure::RangeUnsettled {
+        v0,
+        ceiling,
+    }))
 }
 
 /// F_max of an impact at v₀ under the power law through the two ends of its own range
@@ -123,9 +123,6 @@ fn secant_law_max_force(
 fn beyond_domain(contact: &LineContact, v0: f64, limit: f64) -> ModelError {
     ModelError::OutOfDomain {
         formula: contact.formula(),
-        detail: format!(
-            "an impact at v0 = {v0} m/s reaches the force limit {limit:e} N of the formula \
-             before the contact yields; lower impact.v0 or use longer cylinders"
-        ),
+        detail: Domain::LimitBeforeYield { v0, limit },
     }
 }

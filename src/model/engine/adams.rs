@@ -17,6 +17,7 @@ use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
 use crate::model::power_law::PowerLaw;
 
+/// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
     id: "adams",
     name: "Adams / MotionSolve (IMPACT)",

@@ -16,6 +16,7 @@ use super::error::EngineError;
 use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
 
+/// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
     id: "chrono",
     name: "Project Chrono (SMC, Hertz)",

@@ -26,6 +26,7 @@ pub enum EndRule {
 }
 
 impl EndRule {
+    /// The rule as a translation states it.
     pub fn describe(self) -> &'static str {
         match self {
             EndRule::Clamp => "F ≥ 0 clamp: contact ends where F falls to 0",
@@ -39,11 +40,24 @@ impl EndRule {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum EngineDamping {
     /// k·xⁿ·α·ẋ: the Hunt–Crossley family (eq 19), α in s/m.
-    HuntCrossley { alpha: f64 },
+    HuntCrossley {
+        /// α, s/m.
+        alpha: f64,
+    },
     /// c·x^p·ẋ: linear (p = 0) or Tsuji's Hertzian (p = 1/4) viscous damping, c in N·s/m^{1+p}.
-    Viscous { c: f64, p: f64 },
+    Viscous {
+        /// c, N·s/m^{1+p}.
+        c: f64,
+        /// The exponent p of x.
+        p: f64,
+    },
     /// c_max·STEP(x; 0, 0, d, 1)·ẋ: Adams' IMPACT damping, reaching c_max (N·s/m) at penetration d.
-    Step { c_max: f64, depth: f64 },
+    Step {
+        /// c_max, N·s/m.
+        c_max: f64,
+        /// Penetration d at which the damping reaches c_max, m.
+        depth: f64,
+    },
 }
 
 /// One engine's normal contact law: F = k·xⁿ plus `damping`, ending by `end`.
@@ -51,7 +65,9 @@ pub enum EngineDamping {
 pub struct ContactLaw {
     /// Elastic law F = k·xⁿ.
     pub elastic: PowerLaw,
+    /// The dissipative part.
     pub damping: EngineDamping,
+    /// How contact ends.
     pub end: EndRule,
 }
 

@@ -17,6 +17,7 @@ use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, rea
 use crate::model::Shape;
 use crate::model::power_law::PowerLaw;
 
+/// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
     id: "drake",
     name: "Drake (compliant point contact)",

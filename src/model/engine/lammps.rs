@@ -15,6 +15,7 @@ use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Translation, shown};
 use crate::model::Shape;
 
+/// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
     id: "lammps",
     name: "LAMMPS (granular, damping coeff_restitution)",

@@ -13,6 +13,7 @@ use super::error::EngineError;
 use super::{Engine, EngineScene, Parameter, Translation, lammps, realise, shown, tsuji};
 use crate::model::numeric::roots::brent;
 
+/// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
     id: "lammps-tsuji",
     name: "LAMMPS (granular, damping tsuji)",

@@ -5,6 +5,7 @@
 //! engine's law is written as a [`contact::ContactLaw`] and solved by hertz-tui itself, so the
 //! translation states what the engine will really give: realised restitution at v₀ and over a
 //! range of v₀, peak force, contact time and the largest stable explicit step.
+#![warn(missing_docs)]
 
 use serde::Serialize;
 
@@ -33,10 +34,13 @@ pub use error::EngineError;
 /// One engine: its `--engine` id, its name, and how it translates a scene.
 #[derive(Debug, Clone, Copy)]
 pub struct Engine {
+    /// The `--engine` id, e.g. `drake`.
     pub id: &'static str,
+    /// The engine's name, e.g. `Drake`.
     pub name: &'static str,
     /// The documentation or source file its law was read from.
     pub source: &'static str,
+    /// Its translation of a scene.
     pub translate: fn(&EngineScene) -> Result<Translation, EngineError>,
 }
 
@@ -62,6 +66,34 @@ pub fn find(id: &str) -> Result<&'static Engine, EngineError> {
 }
 
 /// Translates `scene` for the engine `id`.
+///
+/// Drake's Hunt–Crossley point contact for the paper's Fig. 5 scene: its stiffness is chosen so
+/// that π·√(m/k) is the Hertz contact time (k = k₁/2, Drake combining two equal geometries), and
+/// its dissipation so that the engine's law, solved here, rebounds at the scene's e = 0.6:
+///
+/// ```
+/// use std::f64::consts::PI;
+///
+/// use hertz_tui::model::engine::translate;
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let hertz = scene.quasistatic()?;
+/// let drake = translate("drake", &scene)?;
+///
+/// let k1 = drake
+///     .parameters
+///     .iter()
+///     .find(|p| p.name == "point_contact_stiffness")
+///     .map(|p| p.value)
+///     .unwrap();
+/// let k = k1 / 2.0;
+/// assert!((PI * (hertz.reduced_mass / k).sqrt() / hertz.t_contact - 1.0).abs() < 1e-9);
+/// assert_eq!(drake.e_requested, 0.6);
+/// assert!((drake.realised.e_out - 0.6).abs() < 1e-8);
+/// assert!(drake.fragments[0].text.contains(&drake.parameters[0].text()));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
     let engine = find(id)?;
     (engine.translate)(&EngineScene::new(scene)?)
@@ -70,9 +102,11 @@ pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
 /// What every engine needs of a scene, SI units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EngineScene {
+    /// The scene itself.
     pub scene: Scene,
     /// Reduced mass m, kg (eq 4).
     pub mass: f64,
+    /// Impact velocity v₀, m/s.
     pub v0: f64,
     /// The requested restitution e.
     pub restitution: f64,
@@ -82,13 +116,16 @@ pub struct EngineScene {
     pub e_star: f64,
     /// Reduced radius R, m (eq 2; ∞ for two planes).
     pub r_star: f64,
+    /// Whether the pair touches at a point (spheres), as most engines' laws assume.
     pub point_contact: bool,
-    /// Elastic contact time and maximum approach at v₀ (eqs 5, 7).
+    /// Elastic contact time at v₀, s (eq 7).
     pub t_contact: f64,
+    /// Elastic maximum approach at v₀, m (eq 5).
     pub x_max: f64,
 }
 
 impl EngineScene {
+    /// The engines' view of `scene`, from its quasistatic estimate; fails as that does.
     pub fn new(scene: &Scene) -> Result<Self, ModelError> {
         let quasistatic = scene.quasistatic()?;
         let pair = scene.pair()?;
@@ -146,12 +183,14 @@ pub struct Parameter {
     pub name: &'static str,
     /// The value printed in the fragment (rounded to 10 significant digits).
     pub value: f64,
+    /// Its SI unit, as the engine documents it.
     pub unit: &'static str,
     /// How it was obtained.
     pub rule: String,
 }
 
 impl Parameter {
+    /// A parameter with `value` rounded as the fragment prints it ([`pasteable`]).
     pub fn new(
         name: &'static str,
         value: f64,
@@ -190,34 +229,45 @@ pub struct Fragment {
     pub title: &'static str,
     /// Its language, for a fenced block: xml, cpp, python, text.
     pub language: &'static str,
+    /// The input itself.
     pub text: String,
 }
 
 /// The realised restitution at one impact velocity.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct VelocityPoint {
+    /// Impact velocity, m/s.
     pub v0: f64,
+    /// Realised restitution v_out/v₀ of the engine's law.
     pub e_out: f64,
 }
 
 /// The translation of a scene for one engine.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Translation {
+    /// The engine's id ([`Engine::id`]).
     pub engine: &'static str,
+    /// The engine's name.
     pub name: &'static str,
+    /// Where its law was read ([`Engine::source`]).
     pub source: &'static str,
     /// The engine's law with its parameters, in words.
     pub law: String,
     /// The same law among hertz-tui's.
     pub hertz_tui_law: String,
+    /// How the engine's contact ends.
     pub end_rule: EndRule,
     /// Where the translation approximates the engine (`None`: the engine's law exactly).
     pub approximation: Option<String>,
+    /// The engine's parameters, as it takes them.
     pub parameters: Vec<Parameter>,
+    /// Ready-to-paste input.
     pub fragments: Vec<Fragment>,
     /// Assumptions and caveats.
     pub notes: Vec<String>,
+    /// The scene's impact velocity, m/s.
     pub v0: f64,
+    /// The scene's requested restitution.
     pub e_requested: f64,
     /// What the engine's law gives at the scene's v₀.
     pub realised: EngineImpact,

@@ -19,6 +19,7 @@ use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
 use crate::model::power_law::PowerLaw;
 
+/// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
     id: "simbody",
     name: "Simbody / OpenSim (HuntCrossleyForce)",

@@ -74,7 +74,9 @@ pub fn family_id(end: EndRule) -> &'static str {
 
 /// How one engine of this family takes the law.
 pub struct Family {
+    /// The engine.
     pub engine: &'static Engine,
+    /// How its contact ends.
     pub end: EndRule,
     /// The engine's name for its restitution input.
     pub parameter: &'static str,

@@ -8,7 +8,7 @@ use super::law::ForceLaw;
 pub use super::table::AnyLaw;
 use super::table::DampingParam;
 use super::{ForceModel, ImpactParams};
-use crate::model::error::{ModelError, require};
+use crate::model::error::{Domain, ModelError, require};
 use crate::model::numeric::beta::beta;
 
 /// Something done with a law of a concrete type (the solver monomorphises on it).
@@ -52,7 +52,7 @@ macro_rules! law_table {
                 )*
                 Err($crate::model::error::ModelError::OutOfDomain {
                     formula: "law table",
-                    detail: format!("no row for model index {}", model.index()),
+                    detail: $crate::model::error::Domain::NoLawRow(model.index()),
                 })
             }
 
@@ -208,7 +208,7 @@ impl AnyLaw {
         let Some(param) = model.spec().damping else {
             return Err(ModelError::OutOfDomain {
                 formula: "damping parameter",
-                detail: format!("{model} has no damping parameter"),
+                detail: Domain::NoDampingParameter(model.name()),
             });
         };
         require(param.symbol, value, "a finite number ≥ 0", |d| d >= 0.0)?;

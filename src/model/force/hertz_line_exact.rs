@@ -6,9 +6,8 @@ use lambert_w::lambert_wm1;
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{Contact, ForceModel, ImpactParams};
-use crate::format::{Zeros, scientific};
 use crate::model::cylinder::LineContact;
-use crate::model::error::ModelError;
+use crate::model::error::{Domain, ModelError};
 use crate::model::exact::{ExactImpact, elastic::elastic};
 
 /// The elastic law of the contact: eqs 13–14 for cylinders, eq 1 for spheres.
@@ -99,15 +98,10 @@ impl HertzLineExact {
                 let limit = line.force_limit();
                 let energy = 0.5 * params.mass * params.v0 * params.v0;
                 if log_linear.energy(limit) <= energy {
-                    return Err(ModelError::OutOfDomain {
-                        formula: "eqs 13–14 (line contact)",
-                        detail: format!(
-                            "the impact energy {} J exceeds the {} J the formulas store up to \
-                             F = {} N, where they stop holding; lower impact.v0",
-                            sci(energy),
-                            sci(log_linear.energy(limit)),
-                            sci(limit)
-                        ),
+                    return Err(ModelError::LineContactEnergy {
+                        energy,
+                        stored: log_linear.energy(limit),
+                        force_limit: limit,
                     });
                 }
                 Some(log_linear)
@@ -115,9 +109,7 @@ impl HertzLineExact {
             Contact::Unspecified => {
                 return Err(ModelError::OutOfDomain {
                     formula: "exact contact law (eqs 1, 13–14)",
-                    detail: "it needs the bodies (the cylinders' eq 13/14, or a sphere's eq 1), \
-                             and these parameters carry none (built without a scene)"
-                        .into(),
+                    detail: Domain::ExactNeedsBodies,
                 });
             }
         };
@@ -201,11 +193,6 @@ impl ForceLaw for HertzLineExact {
     fn exact(&self, _rtol: f64) -> Option<ExactImpact> {
         self.line.is_none().then(|| elastic(&self.params))
     }
-}
-
-/// `value` in 4 significant digits, scientific, for messages.
-fn sci(value: f64) -> String {
-    scientific(value, 4, Zeros::Trim)
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{ForceModel, ImpactParams};
-use crate::model::error::{ModelError, require_positive};
+use crate::model::error::{Domain, ModelError, require_positive};
 use crate::model::exact::{ExactImpact, hysteresis::hysteresis};
 
 /// F = k·xⁿ·(1 + α·ẋ) with α from the restitution e and v₀.
@@ -59,7 +59,7 @@ impl Hysteresis {
             (None, None) => {
                 return Err(ModelError::OutOfDomain {
                     formula: "law table",
-                    detail: format!("{model} is built as a Hunt–Crossley law but has no χ(e)"),
+                    detail: Domain::NoChiRule(model.name()),
                 });
             }
         };

@@ -6,8 +6,9 @@ use std::str::FromStr;
 
 use serde::Serialize;
 
-use super::error::{ModelError, require, require_positive};
+use super::error::{ModelError, require_positive};
 use super::power_law::PowerLaw;
+use super::scene::ImpactConditions;
 
 pub mod any;
 pub mod contact;
@@ -49,22 +50,14 @@ pub struct ImpactParams {
 }
 
 impl ImpactParams {
-    /// Checks m > 0, a valid power law (k > 0, n ≥ 1), v₀ > 0, 0 < e ≤ 1, x_pl ≥ 0, all finite, and
+    /// Checks m > 0, a valid power law (k > 0, n ≥ 1), the impact conditions (v₀ > 0, 0 < e ≤ 1,
+    /// x_pl ≥ 0, all finite: [`ImpactConditions::validate`]), the contact, and
     /// that the elastic scales x_max, x_max/v₀ and F_max are finite and non-zero (they scale the
     /// solver; t_c is x_max/v₀ times a constant of n).
     pub fn validate(&self) -> Result<(), ModelError> {
         require_positive("mass", self.mass)?;
         PowerLaw::new(self.law.k, self.law.n)?;
-        require_positive("impact.v0", self.v0)?;
-        require("impact.restitution", self.restitution, "in (0, 1]", |e| {
-            e > 0.0 && e <= 1.0
-        })?;
-        require(
-            "impact.plastic_indentation",
-            self.plastic_indentation,
-            "a finite number ≥ 0",
-            |x| x >= 0.0,
-        )?;
+        self.conditions().validate()?;
         self.contact.validate()?;
         let x_max = self.law.max_approach(self.mass, self.v0);
         let t_ref = x_max / self.v0;
@@ -73,24 +66,33 @@ impl ImpactParams {
             .iter()
             .any(|q| !(q.is_finite() && q.is_normal()))
         {
-            return Err(ModelError::OutOfDomain {
-                formula: "elastic impact scales (eqs 5–7)",
-                detail: format!(
-                    "x_max = {x_max:e} m, x_max/v₀ = {t_ref:e} s, F_max = {f_max:e} N are not all finite and non-zero"
-                ),
+            return Err(ModelError::ImpactScales {
+                x_max,
+                t_ref,
+                f_max,
             });
         }
         let damping = self.law.k * self.plastic_indentation / (self.v0 * self.restitution);
         if !damping.is_finite() {
-            return Err(ModelError::OutOfDomain {
-                formula: "proposed damping b = k·x_pl/(v₀·e) (eq 18)",
-                detail: format!(
-                    "impact.plastic_indentation = {:e} m gives b = {damping:e}; use a plastic indentation of the order of x_max = {x_max:e} m",
-                    self.plastic_indentation
-                ),
+            return Err(ModelError::ProposedDamping {
+                plastic_indentation: self.plastic_indentation,
+                damping,
+                x_max,
             });
         }
         Ok(())
+    }
+}
+
+impl ImpactParams {
+    /// The impact conditions among these inputs (v₀, e, x_pl), checked by
+    /// [`ImpactConditions::validate`], the one check of them.
+    pub fn conditions(&self) -> ImpactConditions {
+        ImpactConditions {
+            v0: self.v0,
+            restitution: self.restitution,
+            plastic_indentation: self.plastic_indentation,
+        }
     }
 }
 
@@ -182,20 +184,19 @@ impl Serialize for ForceModel {
     }
 }
 
+/// A model id that names no row of [`LAWS`]; the message lists the ids that do.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown model '{0}' (expected one of: {ids})", ids = ForceModel::ALL.map(ForceModel::name).join(", "))]
+pub struct UnknownModel(pub String);
+
 impl FromStr for ForceModel {
-    type Err = String;
+    type Err = UnknownModel;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         ForceModel::ALL
             .into_iter()
             .find(|m| m.name() == s)
-            .ok_or_else(|| {
-                let names: Vec<_> = ForceModel::ALL.iter().map(|m| m.name()).collect();
-                format!(
-                    "unknown model '{s}' (expected one of: {})",
-                    names.join(", ")
-                )
-            })
+            .ok_or_else(|| UnknownModel(s.to_string()))
     }
 }
 

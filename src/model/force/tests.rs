@@ -189,38 +189,78 @@ fn every_law_is_zero_out_of_contact_and_splits_into_elastic_plus_dissipative() {
 
 #[test]
 fn invalid_parameters_are_refused_with_the_field_named() {
+    // Each bad input, the field the error must name and the value it must carry.
     let bad = [
-        ImpactParams {
-            mass: 0.0,
-            ..fig5()
-        },
-        ImpactParams { v0: -1.0, ..fig5() },
-        ImpactParams {
-            restitution: 0.0,
-            ..fig5()
-        },
-        ImpactParams {
-            restitution: 1.5,
-            ..fig5()
-        },
-        ImpactParams {
-            plastic_indentation: f64::NAN,
-            ..fig5()
-        },
-        ImpactParams {
-            law: PowerLaw { k: 1e10, n: 0.5 },
-            ..fig5()
-        },
-        ImpactParams {
-            mass: 1e300,
-            v0: 1e300,
-            ..fig5()
-        },
+        (
+            ImpactParams {
+                mass: 0.0,
+                ..fig5()
+            },
+            "mass",
+            0.0,
+        ),
+        (ImpactParams { v0: -1.0, ..fig5() }, "impact.v0", -1.0),
+        (
+            ImpactParams {
+                restitution: 0.0,
+                ..fig5()
+            },
+            "impact.restitution",
+            0.0,
+        ),
+        (
+            ImpactParams {
+                restitution: 1.5,
+                ..fig5()
+            },
+            "impact.restitution",
+            1.5,
+        ),
+        (
+            ImpactParams {
+                plastic_indentation: f64::NAN,
+                ..fig5()
+            },
+            "impact.plastic_indentation",
+            f64::NAN,
+        ),
+        (
+            ImpactParams {
+                law: PowerLaw { k: 1e10, n: 0.5 },
+                ..fig5()
+            },
+            "n",
+            0.5,
+        ),
     ];
-    for p in bad {
+    for (p, want_field, want_value) in bad {
         let err = ForceModel::HuntCrossley.law(&p).unwrap_err();
-        assert!(!err.to_string().is_empty());
+        let ModelError::InvalidParameter { field, value, .. } = &err else {
+            panic!("{want_field}: not an invalid parameter: {err}");
+        };
+        assert_eq!(field, want_field, "{err}");
+        assert!(
+            value.to_bits() == want_value.to_bits(),
+            "{want_field}: carries {value}, not {want_value}"
+        );
+        assert!(err.to_string().starts_with(want_field), "{err}");
     }
+    // Valid one by one, together they overflow the elastic scales: refused naming them.
+    let overflow = ImpactParams {
+        mass: 1e300,
+        v0: 1e300,
+        ..fig5()
+    };
+    let err = ForceModel::HuntCrossley.law(&overflow).unwrap_err();
+    assert!(
+        matches!(err, ModelError::ImpactScales { x_max, .. } if x_max == f64::INFINITY),
+        "{err:?}"
+    );
+    assert!(
+        err.to_string()
+            .starts_with("elastic impact scales (eqs 5–7): x_max = inf m"),
+        "{err}"
+    );
     assert!(ForceModel::Proposed.law(&fig5()).is_ok());
 }
 
@@ -228,7 +268,20 @@ fn invalid_parameters_are_refused_with_the_field_named() {
 fn an_infinite_proposed_damping_is_refused_naming_the_plastic_indentation() {
     let mut p = fig5();
     p.plastic_indentation = 1e300;
-    let msg = p.validate().unwrap_err().to_string();
+    let err = p.validate().unwrap_err();
+    let ModelError::ProposedDamping {
+        plastic_indentation,
+        damping,
+        x_max,
+    } = err
+    else {
+        panic!("{err:?}");
+    };
+    assert_eq!(plastic_indentation, 1e300);
+    assert!(damping.is_infinite());
+    // Table 1's x_max for the fixture's m = 0.033 kg, a little over the scene's 32.67 g.
+    assert!((x_max / 9.15e-6 - 1.0).abs() < 0.01, "{x_max}");
+    let msg = err.to_string();
     assert!(
         msg.starts_with(
             "proposed damping b = k·x_pl/(v₀·e) (eq 18): impact.plastic_indentation = 1e300 m"
@@ -261,9 +314,13 @@ fn the_law_table_has_unique_ids_and_the_paper_five_keep_theirs() {
         );
     }
     let err = "hertz".parse::<ForceModel>().unwrap_err();
+    assert_eq!(err, UnknownModel("hertz".into()));
+    let message = err.to_string();
     assert!(
-        err.contains("kelvin-voigt") && err.contains("gharib-hurmuzlu"),
-        "{err}"
+        message.starts_with("unknown model 'hertz' (expected one of: quasistatic, ")
+            && message.contains("kelvin-voigt")
+            && message.contains("gharib-hurmuzlu"),
+        "{message}"
     );
 }
 

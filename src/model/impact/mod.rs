@@ -1,4 +1,5 @@
 //! The impact solver: integrates m·ẍ = −F(x, ẋ) from x = 0, ẋ = v₀ until contact ends.
+#![warn(missing_docs)]
 
 use std::fmt;
 use std::str::FromStr;
@@ -28,8 +29,16 @@ impl fmt::Display for MethodChoice {
     }
 }
 
+/// A method name that is neither `auto` nor an integrator's; the message lists those that are.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error(
+    "unknown method '{0}' (expected one of: auto, {methods})",
+    methods = Method::ALL.map(Method::name).join(", ")
+)]
+pub struct UnknownMethod(pub String);
+
 impl FromStr for MethodChoice {
-    type Err = String;
+    type Err = UnknownMethod;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         if s == "auto" {
@@ -37,7 +46,7 @@ impl FromStr for MethodChoice {
         } else {
             s.parse::<Method>()
                 .map(MethodChoice::Integrator)
-                .map_err(|e| e.replace("expected one of: ", "expected one of: auto, "))
+                .map_err(|_| UnknownMethod(s.to_string()))
         }
     }
 }
@@ -52,6 +61,7 @@ impl FromStr for MethodChoice {
 /// summary's warnings flag the scene as ill-conditioned.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveOptions {
+    /// The solution path: `auto` or one integrator.
     pub method: MethodChoice,
     /// The accuracy asked of adaptive methods and `auto` (see above).
     pub rtol: f64,
@@ -82,6 +92,7 @@ impl Default for SolveOptions {
 pub enum MethodUsed {
     /// A closed form or quadrature (elastic Hertz, energy integrals); the curves come from a tight-tolerance integrator.
     Exact,
+    /// This integrator.
     Integrator(Method),
 }
 
@@ -116,7 +127,9 @@ pub struct TensileCutoff {
 /// The numbers of one impact, SI units.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ImpactSummary {
+    /// The force law solved.
     pub model: ForceModel,
+    /// The solution path used.
     pub method: MethodUsed,
     /// Maximum approach (at ẋ = 0), m.
     pub x_max: f64,
@@ -153,29 +166,49 @@ pub struct ImpactSummary {
 /// One point of a trajectory.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
+    /// Time since first contact, s.
     pub t: f64,
+    /// Approach x, m.
     pub x: f64,
+    /// Approach velocity ẋ, m/s.
     pub v: f64,
+    /// Contact force F, N.
     pub f: f64,
 }
 
 /// Ways an impact solve fails. Each says what happened and when.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ImpactError {
+    /// The inputs or options are invalid; the error names the field.
     #[error(transparent)]
     InvalidInput(#[from] ModelError),
+    /// The integrator failed.
     #[error("{method}: {source}")]
     Integration {
+        /// The integrator that failed.
         method: Method,
+        /// Its error, in the solver's time in seconds.
         #[source]
         source: OdeError,
     },
+    /// The mechanical energy grew past [`ENERGY_LIMIT`]: the method is unstable at its step.
     #[error(
         "{method}: energy grew by {growth:.1} % at t = {t:.6e} s: the method is unstable at this step"
     )]
-    EnergyGrowth { method: Method, t: f64, growth: f64 },
+    EnergyGrowth {
+        /// The integrator.
+        method: Method,
+        /// When, s.
+        t: f64,
+        /// The growth, % of the initial kinetic energy.
+        growth: f64,
+    },
+    /// Contact lasted past [`TIME_LIMIT_CONTACTS`] elastic contact times.
     #[error("contact did not end within {t_limit:.3e} s")]
-    NoSeparation { t_limit: f64 },
+    NoSeparation {
+        /// The time limit, s.
+        t_limit: f64,
+    },
 }
 
 mod auto;
@@ -193,7 +226,9 @@ pub use trajectory::Trajectory;
 /// A solved impact: the numbers and the continuous curves.
 #[derive(Debug, Clone)]
 pub struct ImpactSolution {
+    /// The numbers: peaks, contact time, realised restitution, work.
     pub summary: ImpactSummary,
+    /// The continuous curves x(t), ẋ(t), F(t).
     pub trajectory: Trajectory,
 }
 
@@ -207,6 +242,32 @@ pub struct ImpactSolution {
 /// when the scene is stiff. Failures are typed: invalid input, an integrator error (in seconds),
 /// energy growth beyond [`ENERGY_LIMIT`], or no separation within [`TIME_LIMIT_CONTACTS`] elastic
 /// contact times.
+///
+/// The paper's Fig. 5 scene, a steel sphere R = 10 mm dropped at v₀ = 0.3 m/s on a steel plate:
+///
+/// ```
+/// use hertz_tui::model::ForceModel;
+/// use hertz_tui::model::impact::{MethodUsed, SolveOptions, solve_impact};
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let params = scene.impact_params(&scene.quasistatic()?);
+/// let options = SolveOptions::default();
+///
+/// // Elastic Hertz (eq 1) is solved exactly: Table 1's x_max = 9.115 µm (eq 5) and
+/// // F_max = 403.2 N (eq 6), t_c = 2.9432·x_max/v₀ (eq 7, (4/5)·B(2/5, 1/2)), all energy back.
+/// let elastic = solve_impact(ForceModel::Quasistatic, &params, &options)?.summary;
+/// assert_eq!(elastic.method, MethodUsed::Exact);
+/// assert!((elastic.x_max / 9.115e-6 - 1.0).abs() < 1e-3);
+/// assert!((elastic.f_max / 403.2 - 1.0).abs() < 1e-3);
+/// assert!((elastic.t_contact / (2.9432 * elastic.x_max / 0.3) - 1.0).abs() < 1e-4);
+/// assert!((elastic.e_out - 1.0).abs() < 1e-9);
+///
+/// // Hunt–Crossley (eq 19) at e = 0.6 leaves at 0.2136 m/s, faster than v₀·e = 0.18 m/s.
+/// let hunt_crossley = solve_impact(ForceModel::HuntCrossley, &params, &options)?;
+/// assert!((hunt_crossley.summary.v_out - 0.2136).abs() < 1e-4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn solve_impact(
     model: ForceModel,
     params: &ImpactParams,

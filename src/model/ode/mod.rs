@@ -44,7 +44,7 @@ pub enum Method {
     /// Explicit Euler, order 1, fixed step.
     Euler,
     /// Semi-implicit (symplectic) Euler, order 1, fixed step. Assumes ẋ = v: reads only the
-    /// acceleration f(t, y)[1].
+    /// acceleration f(t, y)\[1\].
     SymplecticEuler,
     /// Velocity Verlet, order 2, fixed step. Assumes ẋ = v; a velocity-dependent acceleration is
     /// evaluated at the end of the step with the predicted velocity v + h·a.
@@ -87,8 +87,8 @@ impl Method {
         matches!(self, Method::Dopri5 | Method::Dop853 | Method::Radau5)
     }
 
-    /// Partitioned methods read y = (x, v) as position and velocity (ẋ = y[1]) and only the
-    /// acceleration f(t, y)[1]; the others integrate any first-order system.
+    /// Partitioned methods read y = (x, v) as position and velocity (ẋ = y\[1\]) and only the
+    /// acceleration f(t, y)\[1\]; the others integrate any first-order system.
     pub fn is_partitioned(self) -> bool {
         matches!(self, Method::SymplecticEuler | Method::Verlet)
     }

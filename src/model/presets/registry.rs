@@ -17,6 +17,7 @@ use crate::model::scene_file::{self, Document, SceneView};
 /// Where a preset comes from.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Origin {
+    /// Shipped with hertz-tui (`presets/`).
     BuiltIn,
     /// A file in the user preset folder.
     User(PathBuf),
@@ -38,6 +39,7 @@ pub struct PresetInfo {
     pub name: String,
     /// The file's `description`, or empty.
     pub description: String,
+    /// Built-in or user.
     pub origin: Origin,
     /// A user preset that replaces a built-in of the same name.
     pub overrides_builtin: bool,
@@ -140,7 +142,7 @@ impl Registry {
             .cloned()
             .ok_or_else(|| PresetError::UnknownMaterial {
                 name: name.to_string(),
-                known: names(&self.catalog),
+                known: self.catalog.keys().cloned().collect(),
             })
     }
 
@@ -241,7 +243,7 @@ impl Registry {
         }
         Err(PresetError::UnknownScene {
             name: name_or_path.to_string(),
-            known: self.scenes.keys().cloned().collect::<Vec<_>>().join(", "),
+            known: self.scenes.keys().cloned().collect(),
         })
     }
 
@@ -350,8 +352,4 @@ impl Registry {
         }
         files
     }
-}
-
-fn names(catalog: &BTreeMap<String, Material>) -> String {
-    catalog.keys().cloned().collect::<Vec<_>>().join(", ")
 }

@@ -12,7 +12,10 @@ use crate::model::scene_file::{self, SceneView};
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SaveTarget<'a> {
     /// `<user dir>/scenes/<name>.toml`; `name` must be kebab-case. It overrides a built-in of that name.
-    UserPreset { name: &'a str },
+    UserPreset {
+        /// The preset's kebab-case name.
+        name: &'a str,
+    },
     /// Any file path; its folder must exist.
     Path(&'a Path),
 }

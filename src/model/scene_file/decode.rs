@@ -4,9 +4,9 @@ use std::collections::BTreeMap;
 
 use toml::{Table, Value};
 
-use super::document::{Document, Problem, SceneFileError, join};
+use super::document::{Document, Problem, SceneFileError, ValueIssue, join};
 use super::schema::{
-    BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, SHAPES, shape_keys,
+    BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, shape_keys,
 };
 use super::view::SceneView;
 use crate::model::body::{Body, Shape};
@@ -36,7 +36,7 @@ impl Decoder<'_> {
         &self,
         path: &str,
         table: &Table,
-        allowed: &[&str],
+        allowed: &'static [&'static str],
     ) -> Result<(), SceneFileError> {
         match table.keys().find(|k| !allowed.contains(&k.as_str())) {
             Some(key) => {
@@ -45,7 +45,7 @@ impl Decoder<'_> {
                     &key,
                     Problem::UnknownKey {
                         key: key.clone(),
-                        allowed: allowed.join(", "),
+                        allowed,
                     },
                 ))
             }
@@ -53,12 +53,12 @@ impl Decoder<'_> {
         }
     }
 
-    fn missing(&self, path: &str, why: &str) -> SceneFileError {
+    fn missing(&self, path: &str, why: &'static str) -> SceneFileError {
         self.doc.error(
             path,
             Problem::MissingKey {
                 key: path.to_string(),
-                why: why.to_string(),
+                why,
             },
         )
     }
@@ -113,7 +113,7 @@ impl Decoder<'_> {
         table: &Table,
         prefix: &str,
         key: &str,
-        why: &str,
+        why: &'static str,
     ) -> Result<f64, SceneFileError> {
         self.optional_number(table, prefix, key)?
             .ok_or_else(|| self.missing(&join(prefix, key), why))
@@ -167,11 +167,11 @@ impl Decoder<'_> {
         let shape_name = self.string(table, key, "shape")?;
         let shape = match shape_name {
             "sphere" => Shape::Sphere {
-                radius: self.geometry(table, key, "radius", shape_name)?,
+                radius: self.geometry(table, key, "radius", " (a sphere needs it)")?,
             },
             "cylinder" => Shape::Cylinder {
-                radius: self.geometry(table, key, "radius", shape_name)?,
-                length: self.geometry(table, key, "length", shape_name)?,
+                radius: self.geometry(table, key, "radius", " (a cylinder needs it)")?,
+                length: self.geometry(table, key, "length", " (a cylinder needs it)")?,
             },
             "plane" => Shape::Plane,
             other => {
@@ -179,10 +179,7 @@ impl Decoder<'_> {
                     &shape_path,
                     Problem::BadValue {
                         key: shape_path.clone(),
-                        message: format!(
-                            "unknown shape \"{other}\" (expected one of: {})",
-                            SHAPES.join(", ")
-                        ),
+                        issue: ValueIssue::UnknownShape(other.to_string()),
                     },
                 ));
             }
@@ -209,20 +206,20 @@ impl Decoder<'_> {
     }
 
     /// A radius or length the body's shape needs; if missing, the error points at the `shape`
-    /// that asks for it (or at the `--set` that changed the shape).
+    /// that asks for it (or at the `--set` that changed the shape); `why` names that shape.
     fn geometry(
         &self,
         body: &Table,
         body_key: &str,
         field: &str,
-        shape: &str,
+        why: &'static str,
     ) -> Result<f64, SceneFileError> {
         self.optional_number(body, body_key, field)?.ok_or_else(|| {
             self.doc.error(
                 &join(body_key, "shape"),
                 Problem::MissingKey {
                     key: join(body_key, field),
-                    why: format!(" (a {shape} needs it)"),
+                    why,
                 },
             )
         })
@@ -233,16 +230,14 @@ impl Decoder<'_> {
         match body.get("material") {
             None => Err(self.missing(&path, " (a preset material name or an inline table)")),
             Some(Value::String(name)) => self.materials.get(name).cloned().ok_or_else(|| {
-                let known: Vec<&str> = self.materials.keys().map(String::as_str).collect();
                 self.doc.error(
                     &path,
                     Problem::BadValue {
                         key: path.clone(),
-                        message: format!(
-                            "unknown material \"{name}\" (known: {}; or give an inline table with the keys {})",
-                            known.join(", "),
-                            MATERIAL_KEYS.join(", ")
-                        ),
+                        issue: ValueIssue::UnknownMaterial {
+                            name: name.clone(),
+                            known: self.materials.keys().cloned().collect(),
+                        },
                     },
                 )
             }),

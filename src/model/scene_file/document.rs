@@ -7,7 +7,10 @@ use thiserror::Error;
 use toml::de::{DeTable, DeValue};
 use toml::{Table, Value};
 
+use super::schema::{MATERIAL_KEYS, SHAPES};
 use crate::model::error::ModelError;
+use crate::model::force::UnknownModel;
+use crate::model::impact::UnknownMethod;
 
 /// Where in its source a problem is.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -38,15 +41,51 @@ impl fmt::Display for Location {
     }
 }
 
+/// What is wrong with a value of the right type ([`Problem::BadValue`]), with what was given.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ValueIssue {
+    /// A shape the schema does not have.
+    #[error("unknown shape \"{0}\" (expected one of: {shapes})", shapes = SHAPES.join(", "))]
+    UnknownShape(String),
+    /// A material name that is no preset: the name and the known ones.
+    #[error(
+        "unknown material \"{name}\" (known: {}; or give an inline table with the keys {})",
+        .known.join(", "),
+        MATERIAL_KEYS.join(", ")
+    )]
+    UnknownMaterial { name: String, known: Vec<String> },
+    /// A model id that names no law.
+    #[error(transparent)]
+    UnknownModel(#[from] UnknownModel),
+    /// A model listed twice in `models`.
+    #[error("\"{0}\" is listed twice")]
+    ListedTwice(String),
+    /// An empty `models` list.
+    #[error("lists no model (leave the key out for the paper's five)")]
+    NoModels,
+    /// A solver method that is neither `auto` nor an integrator's.
+    #[error(transparent)]
+    UnknownMethod(#[from] UnknownMethod),
+    /// A number outside its range.
+    #[error("must be {requirement}, got {value}")]
+    OutOfRange {
+        requirement: &'static str,
+        value: f64,
+    },
+}
+
 /// What is wrong with a scene or material file. Keys are dotted paths (`body1.material.density`).
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum Problem {
     #[error("TOML syntax error: {0}")]
     Syntax(String),
-    #[error("unknown key `{key}` (allowed here: {allowed})")]
-    UnknownKey { key: String, allowed: String },
+    #[error("unknown key `{key}` (allowed here: {})", .allowed.join(", "))]
+    UnknownKey {
+        key: String,
+        allowed: &'static [&'static str],
+    },
     #[error("missing key `{key}`{why}")]
-    MissingKey { key: String, why: String },
+    MissingKey { key: String, why: &'static str },
     #[error("`{key}` must be {expected}, found {found}")]
     WrongType {
         key: String,
@@ -55,8 +94,8 @@ pub enum Problem {
     },
     #[error("`{key}` is not used by a {shape}; remove it")]
     UnusedKey { key: String, shape: &'static str },
-    #[error("`{key}`: {message}")]
-    BadValue { key: String, message: String },
+    #[error("`{key}`: {issue}")]
+    BadValue { key: String, issue: ValueIssue },
     /// A value outside its physical range; the model error names the dotted field.
     #[error(transparent)]
     Invalid(ModelError),

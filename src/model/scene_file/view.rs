@@ -4,9 +4,10 @@
 use toml::{Table, Value};
 
 use super::decode::Decoder;
-use super::document::{Problem, SceneFileError};
+use super::document::{Problem, SceneFileError, ValueIssue};
 use super::write::toml_float;
 use crate::model::ForceModel;
+use crate::model::force::UnknownModel;
 use crate::model::impact::{MethodChoice, SolveOptions};
 
 /// Keys of `[solver]`, as on the command line (`--method`, `--rtol`, `--atol`, `--dt`).
@@ -93,12 +94,12 @@ impl Decoder<'_> {
     }
 
     fn models(&self, value: &Value) -> Result<Vec<ForceModel>, SceneFileError> {
-        let bad = |message: String| {
+        let bad = |issue: ValueIssue| {
             self.doc.error(
                 "models",
                 Problem::BadValue {
                     key: "models".into(),
-                    message,
+                    issue,
                 },
             )
         };
@@ -110,53 +111,52 @@ impl Decoder<'_> {
             let Value::String(name) = item else {
                 return Err(self.wrong_type("models", "an array of model names", item));
             };
-            let model: ForceModel = name.parse().map_err(bad)?;
+            let model: ForceModel = name.parse().map_err(|e: UnknownModel| bad(e.into()))?;
             if models.contains(&model) {
-                return Err(bad(format!("\"{name}\" is listed twice")));
+                return Err(bad(ValueIssue::ListedTwice(name.clone())));
             }
             models.push(model);
         }
         if models.is_empty() {
-            return Err(bad(
-                "lists no model (leave the key out for the paper's five)".into(),
-            ));
+            return Err(bad(ValueIssue::NoModels));
         }
         Ok(models)
     }
 
     fn solver(&self, table: &Table) -> Result<SolveOptions, SceneFileError> {
         self.check_keys("solver", table, SOLVER_KEYS)?;
-        let bad = |key: &str, message: String| {
+        let bad = |key: &str, issue: ValueIssue| {
             let key = format!("solver.{key}");
             self.doc.error(
                 &key,
                 Problem::BadValue {
                     key: key.clone(),
-                    message,
+                    issue,
                 },
             )
         };
+        let out_of_range = |requirement, value| ValueIssue::OutOfRange { requirement, value };
         let mut options = SolveOptions::default();
         if let Some(method) = self.optional_string(table, "solver", "method")? {
             options.method = method
                 .parse::<MethodChoice>()
-                .map_err(|e| bad("method", e))?;
+                .map_err(|e| bad("method", e.into()))?;
         }
         if let Some(rtol) = self.optional_number(table, "solver", "rtol")? {
             if !(rtol > 0.0 && rtol < 1.0) {
-                return Err(bad("rtol", format!("must be > 0 and < 1, got {rtol}")));
+                return Err(bad("rtol", out_of_range("> 0 and < 1", rtol)));
             }
             options.rtol = rtol;
         }
         if let Some(atol) = self.optional_number(table, "solver", "atol")? {
             if !(atol > 0.0 && atol.is_finite()) {
-                return Err(bad("atol", format!("must be > 0 and finite, got {atol}")));
+                return Err(bad("atol", out_of_range("> 0 and finite", atol)));
             }
             options.atol = Some(atol);
         }
         if let Some(dt) = self.optional_number(table, "solver", "dt")? {
             if !(dt > 0.0 && dt.is_finite()) {
-                return Err(bad("dt", format!("must be > 0 and finite (s), got {dt}")));
+                return Err(bad("dt", out_of_range("> 0 and finite (s)", dt)));
             }
             options.dt = Some(dt);
         }

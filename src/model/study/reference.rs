@@ -15,7 +15,7 @@ pub fn reference(model: ForceModel, params: &ImpactParams) -> Result<ImpactSumma
     reference_solution(model, params).map(|solution| solution.summary)
 }
 
-/// [`reference`] with its curves, for drawing other solves over it (the exact solution's curves come
+/// [`reference()`] with its curves, for drawing other solves over it (the exact solution's curves come
 /// from a tight-tolerance integrator, see [`MethodUsed::Exact`]).
 pub fn reference_solution(
     model: ForceModel,

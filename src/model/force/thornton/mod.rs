@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::{Contact, ForceModel, ImpactParams};
 use crate::model::cylinder::pressure_law;
-use crate::model::error::ModelError;
+use crate::model::error::{Domain, ModelError};
 use crate::model::exact::ExactImpact;
 use crate::model::numeric::roots::brent;
 
@@ -45,9 +45,7 @@ const LOWEST_Q: f64 = 1e-100;
 fn exponent_refused(n: f64) -> ModelError {
     ModelError::OutOfDomain {
         formula: "Thornton (1997) elastic–perfectly-plastic law",
-        detail: format!(
-            "on a point contact it is Hertz's sphere (n = 3/2), and these parameters have n = {n}"
-        ),
+        detail: Domain::NotHertzExponent { n },
     }
 }
 
@@ -67,9 +65,7 @@ impl Thornton {
         if !(v_yield > 0.0 && v_yield.is_finite()) {
             return Err(ModelError::OutOfDomain {
                 formula: "Thornton (1997) elastic–perfectly-plastic law",
-                detail: format!(
-                    "v_yield = {v_yield} m/s: the yield velocity must be finite and > 0"
-                ),
+                detail: Domain::YieldVelocity { v_yield },
             });
         }
         let (k, n, m, v0) = (params.law.k, params.law.n, params.mass, params.v0);
@@ -100,10 +96,9 @@ impl Thornton {
         if !(x_max.is_finite() && law.f_max.is_finite() && (x_max / x_yield).is_finite()) {
             return Err(ModelError::OutOfDomain {
                 formula: "Thornton (1997) elastic–perfectly-plastic law",
-                detail: format!(
-                    "the impact energy ½·m·v₀² = {:e} J is beyond what the law can store in f64",
-                    0.5 * m * v0 * v0
-                ),
+                detail: Domain::EnergyBeyondF64 {
+                    energy: 0.5 * m * v0 * v0,
+                },
             });
         }
         Ok(law)
@@ -169,10 +164,7 @@ impl Thornton {
             Contact::Unspecified => {
                 return Err(ModelError::OutOfDomain {
                     formula: "Thornton (1997) elastic–perfectly-plastic law",
-                    detail: "its yield velocity comes from the yield stress and elastic constants \
-                             of the bodies, and these parameters carry none (built without a \
-                             scene); give v_y explicitly"
-                        .into(),
+                    detail: Domain::YieldNeedsBodies,
                 });
             }
         };
@@ -338,7 +330,7 @@ impl ForceLaw for Thornton {
     }
 
     /// Three conservative phases: closed forms on spheres, a quadrature of the capped loading's
-    /// time on strips ([`exact`]).
+    /// time on strips (the `exact` module).
     fn exact(&self, rtol: f64) -> Option<ExactImpact> {
         Some(self.exact_impact(rtol)).filter(ExactImpact::is_valid)
     }

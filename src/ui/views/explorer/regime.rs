@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
+use crate::format::recommendation;
 use crate::model::recommend::recommend;
 use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
@@ -108,7 +109,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     items.push(vec![
         Span::styled("use: ", theme.style(Role::Label)),
         Span::styled(form.of(advice.model), theme.model_style(advice.model)),
-        Span::styled(format!(" ({})", advice.gist), theme.style(Role::Normal)),
+        Span::styled(format!(" ({})", recommendation::gist(&advice.reason)), theme.style(Role::Normal)),
     ]);
     if advice.fits.len() > 1 {
         let mut also = vec![Span::styled("also fit: ", theme.style(Role::Label))];
@@ -150,7 +151,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         );
     }
     let room = max_lines.saturating_sub(lines.len());
-    let why = wrap(&format!("why: {}", advice.why), width);
+    let why = wrap(&format!("why: {}", recommendation::why(&advice.reason)), width);
     // The reason whole, or not at all; then the other convention if a line is left.
     if why.len() <= room {
         lines.extend(
