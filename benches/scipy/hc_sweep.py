@@ -1,20 +1,15 @@
 #!/usr/bin/env python3
-"""The 2000-point Hunt–Crossley v0 sweep of `hertz-tui sweep`, done by scipy's DOP853.
+"""The Hunt–Crossley v0 sweep of `hertz-tui sweep`, done by scipy's DOP853.
 
 Same scene (the Fig. 5 preset: steel sphere R = 10 mm on a steel plate, e = 0.6), same law
-F = k·xⁿ·(1 + α·ẋ) with α = 3(1 − e)/(2·v₀) (eq 19), same 2000 log-spaced v₀ from 0.01 to 1 m/s,
-same rtol (1e-8, hertz-tui's default; atol 1e-8 of x_e and v₀, as hertz-tui scales it), same
-numbers out (x_max, F_max, t_c, v_out, e_out; CSV on stdout). Ends of contact and the force peak
-are located as events, as hertz-tui does on its integrators.
+F = k·xⁿ·(1 + α·ẋ) with α = 3(1 − e)/(2·v₀) (eq 19), same log-spaced v₀ from 0.01 to 1 m/s
+(`--points N`, default 2000), same rtol (1e-8, hertz-tui's default; atol 1e-8 of x_e and v₀, as
+hertz-tui scales it), same numbers out (x_max, F_max, t_c, v_out, e_out; CSV on stdout). Ends of
+contact and the force peak are located as events, as hertz-tui does on its integrators.
 
-Not run by CI or `cargo bench`. Compare whole process against whole process, from the repository:
-
-    python3 -m venv /tmp/scipy-venv && /tmp/scipy-venv/bin/pip install scipy
-    cargo build --release
-    time /tmp/scipy-venv/bin/python benches/scipy/hc_sweep.py > /tmp/scipy.csv
-    time target/release/hertz-tui sweep --scene fig5-steel-sphere-r10-plate --param impact.v0 \\
-        --from 0.01 --to 1 --points 2000 --log --format csv --model hunt-crossley > /tmp/ours.csv
-    /tmp/scipy-venv/bin/python benches/scipy/hc_sweep.py --compare /tmp/scipy.csv /tmp/ours.csv
+Not run by CI or `cargo bench`; `benches/scipy/compare.py` times it against hertz-tui's sweep.
+`--compare SCIPY.csv OURS.csv` prints the largest relative difference per quantity between its
+CSV and `hertz-tui sweep … --model hunt-crossley --format csv` at the same points.
 """
 
 import csv
@@ -76,10 +71,10 @@ def impact(v0):
     return y_deep[0], f_max, t_end, v_out, v_out / v0
 
 
-def sweep():
+def sweep(points):
     out = csv.writer(sys.stdout, lineterminator="\n")
     out.writerow(["impact.v0", "x_max", "f_max", "t_contact", "v_out", "e_out"])
-    for v0 in np.geomspace(0.01, 1.0, 2000):
+    for v0 in np.geomspace(0.01, 1.0, points):
         out.writerow([repr(float(v0))] + [repr(float(q)) for q in impact(v0)])
 
 
@@ -101,5 +96,9 @@ def compare(scipy_csv, ours_csv):
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "--compare":
         compare(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) == 3 and sys.argv[1] == "--points":
+        sweep(int(sys.argv[2]))
+    elif len(sys.argv) == 1:
+        sweep(2000)
     else:
-        sweep()
+        sys.exit("usage: hc_sweep.py [--points N] | --compare SCIPY.csv OURS.csv")

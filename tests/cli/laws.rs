@@ -55,8 +55,10 @@ fn calibrate_makes_every_law_with_damping_rebound_with_the_requested_e() {
     for row in v["impacts"].as_array().unwrap() {
         let e = row["e_out"].as_f64().unwrap();
         if row["damping"].is_null() {
+            // Nothing to calibrate: the law is elastic, e = 1 within the promise of 100·rtol
+            // (exact where the law has a closed form, integrated otherwise).
             assert_eq!(row["calibrated"], false);
-            assert_eq!(e, 1.0);
+            assert!((e - 1.0).abs() <= 100.0 * 1e-12, "{row}");
             continue;
         }
         assert_eq!(row["calibrated"], true, "{row}");

@@ -1,7 +1,7 @@
-//! Every TOML and shell block of the README runs as written.
+//! Every TOML and shell block of the README and of every `docs/*.md` runs as written.
 //!
-//! The README's fenced blocks are found by their info string and checked whatever section they
-//! are in, so new sections are covered without touching this test:
+//! Their fenced blocks are found by their info string and checked whatever section or file they
+//! are in, so new sections and new documents are covered without touching this test:
 //!
 //! - ```` ```toml ```` — a scene (it has `[body1]`) is read by the strict scene reader, a material
 //!   (it has `youngs_modulus`) by the material reader; any other block must at least be TOML.
@@ -22,7 +22,7 @@ use std::process::Command;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::scene_file::{Document, decode_material, parse_scene};
 
-/// A fenced block: its info string, the README line it starts on, its text.
+/// A fenced block: its info string, the line of its document it starts on, its text.
 struct Block {
     info: Vec<String>,
     line: usize,
@@ -66,7 +66,7 @@ fn blocks(markdown: &str) -> Vec<Block> {
             (None, None) => {}
         }
     }
-    assert!(open.is_none(), "README: a fenced block is not closed");
+    assert!(open.is_none(), "a fenced block is not closed");
     blocks
 }
 
@@ -115,7 +115,7 @@ fn commands(text: &str) -> Vec<String> {
     commands
 }
 
-/// Runs one README command in `dir`; the error says why it does not run as written.
+/// Runs one documented command in `dir`; the error says why it does not run as written.
 fn run(command: &str, dir: &Path) -> Result<(), String> {
     let mut words = words(command);
     let mut stdout_file = None;
@@ -187,9 +187,9 @@ fn run(command: &str, dir: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// A TOML block read as what it is; `Err` says why it is refused.
-fn check_toml(block: &Block, registry: &Registry) -> Result<(), String> {
-    let origin = format!("README.md:{}", block.line);
+/// A TOML block of the document `name` read as what it is; `Err` says why it is refused.
+fn check_toml(name: &str, block: &Block, registry: &Registry) -> Result<(), String> {
+    let origin = format!("{name}:{}", block.line);
     let doc = Document::parse(&origin, &block.text).map_err(|e| e.to_string())?;
     let table = doc.table();
     if table.contains_key("body1") {
@@ -213,43 +213,95 @@ impl Drop for TempDir {
     }
 }
 
-#[test]
-fn every_toml_and_command_block_of_the_readme_runs_as_written() {
-    let readme = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let dir = TempDir(std::env::temp_dir().join(format!("hertz-readme-{}", std::process::id())));
-    fs::create_dir_all(dir.0.join("config")).unwrap();
-    let registry = Registry::builtin().unwrap();
-    let mut failures = Vec::new();
-    let (mut scenes, mut commands_run) = (0, 0);
-    for block in blocks(&readme) {
+/// What checking one document found.
+#[derive(Default)]
+struct Checked {
+    failures: Vec<String>,
+    scenes: usize,
+    commands_run: usize,
+}
+
+/// Checks every TOML and shell block of the document `name` (its text `markdown`), running the
+/// commands in `dir`.
+fn check_document(name: &str, markdown: &str, dir: &Path, registry: &Registry) -> Checked {
+    let mut checked = Checked::default();
+    for block in blocks(markdown) {
         match block.language() {
             "toml" => {
-                if let Err(e) = check_toml(&block, &registry) {
-                    failures.push(format!("README.md:{}: toml: {e}", block.line));
+                if let Err(e) = check_toml(name, &block, registry) {
+                    checked
+                        .failures
+                        .push(format!("{name}:{}: toml: {e}", block.line));
                 }
                 if block.text.contains("[body1]") {
-                    scenes += 1;
+                    checked.scenes += 1;
                 }
-                if let Some(name) = block.option("file") {
-                    fs::write(dir.0.join(name), &block.text).unwrap();
+                if let Some(file) = block.option("file") {
+                    fs::write(dir.join(file), &block.text).unwrap();
                 }
             }
             "sh" if !block.has("no-run") => {
                 for command in commands(&block.text) {
-                    commands_run += 1;
-                    if let Err(e) = run(&command, &dir.0) {
-                        failures.push(format!("README.md:{}: `{command}`: {e}", block.line));
+                    checked.commands_run += 1;
+                    if let Err(e) = run(&command, dir) {
+                        checked
+                            .failures
+                            .push(format!("{name}:{}: `{command}`: {e}", block.line));
                     }
                 }
             }
             _ => {}
         }
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    checked
+}
+
+/// A temporary folder with an empty user-presets folder, for one test's commands.
+fn command_dir(label: &str) -> TempDir {
+    let dir = TempDir(std::env::temp_dir().join(format!("hertz-{label}-{}", std::process::id())));
+    fs::create_dir_all(dir.0.join("config")).unwrap();
+    dir
+}
+
+#[test]
+fn every_toml_and_command_block_of_the_readme_runs_as_written() {
+    let readme = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let dir = command_dir("readme");
+    let registry = Registry::builtin().unwrap();
+    let checked = check_document("README.md", &readme, &dir.0, &registry);
     assert!(
-        scenes >= 1 && commands_run >= 5,
+        checked.failures.is_empty(),
+        "{}",
+        checked.failures.join("\n")
+    );
+    assert!(
+        checked.scenes >= 1 && checked.commands_run >= 5,
         "the README's blocks were found"
     );
+}
+
+#[test]
+fn every_toml_and_command_block_of_the_docs_runs_as_written() {
+    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let mut names: Vec<PathBuf> = fs::read_dir(&docs)
+        .unwrap()
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|e| e == "md"))
+        .collect();
+    names.sort();
+    assert!(
+        names.iter().any(|p| p.ends_with("performance.md")),
+        "the docs were found: {names:?}"
+    );
+    let registry = Registry::builtin().unwrap();
+    let mut failures = Vec::new();
+    for path in &names {
+        let name = format!("docs/{}", path.file_name().unwrap().to_string_lossy());
+        let dir = command_dir("docs");
+        let text = fs::read_to_string(path).unwrap();
+        failures.extend(check_document(&name, &text, &dir.0, &registry).failures);
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]
@@ -289,7 +341,7 @@ fn the_block_reader_and_the_runner_refuse_what_would_not_run() {
         line: 1,
         text: "name = \"x\"\n[body1]\nshape = \"sphere\"\nradius = 0.01\nlength = 0.1\nmaterial = \"steel\"\n[body2]\nshape = \"plane\"\nmaterial = \"steel\"\n[impact]\nv0 = 0.3\nrestitution = 0.6\nplastic_indentation = 0.0\n".into(),
     };
-    let error = check_toml(&sphere_with_length, &registry).unwrap_err();
+    let error = check_toml("README.md", &sphere_with_length, &registry).unwrap_err();
     assert!(
         error.contains("`body1.length` is not used by a sphere"),
         "{error}"

@@ -131,6 +131,12 @@ macro_rules! law_table {
                 }
             }
 
+            fn impulse_power(&self) -> f64 {
+                match self {
+                    $(AnyLaw::$variant(l) => l.impulse_power()),*
+                }
+            }
+
             fn damping_value(&self) -> Option<f64> {
                 match self {
                     $(AnyLaw::$variant(l) => l.damping_value()),*

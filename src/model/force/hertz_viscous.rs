@@ -117,6 +117,15 @@ impl ForceLaw for HertzViscous {
         self.params.law.k * x * self.damping_power(x) + self.gamma * v
     }
 
+    /// γ·x^{(n−1)/2}·ẋ = d(β·xᵖ)/dt with p = (n+1)/2, β = γ/p.
+    fn impulse_coefficient(&self) -> f64 {
+        self.gamma / self.impulse_power()
+    }
+
+    fn impulse_power(&self) -> f64 {
+        0.5 * (self.params.law.n + 1.0)
+    }
+
     fn damping_value(&self) -> Option<f64> {
         Some(self.gamma)
     }

@@ -87,12 +87,20 @@ pub trait ForceLaw: Copy {
     /// The exact impact (closed form or quadrature) where one exists; quadratures aim at `rtol`.
     fn exact(&self, rtol: f64) -> Option<ExactImpact>;
 
-    /// β where the dissipative force is n·β·xⁿ⁻¹·ẋ = d(β·xⁿ)/dt, so that its impulse is β·xⁿ in
-    /// closed form (the proposed model, eq 18: β = b/n); 0 for every other law. The solver then
-    /// integrates w = ẋ + β·xⁿ/m, whose equation m·ẇ = −k·xⁿ is as smooth as the elastic one,
-    /// instead of ẋ, whose √x damping at first contact costs adaptive methods their order.
+    /// β where the dissipative force is p·β·xᵖ⁻¹·ẋ = d(β·xᵖ)/dt (p = [`ForceLaw::impulse_power`]),
+    /// so that its impulse is β·xᵖ in closed form (the proposed model, eq 18: β = b/n, p = n;
+    /// Hertz–viscous: β = 2γ/(n+1), p = (n+1)/2); 0 for every other law. The solver then
+    /// integrates w = ẋ + β·xᵖ/m, whose equation m·ẇ = −k·xⁿ is as smooth as the elastic one,
+    /// instead of ẋ, whose xᵖ⁻¹ damping at first contact (√x, x^¼) costs adaptive methods their
+    /// order and most of their rejected steps.
     fn impulse_coefficient(&self) -> f64 {
         0.0
+    }
+
+    /// The exponent p of the damping impulse β·xᵖ ([`ForceLaw::impulse_coefficient`]): n unless
+    /// the law says otherwise.
+    fn impulse_power(&self) -> f64 {
+        self.params().law.n
     }
 
     /// The law as it unloads from the turning point x_turn (m) the integration reached: a

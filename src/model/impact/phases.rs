@@ -54,12 +54,16 @@ pub(crate) struct Run {
     pub loading: DenseOutput,
     pub unloading: DenseOutput,
     /// Scaled time and (X, V) at maximum compression (ẋ set to exactly 0). The loading dense
-    /// output holds the solver's (X, W) ([`Scales::xv`] converts), the unloading one (X, V).
+    /// output holds the solver's (X, W) ([`Scales::xv`] converts), the unloading one the state in
+    /// [`Run::unloading_scales`].
     pub t_switch: f64,
     pub y_switch: State,
     /// Scaled time and (X, V) at the end of contact.
     pub t_end: f64,
     pub y_end: State,
+    /// The scales of the unloading dense output: the loading's (X, W) where contact ends at x = 0
+    /// with the force allowed to pull, else (X, V) ([`Scales::without_shift`]).
+    pub unloading_scales: Scales,
     pub end: End,
     pub stats: Stats,
     pub force_evals: usize,
@@ -215,10 +219,6 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     } = loading;
     // The event lies on the far side of ẋ = 0 by a rounding error; start unloading exactly at rest.
     let y_switch = State::new(y[0], 0.0);
-    // Unloading integrates V itself: W's advantage is at first contact only, and near the end of
-    // a heavily damped unloading V ≪ γ·Xⁿ, where recovering V from W would cost digits.
-    let usc = sc.without_shift();
-
     // Unloading: events in a fixed order, x = 0 first.
     let spent = stats.steps + stats.rejected_steps;
     opts.max_steps = ro.max_steps.saturating_sub(spent);
@@ -231,11 +231,15 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             },
         });
     }
-    // Adaptive methods resume with the last accepted step of loading instead of guessing anew.
+    // Adaptive methods resume with the last full step of loading instead of guessing anew: the
+    // longer of the last two, as the last is usually the landing on maximum compression, cut short.
     opts.h_initial = loading_dense
         .segments()
-        .last()
+        .iter()
+        .rev()
+        .take(2)
         .map(|seg| seg.t_end() - seg.t_start())
+        .reduce(f64::max)
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());
     // Unloading from the turning point reached, as a rate-independent hysteresis defines it.
     let law = &law.unloading_at_turn(run_x_turn(&y_switch, sc));
@@ -269,6 +273,15 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         None if watch_tension => &all_events[..],
         None => &all_events[..1],
     };
+    // Unloading integrates V itself where contact may end at F = 0 with x > 0: near that end of a
+    // heavily damped unloading V ≪ γ·Xᵖ, where recovering V from W would cost digits. Where it
+    // ends at x = 0 (tension allowed) it keeps W: the damping's xᵖ⁻¹ singularity is at that end
+    // too (the last steps' rejections), and there W = V.
+    let usc = if offset == 0.0 && !watch_tension {
+        *sc
+    } else {
+        sc.without_shift()
+    };
     let mut sys = ImpactSystem::new(law, Phase::Unloading, usc);
     sys.x_offset = offset;
     let shift = State::new(offset, 0.0);
@@ -276,13 +289,13 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         ro.method,
         &mut sys,
         t_switch,
-        y_switch - shift,
+        usc.xw(y_switch[0], 0.0) - shift,
         unloading_events,
         &opts,
     )
     .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
     unloading.dense.shift(shift);
-    unloading.y += shift;
+    unloading.y = usc.xv(&(unloading.y + shift));
     force_evals += sys.force_evals;
     stats += unloading.stats;
     let end = match unloading.stop {
@@ -298,6 +311,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         y_switch,
         t_end: unloading.t,
         y_end: unloading.y,
+        unloading_scales: usc,
         end,
         stats,
         force_evals,

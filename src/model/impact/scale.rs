@@ -6,7 +6,7 @@ use crate::model::force::{ForceLaw, ImpactParams};
 use crate::model::ode::State;
 
 /// Reference scales of one impact, SI units.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct Scales {
     /// x_e: the elastic x_max (eq 5), m.
     pub x: f64,
@@ -24,9 +24,11 @@ pub(crate) struct Scales {
     pub mass: f64,
     /// Exponent n.
     pub n: f64,
-    /// γ of the solver's second variable W = V + γ·Xⁿ (the scaled w = ẋ + β·xⁿ/m of
+    /// γ of the solver's second variable W = V + γ·Xᵖ (the scaled w = ẋ + β·xᵖ/m of
     /// [`ForceLaw::impulse_coefficient`]); 0 when it is V itself.
     pub shift: f64,
+    /// p of W = V + γ·Xᵖ ([`ForceLaw::impulse_power`]).
+    pub shift_power: f64,
 }
 
 impl Scales {
@@ -45,16 +47,27 @@ impl Scales {
             mass: m,
             n: law.n,
             shift: 0.0,
+            shift_power: law.n,
         }
     }
 
     /// Scales of `law`'s validated parameters, with its closed-form damping impulse taken into
-    /// the second variable: γ = β·x_eⁿ/(m·v₀).
+    /// the second variable: γ = β·x_eᵖ/(m·v₀).
     pub fn of_law<L: ForceLaw>(law: &L) -> Self {
         let mut sc = Scales::new(law.params());
-        // β·(x_e·X)ⁿ/(m·v₀) = β·x_eⁿ/(m·v₀)·Xⁿ, and x_eⁿ = F_ref/k.
-        let k = law.params().law.k;
-        sc.shift = law.impulse_coefficient() * (sc.f / k) / (sc.mass * sc.v);
+        let beta = law.impulse_coefficient();
+        if beta == 0.0 {
+            return sc;
+        }
+        // β·(x_e·X)ᵖ/(m·v₀) = β·x_eᵖ/(m·v₀)·Xᵖ, and x_eⁿ = F_ref/k.
+        let p = law.impulse_power();
+        let x_e_p = if p == sc.n {
+            sc.f / law.params().law.k
+        } else {
+            sc.x.powf(p)
+        };
+        sc.shift = beta * x_e_p / (sc.mass * sc.v);
+        sc.shift_power = p;
         sc
     }
 
@@ -72,7 +85,7 @@ impl Scales {
         if self.shift == 0.0 {
             y[1]
         } else {
-            y[1] - self.shift * signed_pow_n(y[0], self.n)
+            y[1] - self.shift * self.shift_pow(y[0])
         }
     }
 
@@ -85,7 +98,21 @@ impl Scales {
     /// The solver state (X, W) of (X, V).
     #[inline]
     pub fn xw(&self, x: f64, v: f64) -> State {
-        State::new(x, v + self.shift * signed_pow_n(x, self.n))
+        State::new(x, v + self.shift * self.shift_pow(x))
+    }
+
+    /// Xᵖ of the shift W = V + γ·Xᵖ, continued oddly to X < 0 (as the laws' powers are).
+    #[inline]
+    pub fn shift_pow(&self, x: f64) -> f64 {
+        let p = self.shift_power;
+        if p == self.n {
+            signed_pow_n(x, p)
+        } else if p == 1.25 {
+            // Hertz–viscous on a sphere: x^{(n+1)/2} with n = 3/2, two square roots.
+            x * x.abs().sqrt().sqrt()
+        } else {
+            x * x.abs().powf(p - 1.0)
+        }
     }
 
     /// Mechanical energy ½mv² + k·x^{n+1}/(n+1) over ½mv₀², in scaled variables: V² + |X|^{n+1}

@@ -2,7 +2,6 @@
 //! dF/dt, not a sample near it) and the work ∮F dx (Gauss–Legendre on every step's interpolant).
 
 use crate::model::exact::quadrature::{gauss_legendre_4, gauss_legendre_6};
-use crate::model::force::law::signed_pow_n;
 use crate::model::force::{ContactEnd, ForceLaw, Phase};
 use crate::model::numeric::roots::brent_max;
 use crate::model::ode::{DenseOutput, Segment, State};
@@ -99,8 +98,8 @@ fn max_piece(rtol: f64) -> f64 {
 /// in s = √(T − T₀), which turns the xⁿ⁻¹ ∝ (T − T₀)ⁿ⁻¹ behaviour of first contact into a smooth integrand on every step,
 /// not only the first (the proposed model's damping is ∝ √x there, and steps a few lengths from
 /// first contact still feel it); the first step gets six points. The last step of unloading
-/// (separation) gets six points after the substitution T = T₀ + h·u²(3 − 2u). A loading phase
-/// integrated in (X, W) ([`Scales::shift`]) integrates the damping's work by parts.
+/// (separation) gets six points after the substitution T = T₀ + h·u²(3 − 2u). A phase integrated
+/// in (X, W) ([`Scales::shift`]) integrates the damping's work by parts.
 fn phase_work<L: ForceLaw>(
     law: &L,
     sc: &Scales,
@@ -114,11 +113,11 @@ fn phase_work<L: ForceLaw>(
         if sc.shift == 0.0 {
             law.dissipative_force(y[0] * sc.x, y[1] * sc.v, phase) / sc.f * y[1]
         } else {
-            // F_d = d(β·xⁿ)/dt, so ∫F_d·ẋ dt = [β·xⁿ·ẋ] + ∫β·xⁿ·F/m dt, and the bracket vanishes
-            // over loading (x = 0 at its start, ẋ = 0 at its end): γ·Xⁿ·F/F_ref has no xⁿ⁻¹
-            // singularity at first contact for the quadrature to miss.
-            sc.shift * signed_pow_n(y[0], sc.n) * law.phase_force(y[0] * sc.x, y[1] * sc.v, phase)
-                / sc.f
+            // F_d = d(β·xᵖ)/dt, so ∫F_d·ẋ dt = [β·xᵖ·ẋ] + ∫β·xᵖ·F/m dt, and the bracket vanishes
+            // over loading (x = 0 at its start, ẋ = 0 at its end) and over an unloading kept in W
+            // (ẋ = 0 at its start, x = 0 at its end): γ·Xᵖ·F/F_ref has no xᵖ⁻¹ singularity at
+            // first or last contact for the quadrature to miss.
+            sc.shift * sc.shift_pow(y[0]) * law.phase_force(y[0] * sc.x, y[1] * sc.v, phase) / sc.f
         }
     };
     let segments = dense.segments();
@@ -189,7 +188,7 @@ pub(crate) fn cycle_work<L: ForceLaw>(law: &L, sc: &Scales, run: &Run) -> f64 {
         run.rtol,
     ) + phase_work(
         law,
-        &sc.without_shift(),
+        &run.unloading_scales,
         &run.unloading,
         Phase::Unloading,
         (run.t_switch, run.t_end),
@@ -209,7 +208,7 @@ pub(crate) fn summarize<L: ForceLaw>(
     let loading_peak = phase_peak(law, sc, &run.loading, Phase::Loading, 0.0, run.t_switch);
     let unloading_peak = phase_peak(
         law,
-        &sc.without_shift(),
+        &run.unloading_scales,
         &run.unloading,
         Phase::Unloading,
         run.t_switch,

@@ -1,8 +1,8 @@
 //! m·ẍ = −F(x, ẋ) as a first-order system in scaled variables, with the energy guard.
 //!
-//! The state is (X, W) with W = V + γ·Xⁿ ([`Scales::shift`]): for the proposed model the damping
-//! impulse is taken into W, whose rate is then the elastic force alone; for every other law γ = 0
-//! and W = V.
+//! The state is (X, W) with W = V + γ·Xᵖ ([`Scales::shift`]): for the proposed model (p = n) and
+//! Hertz–viscous (p = (n+1)/2) the damping impulse is taken into W, whose rate is then the elastic
+//! force alone; for every other law γ = 0 and W = V.
 
 use crate::model::force::law::{abs_pow_nm1, signed_pow_n};
 use crate::model::force::{ForceLaw, Phase};
@@ -17,7 +17,7 @@ use super::scale::Scales;
 pub const ENERGY_LIMIT: f64 = 1.5;
 
 /// dX/dT = V, dV/dT = −(x_e/(m·v₀²))·F(x_e·X, v₀·V) in one phase of the impact; with γ ≠ 0,
-/// dX/dT = W − γ·Xⁿ, dW/dT = −(x_e/(m·v₀²))·k·xⁿ (the damping's rate n·γ·Xⁿ⁻¹·V cancels it exactly).
+/// dX/dT = W − γ·Xᵖ, dW/dT = −(x_e/(m·v₀²))·k·xⁿ (the damping's rate p·γ·Xᵖ⁻¹·V cancels it exactly).
 pub(crate) struct ImpactSystem<'a, L> {
     pub law: &'a L,
     pub phase: Phase,
@@ -57,7 +57,12 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
         } else {
             // k·xⁿ/F_ref = Xⁿ, and accel·F_ref = (n+1)/2.
             let xn = signed_pow_n(y[0], sc.n);
-            State::new(y[1] - sc.shift * xn, -sc.accel * sc.f * xn)
+            let xp = if sc.shift_power == sc.n {
+                xn
+            } else {
+                sc.shift_pow(y[0])
+            };
+            State::new(y[1] - sc.shift * xp, -sc.accel * sc.f * xn)
         }
     }
 
@@ -73,7 +78,8 @@ impl<L: ForceLaw> OdeSystem for ImpactSystem<'_, L> {
             Matrix2::new(0.0, 1.0, -sc.accel * sc.x * fx, -sc.accel * sc.v * fv)
         } else {
             let dxn = sc.n * abs_pow_nm1(x, sc.n);
-            Matrix2::new(-sc.shift * dxn, 1.0, -sc.accel * sc.f * dxn, 0.0)
+            let dxp = sc.shift_power * sc.shift_pow(x) / x;
+            Matrix2::new(-sc.shift * dxp, 1.0, -sc.accel * sc.f * dxn, 0.0)
         }
     }
 

@@ -16,6 +16,8 @@ struct Curves {
     unloading: DenseOutput,
     /// Scaled time of the phase switch on the dense output.
     t_switch: f64,
+    /// The scales of the unloading dense output ([`Run::unloading_scales`]).
+    unloading_scales: Scales,
     /// The law as these curves unload: anchored at their own turning point
     /// ([`ForceLaw::unloading_at_turn`]; the law itself unless it is a hysteresis such as
     /// Thornton's). An exact solution's law is anchored at the exact x_max; its curves, integrated,
@@ -41,16 +43,16 @@ impl Curves {
             let y = self.loading.eval_from(tau, &mut cursor.loading);
             (scales.xv(&y), Phase::Loading)
         } else if tau <= self.unloading.t_end() {
-            // Unloading is integrated in (X, V) itself (see `phases::Run`).
             (
-                self.unloading.eval_from(tau, &mut cursor.unloading),
+                self.unloading_scales
+                    .xv(&self.unloading.eval_from(tau, &mut cursor.unloading)),
                 Phase::Unloading,
             )
         } else {
             // An exact solution may end after its curve (a Hunt–Crossley tail where F has decayed
             // below the integrator's resolution and it cut contact off): the bodies coast.
             let t_curve = self.unloading.t_end();
-            let end = self.unloading.eval(t_curve);
+            let end = self.unloading_scales.xv(&self.unloading.eval(t_curve));
             let coast = end[1] * (tau - t_curve);
             (
                 State::new((end[0] + coast).max(0.0), end[1]),
@@ -65,6 +67,7 @@ impl Curves {
             loading: run.loading,
             unloading: run.unloading,
             t_switch: run.t_switch,
+            unloading_scales: run.unloading_scales,
         }
     }
 }

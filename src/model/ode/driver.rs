@@ -232,11 +232,15 @@ fn land(
     let mut corrections = 0;
     // The previous landing (time, g), for a secant rate from the landed states themselves.
     let mut previous: Option<(f64, f64)> = None;
+    // The first step of the previous landing where it took more than one: the span was rejected
+    // there (a step ending on the event can be harder than the one straddling it, e.g. a force
+    // ∝ x^¼ ending at x = 0), and the corrections move the target by far less than a step.
+    let mut first_step: Option<f64> = None;
     loop {
         let spent = stats.steps + stats.rejected_steps;
         let span = target - t_start;
         let sub_opts = Options {
-            h_initial: Some(span),
+            h_initial: Some(first_step.map_or(span, |h| h.min(span))),
             h_max: span,
             t_max: target,
             max_steps: opts.max_steps.saturating_sub(spent).max(1),
@@ -244,6 +248,8 @@ fn land(
         };
         let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts)?;
         *stats += landing.stats;
+        let segments = landing.dense.segments();
+        first_step = (segments.len() > 1).then(|| segments[0].t_end() - segments[0].t_start());
         let g_landed = g(landing.t, &landing.y);
         if let Some((t_prev, g_prev)) = previous {
             let secant = (g_landed - g_prev) / (landing.t - t_prev);

@@ -82,6 +82,8 @@ pub(super) struct PiController {
     facc2: f64,
     /// ln of the previous accepted error, floored at ln 1e-4 (Hairer's FACOLD).
     ln_facold: f64,
+    /// (h, ln err) of the last rejected attempt since the last accepted step.
+    last_rejection: Option<(f64, f64)>,
 }
 
 /// ln 1e-4: Hairer's floor and initial value of FACOLD.
@@ -107,6 +109,7 @@ impl PiController {
             facc1: 1.0 / facmin,
             facc2: 1.0 / facmax,
             ln_facold: LN_FACOLD_MIN,
+            last_rejection: None,
         }
     }
 
@@ -118,6 +121,7 @@ impl PiController {
         let fac = (self.expo1 * ln_err - self.beta * self.ln_facold).exp();
         let fac = (fac / self.safety).clamp(self.facc2, self.facc1);
         self.ln_facold = ln_err.max(LN_FACOLD_MIN);
+        self.last_rejection = None;
         let mut h_new = (h / fac).min(h_max);
         if after_reject {
             h_new = h_new.min(h);
@@ -127,9 +131,29 @@ impl PiController {
 
     /// The retry step after a rejected step with error `err` > 1 (no PI memory: Hairer uses the
     /// pure I factor here).
-    pub(super) fn rejected(&self, err: f64, h: f64) -> f64 {
-        let fac11 = (self.expo1 * err.ln()).exp();
-        h / self.facc1.min(fac11 / self.safety)
+    ///
+    /// A second rejection from the same point measures how the error really scales with h,
+    /// err ∝ h^q from the two attempts, and retries with that q instead of the method's order: where
+    /// the solution is not smooth (a damping force ∝ x^¼ at first or last contact gives q ≈ 2.3
+    /// against DOP853's 8), the pure I factor shrinks h by err^(1/8) and needs four or five
+    /// rejections to get under the tolerance, where the measured q needs one. The retry aims at
+    /// the error the I factor aims at (safety^(1/expo1)), so accepted steps keep their margin.
+    pub(super) fn rejected(&mut self, err: f64, h: f64) -> f64 {
+        let ln_err = err.ln();
+        let mut expo = self.expo1;
+        if let Some((h_prev, ln_prev)) = self.last_rejection {
+            let q = (ln_prev - ln_err) / (h_prev / h).ln();
+            if q.is_finite() && q > 0.0 {
+                // Between first order and the method's own (the I factor's exponent).
+                expo = 1.0 / q.clamp(1.0, 1.0 / self.expo1);
+            }
+        }
+        self.last_rejection = Some((h, ln_err));
+        // The I factor err^expo1/safety aims at the error safety^(1/expo1) (0.43 for DOP853);
+        // with the measured exponent the retry aims at the same error, not at a larger one.
+        let ln_target = self.safety.ln() / self.expo1;
+        let fac11 = (expo * (ln_err - ln_target)).exp();
+        h / self.facc1.min(fac11)
     }
 }
 
@@ -207,6 +231,7 @@ mod tests {
         assert!((c.accepted(0.0, 1.0, f64::INFINITY, false) - 10.0).abs() < 1e-12);
         // Huge error: shrink capped at facmin = 0.2.
         assert!((c.rejected(1e12, 1.0) - 0.2).abs() < 1e-12);
+        c.accepted(0.5, 1.0, f64::INFINITY, true);
         // After a rejection the step may not grow.
         assert!(c.accepted(1e-3, 1.0, f64::INFINITY, true) <= 1.0);
         // h_max caps the proposal.
@@ -223,6 +248,25 @@ mod tests {
         let h2 = c.accepted(0.25, 1.0, f64::INFINITY, false);
         let fac = 0.25f64.powf(0.17) / 0.5f64.powf(0.04) / 0.9;
         assert!((h2 - 1.0 / fac).abs() < 1e-14);
+    }
+
+    #[test]
+    fn a_second_rejection_retries_with_the_measured_order() {
+        let mut c = PiController::dop853();
+        // The first rejection knows only the method's order: h·0.9/err^(1/8).
+        let h1 = c.rejected(4.0, 1.0);
+        assert!((h1 - 0.9 / 4f64.powf(0.125)).abs() < 1e-14);
+        // err ∝ h² measured over the two attempts: the retry aims with q = 2 at the error the
+        // I factor aims at, 0.9⁸.
+        let err2 = 4.0 * h1 * h1;
+        let h2 = c.rejected(err2, h1);
+        let target = 0.9f64.powi(8);
+        assert!((h2 - h1 * (target / err2).sqrt()).abs() < 1e-14, "{h2}");
+        assert!((4.0 * h2 * h2 / target - 1.0).abs() < 1e-12);
+        // An accepted step forgets the rejections: the next one uses the method's order again.
+        c.accepted(0.5, h2, f64::INFINITY, true);
+        let h3 = c.rejected(4.0, 1.0);
+        assert!((h3 - h1).abs() < 1e-14);
     }
 
     #[test]
