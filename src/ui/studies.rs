@@ -143,16 +143,10 @@ impl Studies {
 mod tests {
     use super::*;
     use crate::model::ForceModel;
+    use crate::model::study::runner::tests::bounds;
     use crate::model::study::sweep::SweepError;
     use crate::ui::jobs::{Jobs, supersede, take_next};
     use crate::ui::testing::fig5_params;
-
-    fn bounds(v0: f64) -> StudySpec {
-        StudySpec::Bounds {
-            model: ForceModel::Proposed,
-            params: fig5_params(v0),
-        }
-    }
 
     /// A failed outcome of `job`, told apart from others by `mark`.
     fn failed(job: &StudyJob, mark: usize) -> StudyOutcome {

@@ -3,6 +3,7 @@
 
 use hertz_tui::model::ForceModel;
 use hertz_tui::ui::action::Action;
+use hertz_tui::ui::app::App;
 use hertz_tui::ui::update::update;
 
 use super::render::{app, render};
@@ -44,13 +45,7 @@ fn every_row_of_the_models_pane_is_named_in_one_form() {
         // Walk the cursor down the whole list so that every row is drawn once.
         let mut seen: Vec<(ForceModel, Vec<usize>)> = Vec::new();
         for _ in 0..120 {
-            let terminal = render(&app, width, height);
-            let buffer = terminal.backend().buffer();
-            let rows: Vec<String> = buffer
-                .content
-                .chunks(usize::from(width))
-                .map(|row| row.iter().map(|c| c.symbol()).collect())
-                .collect();
+            let rows = screen_rows(&app, width, height);
             for name in pane_names(&rows) {
                 let found = forms_of(&name)
                     .unwrap_or_else(|| panic!("{width}×{height}: {name:?} is no model's name"));
@@ -164,13 +159,7 @@ fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
         ));
         let mut seen: Vec<ForceModel> = Vec::new();
         for _ in 0..120 {
-            let terminal = render(&app, width, height);
-            let buffer = terminal.backend().buffer();
-            let rows: Vec<String> = buffer
-                .content
-                .chunks(usize::from(width))
-                .map(|row| row.iter().map(|c| c.symbol()).collect())
-                .collect();
+            let rows = screen_rows(&app, width, height);
             let mut family = None;
             for (y, row) in rows.iter().enumerate() {
                 let left: String = row.chars().take(left_width).collect();
@@ -226,4 +215,16 @@ fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
             );
         }
     }
+}
+
+/// The screen `app` draws at `width`×`height`, a string a row.
+fn screen_rows(app: &App, width: u16, height: u16) -> Vec<String> {
+    let terminal = render(app, width, height);
+    terminal
+        .backend()
+        .buffer()
+        .content
+        .chunks(usize::from(width))
+        .map(|row| row.iter().map(|c| c.symbol()).collect())
+        .collect()
 }

@@ -364,11 +364,12 @@ fn stability(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::model::scene::tests::fig5_params;
 
-    fn bounds(v0: f64) -> StudySpec {
+    /// The bounds study of the Fig. 5 scene's proposed model at `v0`.
+    pub(crate) fn bounds(v0: f64) -> StudySpec {
         StudySpec::Bounds {
             model: ForceModel::Proposed,
             params: fig5_params(v0),
