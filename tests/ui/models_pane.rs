@@ -3,8 +3,8 @@
 
 use hertz_tui::model::ForceModel;
 use hertz_tui::ui::action::Action;
-use hertz_tui::ui::app::App;
 use hertz_tui::ui::update::update;
+use ratatui::buffer::Buffer;
 
 use super::render::{app, render};
 
@@ -45,7 +45,9 @@ fn every_row_of_the_models_pane_is_named_in_one_form() {
         // Walk the cursor down the whole list so that every row is drawn once.
         let mut seen: Vec<(ForceModel, Vec<usize>)> = Vec::new();
         for _ in 0..120 {
-            let rows = screen_rows(&app, width, height);
+            let terminal = render(&app, width, height);
+            let buffer = terminal.backend().buffer();
+            let rows = rows_of(buffer, width);
             for name in pane_names(&rows) {
                 let found = forms_of(&name)
                     .unwrap_or_else(|| panic!("{width}×{height}: {name:?} is no model's name"));
@@ -159,7 +161,9 @@ fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
         ));
         let mut seen: Vec<ForceModel> = Vec::new();
         for _ in 0..120 {
-            let rows = screen_rows(&app, width, height);
+            let terminal = render(&app, width, height);
+            let buffer = terminal.backend().buffer();
+            let rows = rows_of(buffer, width);
             let mut family = None;
             for (y, row) in rows.iter().enumerate() {
                 let left: String = row.chars().take(left_width).collect();
@@ -217,12 +221,9 @@ fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
     }
 }
 
-/// The screen `app` draws at `width`×`height`, a string a row.
-fn screen_rows(app: &App, width: u16, height: u16) -> Vec<String> {
-    let terminal = render(app, width, height);
-    terminal
-        .backend()
-        .buffer()
+/// The rows of `buffer`, `width` cells each, a string a row.
+fn rows_of(buffer: &Buffer, width: u16) -> Vec<String> {
+    buffer
         .content
         .chunks(usize::from(width))
         .map(|row| row.iter().map(|c| c.symbol()).collect())
