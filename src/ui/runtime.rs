@@ -2,18 +2,21 @@
 //! redraws. Input is read on its own thread, solves and studies each on a job queue of their own,
 //! so none blocks another.
 //!
-//! Redraws are coalesced without waiting: the input thread reads every event the terminal has
-//! already sent and passes them on together, and the loop handles everything waiting in its
-//! channel before one draw. A single key is drawn at once; a burst (keys typed ahead over a slow
-//! link, a held key while a frame is drawn) is drawn once. Each frame is wrapped in synchronized
+//! Redraws are coalesced: the input thread reads every event the terminal has already sent and
+//! passes them on together, and the loop handles everything waiting in its channel before one
+//! draw, so a burst (keys typed ahead over a slow link, a held key while a frame is drawn) is
+//! drawn once. The loop never waits for keys that may come; it waits only for the solves a key
+//! has started, which take well under a millisecond for every law of the table, so that the key
+//! and its results are one frame, not a frame of "computing" marks and another soon after; a
+//! slower solve is drawn as computing [`SOLVE_WAIT`] after the key and again when it reports. Each frame is wrapped in synchronized
 //! output (terminals that support it show it at once; others ignore the sequence). Bracketed
 //! paste is on, so that pasted text arrives as one paste and never as keys; mouse capture follows
 //! the app's `m` toggle.
 
 use std::io::Write;
-use std::sync::mpsc::{self, Receiver, Sender};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::thread;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use color_eyre::eyre::{WrapErr, eyre};
 use ratatui::crossterm::event::{
@@ -107,6 +110,15 @@ where
     Ok(())
 }
 
+/// The longest a frame waits for the solves the keys before it started (a frame at 120 Hz).
+pub const SOLVE_WAIT: Duration = Duration::from_millis(8);
+
+/// How long to wait before drawing, `None` to draw now: while solves are pending, until the
+/// frame's deadline.
+fn wait_before_drawing(solving: bool, now: Instant, deadline: Instant) -> Option<Duration> {
+    (solving && now < deadline).then(|| deadline - now)
+}
+
 /// `first` and every wake already waiting behind it: what one draw answers.
 fn waiting(first: Wake, wakes: &Receiver<Wake>) -> Vec<Wake> {
     std::iter::once(first).chain(wakes.try_iter()).collect()
@@ -131,6 +143,7 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     // The sweep view sizes its sweeps to the chart: the app needs the size before any resize.
     let size = terminal.size().wrap_err("cannot read the terminal size")?;
     update(&mut app, Action::Resize(size.width, size.height));
+    let mut due = Instant::now() + SOLVE_WAIT;
     loop {
         for job in app.take_jobs() {
             if !solves.submit(job) {
@@ -150,10 +163,25 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
                 execute!(std::io::stdout(), DisableMouseCapture)?;
             }
         }
-        draw_synchronized(terminal, &mut std::io::stdout(), &app)?;
-        let first = wakes
-            .recv()
-            .wrap_err("the input and solver threads stopped")?;
+        let first = match wait_before_drawing(app.solutions.any_pending(), Instant::now(), due) {
+            Some(wait) => match wakes.recv_timeout(wait) {
+                Ok(wake) => wake,
+                // The frame is due: drawn, with what is still computing marked so.
+                Err(RecvTimeoutError::Timeout) => continue,
+                Err(RecvTimeoutError::Disconnected) => {
+                    return Err(eyre!("the input and solver threads stopped"));
+                }
+            },
+            None => {
+                draw_synchronized(terminal, &mut std::io::stdout(), &app)?;
+                let wake = wakes
+                    .recv()
+                    .wrap_err("the input and solver threads stopped")?;
+                // What this wake starts is drawn by then at the latest.
+                due = Instant::now() + SOLVE_WAIT;
+                wake
+            }
+        };
         for wake in waiting(first, &wakes) {
             match wake {
                 Wake::Terminal(events) => {
@@ -199,6 +227,20 @@ mod tests {
     /// The keys of `text`, read together.
     fn key_wake(text: &str) -> Wake {
         Wake::Terminal(text.chars().map(key).collect())
+    }
+
+    #[test]
+    fn a_frame_waits_only_for_pending_solves_and_only_until_it_is_due() {
+        let now = Instant::now();
+        let due = now + SOLVE_WAIT;
+        assert_eq!(wait_before_drawing(true, now, due), Some(SOLVE_WAIT));
+        assert_eq!(wait_before_drawing(false, now, due), None, "nothing to wait for");
+        assert_eq!(wait_before_drawing(true, due, due), None, "due");
+        assert_eq!(
+            wait_before_drawing(true, due + SOLVE_WAIT, due),
+            None,
+            "overdue"
+        );
     }
 
     #[test]
