@@ -1,16 +1,15 @@
 //! Chart data: the solver's dense output sampled at the chart's resolution, in display units,
 //! with the true peaks, as a [`Chart`] for any back-end.
 
-use crate::model::ForceModel;
-use crate::model::impact::{ImpactSolution, Sample};
-
 use std::borrow::Borrow;
 
 use crate::chart::{Chart, Ink, Series as ChartSeries};
+use crate::format::units::{self, Unit};
+use crate::model::ForceModel;
+use crate::model::impact::{ImpactSolution, Sample};
 
 use super::kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
-use crate::format::units::{self, Unit};
 
 /// Dots across the widest plot each chart gets on the screen, and down the tallest: what a solution
 /// is sampled for, once, when it arrives (see [`Series::for_charts`]).

@@ -4,9 +4,8 @@
 //! of a round step (1, 2, 2.5 or 5 × 10ᵏ) and every label then sits exactly on its value. A log
 //! axis plots log₁₀ of the display value, its bounds on whole decades and its labels at decades.
 
-use crate::format::{self, Zeros};
-
 use crate::format::units::{self, Prefix, Unit};
+use crate::format::{self, Zeros};
 
 /// The longest plain tick label: a longer one (5000000000000001830474) is scientific (5e21).
 const PLAIN_LABEL: usize = 6;

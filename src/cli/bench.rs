@@ -2,12 +2,6 @@
 
 use serde::Serialize;
 
-use super::args::{BenchArgs, Format};
-use super::error::CliError;
-use super::json;
-use super::layout::columns;
-use super::solve::load_scene;
-use super::units::{engineering, scientific};
 use crate::format::csv;
 use crate::model::impact::ImpactSummary;
 use crate::model::ode::Method;
@@ -17,6 +11,13 @@ use crate::model::study::stability::{
     STEP_TOLERANCE, StepBound, peak_angular_frequency, stability_bound, step_bounds,
 };
 use crate::model::study::work_precision::{Setting, Timing, WorkPrecisionRow, work_precision};
+
+use super::args::{BenchArgs, Format};
+use super::error::CliError;
+use super::json;
+use super::layout::columns;
+use super::solve::load_scene;
+use super::units::{engineering, scientific};
 
 /// One rung of the work-precision ladder as printed: `rtol` or `dt` is set, errors are relative.
 #[derive(Debug, Clone, PartialEq, Serialize)]

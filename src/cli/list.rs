@@ -1,7 +1,8 @@
 //! `hertz-tui list`: every material and scene, one per line, with its origin and description.
 
-use super::layout::columns;
 use crate::model::presets::{DEFAULT_SCENE, Origin, PresetInfo, Registry};
+
+use super::layout::columns;
 
 /// The listing as text.
 pub fn render(registry: &Registry) -> String {

@@ -1,14 +1,15 @@
 //! `solve --format table`: the scene, the quasistatic estimate and the impacts as aligned text.
 
+use crate::model::body::{Body, Shape};
+use crate::model::quasistatic::ContactGeometry;
+use crate::model::{Quasistatic, Scene};
+
 use super::layout::columns;
 use super::solve::{ImpactRow, SolveReport};
 use super::units::{
     NOT_A_NUMBER, compact, compact_number, count, engineering, exact_number, scientific,
     significant,
 };
-use crate::model::body::{Body, Shape};
-use crate::model::quasistatic::ContactGeometry;
-use crate::model::{Quasistatic, Scene};
 
 /// The whole report as text.
 pub fn render(report: &SolveReport) -> String {

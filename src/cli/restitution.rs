@@ -1,14 +1,15 @@
 //! `hertz-tui restitution`: the realised e of each law for requested e = 0.1, 0.3, 0.5, 0.7, 0.9.
 
-use super::args::{Format, RestitutionArgs};
-use super::error::CliError;
-use super::layout::columns;
-use super::solve::{load_scene, models_or_all};
 use crate::format::csv::field;
 use crate::format::{Zeros, significant};
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
 use crate::model::restitution::{REQUESTED, RestitutionRow, table};
+
+use super::args::{Format, RestitutionArgs};
+use super::error::CliError;
+use super::layout::columns;
+use super::solve::{load_scene, models_or_all};
 
 /// The table of realised e for the scene the arguments name, in the format asked for.
 pub fn run(args: &RestitutionArgs, registry: &Registry) -> Result<String, CliError> {

@@ -2,8 +2,6 @@
 
 use serde::Serialize;
 
-use super::args::{SceneSelection, SolveArgs};
-use super::error::CliError;
 use crate::format::recommendation;
 use crate::model::calibrate::scene_or_calibrated;
 use crate::model::force::Damping;
@@ -12,6 +10,9 @@ use crate::model::presets::Registry;
 use crate::model::recommend::recommend;
 use crate::model::warnings::{ModelWarning, impact_warnings, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
+
+use super::args::{SceneSelection, SolveArgs};
+use super::error::CliError;
 
 /// Everything `solve` computed; serialized as the JSON output.
 #[derive(Debug, Serialize)]

@@ -1,6 +1,15 @@
 //! `hertz-tui sweep`: one scene key varied over a range; rows in parameter order.
 
+use std::io::Write;
+
 use serde::Serialize;
+
+use crate::format::{csv, push_shortest_exp};
+use crate::model::ForceModel;
+use crate::model::Scene;
+use crate::model::impact::SolveOptions;
+use crate::model::presets::Registry;
+use crate::model::study::sweep::{SweepPlan, SweepRow, SweepSpec, check, sweep};
 
 use super::args::{Format, SweepArgs};
 use super::error::CliError;
@@ -9,13 +18,6 @@ use super::json;
 use super::layout::columns;
 use super::solve::{load_scene, models_or_all};
 use super::units::engineering;
-use crate::format::{csv, push_shortest_exp};
-use crate::model::ForceModel;
-use crate::model::Scene;
-use crate::model::impact::SolveOptions;
-use crate::model::presets::Registry;
-use crate::model::study::sweep::{SweepPlan, SweepRow, SweepSpec, check, sweep};
-use std::io::Write;
 
 /// The JSON document of a sweep.
 #[derive(Debug, Serialize)]

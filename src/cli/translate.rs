@@ -1,12 +1,13 @@
 //! `hertz-tui translate`: a scene's contact parameters for one simulation engine, calibrated with
 //! hertz-tui's own solver, and what that engine will really give.
 
-use super::args::{TranslateArgs, TranslateFormat};
-use super::error::CliError;
-use super::solve::load_scene;
 use crate::format::translation::render;
 use crate::model::engine;
 use crate::model::presets::Registry;
+
+use super::args::{TranslateArgs, TranslateFormat};
+use super::error::CliError;
+use super::solve::load_scene;
 
 /// Translates the scene for the engine and renders it.
 pub fn run(args: &TranslateArgs, registry: &Registry) -> Result<String, CliError> {

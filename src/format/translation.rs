@@ -4,8 +4,9 @@
 
 use std::fmt::Write;
 
-use super::{Zeros, engineering, significant};
 use crate::model::engine::Translation;
+
+use super::{Zeros, engineering, significant};
 
 /// The translation as text: what the engine integrates, its parameters, what it realises, the
 /// caveats, and the fragments to paste (last, so they can be copied whole).

@@ -1,8 +1,7 @@
 //! The elastic power law F = k·xⁿ (eq 1) and the exact impact it produces (docs/physics.md §3).
 
-use super::numeric::beta::{beta, beta_reg};
-
 use super::error::{ModelError, require, require_positive};
+use super::numeric::beta::{beta, beta_reg};
 
 /// F = k·xⁿ with k > 0 and n ≥ 1 (n = 3/2 for spheres, 1 ≤ n ≤ 1.5 for cylinders).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

@@ -3,12 +3,12 @@
 use tui_input::InputRequest;
 
 use crate::model::scene_key::BodyIndex;
+use crate::model::study::runner::StudyOutcome;
 
 use super::field::Nudge;
 use super::jobs::Report;
 use super::solutions::Outcome;
 use super::tab::Tab;
-use crate::model::study::runner::StudyOutcome;
 
 /// One step of the state machine, from a key, the terminal or the solver.
 #[derive(Debug, Clone)]

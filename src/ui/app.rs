@@ -10,8 +10,10 @@ use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
 use crate::model::scene_file::SceneView;
 use crate::model::scene_key::{BodyIndex, SceneKey};
+use crate::model::study::runner::{StudyJob, StudySpec};
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
+use crate::ui::studies::Studies;
 
 use super::action::Jump;
 use super::field::{self, Draft, Field, Nudge, Section};
@@ -20,8 +22,6 @@ use super::solutions::{Job, Solutions};
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
 use super::views::ViewStates;
-use crate::model::study::runner::{StudyJob, StudySpec};
-use crate::ui::studies::Studies;
 
 /// Where the cursor is: on a form field or on a model of the checklist.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

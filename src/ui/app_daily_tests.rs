@@ -8,6 +8,10 @@ use ratatui::crossterm::event::{
     Event, KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
 
+use crate::model::ForceModel;
+use crate::model::presets::{DEFAULT_SCENE, Registry};
+use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+
 use super::action::Action;
 use super::app::{App, Confirm, Cursor, Mode};
 use super::app_tests::{app, enter_text, key, key_with, settle, temp_path, type_text};
@@ -17,9 +21,6 @@ use super::render;
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
 use super::update::update;
-use crate::model::ForceModel;
-use crate::model::presets::{DEFAULT_SCENE, Registry};
-use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
 
 const V0: Field = Field::Number(SceneKey::V0);
 const E1: Field = Field::Number(SceneKey::Body(BodyIndex::One, BodyField::YoungsModulus));

@@ -3,10 +3,12 @@
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
+use crate::chart::work_precision::Cost;
 use crate::model::ForceModel;
 use crate::model::ode::Method;
 use crate::model::presets::Registry;
 use crate::model::scene_key::SceneKey;
+use crate::model::study::runner::{StudyKind, StudySpec};
 use crate::model::study::stability::critical_step;
 
 use super::action::Action;
@@ -19,8 +21,6 @@ use super::testing::fig5_scene;
 use super::update::update;
 use super::views;
 use super::views::sweep::settings::SweepField;
-use crate::chart::work_precision::Cost;
-use crate::model::study::runner::{StudyKind, StudySpec};
 
 fn app() -> App {
     let mut app = App::new(

@@ -2,6 +2,10 @@
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
+use crate::model::presets::Registry;
+use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use crate::model::{ForceModel, ModelError};
+
 use super::action::Action;
 use super::app::{App, ChartKind, Cursor, Mode, PromptKind};
 use super::field::Field;
@@ -11,9 +15,6 @@ use super::style::{MarkerStyle, Theme};
 use super::testing::fig5_scene;
 use super::update::update;
 use super::worker;
-use crate::model::presets::Registry;
-use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
-use crate::model::{ForceModel, ModelError};
 
 const V0: Field = Field::Number(SceneKey::V0);
 

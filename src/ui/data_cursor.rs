@@ -2,9 +2,8 @@
 //! it) and each curve's value there, read from the solver's dense output — at a time directly,
 //! at an approach x by locating every time the curve passes x (loading and unloading).
 
-use crate::model::impact::{ImpactSolution, Sample};
-
 use crate::chart::kind::ChartKind;
+use crate::model::impact::{ImpactSolution, Sample};
 
 /// Steps of the cursor along the axis: per mille of its length.
 pub const FULL: u16 = 1000;

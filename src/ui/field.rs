@@ -2,13 +2,12 @@
 //!
 //! Numeric fields are the model's [`SceneKey`]s; the UI adds units, display prefixes and steps.
 
+use crate::format::units::{self, Prefix, Unit};
 use crate::model::body::Shape;
 use crate::model::impact::{MethodChoice, SolveOptions, UnknownMethod};
 use crate::model::ode::Method;
 use crate::model::scene::Scene;
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
-
-use crate::format::units::{self, Prefix, Unit};
 
 /// One row of a form pane.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

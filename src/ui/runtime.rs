@@ -26,6 +26,8 @@ use ratatui::crossterm::execute;
 use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
 use ratatui::{DefaultTerminal, Terminal};
 
+use crate::model::study::runner::{StudyJob, StudyOutcome};
+
 use super::action::Action;
 use super::app::App;
 use super::jobs::{Jobs, Report};
@@ -33,7 +35,6 @@ use super::keymap::action_for_event;
 use super::render;
 use super::solutions::{Job, Outcome};
 use super::update::update;
-use crate::model::study::runner::{StudyJob, StudyOutcome};
 
 /// What wakes the loop.
 enum Wake {
@@ -234,7 +235,11 @@ mod tests {
         let now = Instant::now();
         let due = now + SOLVE_WAIT;
         assert_eq!(wait_before_drawing(true, now, due), Some(SOLVE_WAIT));
-        assert_eq!(wait_before_drawing(false, now, due), None, "nothing to wait for");
+        assert_eq!(
+            wait_before_drawing(false, now, due),
+            None,
+            "nothing to wait for"
+        );
         assert_eq!(wait_before_drawing(true, due, due), None, "due");
         assert_eq!(
             wait_before_drawing(true, due + SOLVE_WAIT, due),

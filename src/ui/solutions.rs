@@ -6,11 +6,10 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::chart::sample::{ChartDots, Series};
 use crate::model::force::{Damping, LAW_COUNT};
 use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::{ForceModel, ImpactParams};
-
-use crate::chart::sample::{ChartDots, Series};
 
 /// One impact to solve off the UI thread.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -7,6 +7,7 @@ use tui_input::{Input, InputRequest};
 use crate::model::presets::{Origin, Registry, SaveTarget, is_kebab_case, kebab_case};
 use crate::model::scene_file::SceneView;
 use crate::model::scene_key::BodyIndex;
+use crate::model::study::runner::StudyOutcome;
 use crate::model::{ForceModel, Scene};
 
 use super::action::{Action, Jump};
@@ -20,7 +21,6 @@ use super::mouse;
 use super::picker::{EntryKind, Picker};
 use super::solutions::Outcome;
 use super::views;
-use crate::model::study::runner::StudyOutcome;
 
 /// Advances the state machine by one action.
 pub fn update(app: &mut App, action: Action) {

@@ -5,11 +5,10 @@
 use std::sync::Arc;
 use std::time::Instant;
 
+use crate::model::ForceModel;
 use crate::model::calibrate::scene_or_calibrated;
 use crate::model::force::AnyLaw;
 use crate::model::impact::{ImpactError, ImpactSolution, solve_law};
-
-use crate::model::ForceModel;
 
 use super::jobs::Background;
 use super::solutions::{Job, Outcome};

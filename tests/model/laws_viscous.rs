@@ -6,9 +6,8 @@ use hertz_tui::model::force::kelvin_voigt::damping_ratio;
 use hertz_tui::model::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams};
 use hertz_tui::model::impact::{ImpactSummary, MethodUsed, SolveOptions, solve_impact, solve_law};
 
-use crate::laws_common::{dop853, sphere};
-
 use crate::impact_exact::cylinder;
+use crate::laws_common::{dop853, sphere};
 
 const KV: ForceModel = ForceModel::with_id("kelvin-voigt");
 const KV_TENSION: ForceModel = ForceModel::with_id("kelvin-voigt-tension");

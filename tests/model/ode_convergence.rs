@@ -1,8 +1,9 @@
 //! Convergence orders of the integrators against closed forms (or a tight DOP853 reference):
 //! fixed-step error ratios when the step halves, adaptive error against rtol, dense-output order.
 
-use crate::ode_common::{Harmonic, Nonlinear, adaptive, fixed, observed_orders, solve};
 use hertz_tui::model::ode::{Method, OdeSystem, Options, State, integrate};
+
+use crate::ode_common::{Harmonic, Nonlinear, adaptive, fixed, observed_orders, solve};
 
 const FIXED: [(Method, f64); 4] = [
     (Method::Euler, 1.0),

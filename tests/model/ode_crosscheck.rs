@@ -2,9 +2,10 @@
 //! `differential-equations` crate's DOP853, on a damped Hertz contact without closed form:
 //! ẍ = −k·x^{3/2} − b·x^{1/2}·ẋ from x = 0, ẋ = v₀ until contact ends (x returns to 0).
 
-use crate::ode_common::DampedHertz;
 use differential_equations::prelude::{ExplicitRungeKutta, IVP, ODE};
 use hertz_tui::model::ode::{Direction, Event, Method, OdeSystem, Options, State, Stop, integrate};
+
+use crate::ode_common::DampedHertz;
 
 const K: f64 = 1.0;
 const B: f64 = 0.5;

@@ -2,8 +2,9 @@
 
 use std::f64::consts::PI;
 
-use crate::ode_common::{Harmonic, adaptive, fixed};
 use hertz_tui::model::ode::{Direction, Event, Method, Options, State, Stop, integrate};
+
+use crate::ode_common::{Harmonic, adaptive, fixed};
 
 fn x_of(_t: f64, y: &State) -> f64 {
     y[0]

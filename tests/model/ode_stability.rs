@@ -3,10 +3,11 @@
 
 use std::f64::consts::{FRAC_PI_4, PI, SQRT_2};
 
-use crate::ode_common::{Friction, Harmonic, adaptive, fixed};
 use hertz_tui::model::ode::{
     Direction, Event, Method, OdeError, OdeSystem, Options, State, Stop, integrate,
 };
+
+use crate::ode_common::{Friction, Harmonic, adaptive, fixed};
 
 /// All states of a fixed-step run: the start of the first segment and every step end.
 fn trajectory(method: Method, sys: &mut dyn OdeSystem, y0: State, dt: f64, n: usize) -> Vec<State> {

@@ -8,11 +8,12 @@
 
 use serde::Serialize;
 
-use super::approach::LineContact;
 use crate::model::error::{Domain, ModelError};
 use crate::model::exact::quadrature::tanh_sinh;
 use crate::model::numeric::roots::brent;
 use crate::model::power_law::PowerLaw;
+
+use super::approach::LineContact;
 
 /// Accuracy of the quadratures: a summary of a 1–20 % difference needs far less.
 const RTOL: f64 = 1e-10;

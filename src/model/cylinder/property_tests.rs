@@ -2,10 +2,11 @@
 
 use proptest::prelude::*;
 
-use super::*;
 use crate::model::body::{Body, Shape};
 use crate::model::material::Material;
 use crate::model::quasistatic;
+
+use super::*;
 
 /// A material with E in [1e9, 1e12] Pa (log-uniform), ν in [0, 0.49], σ_y in [1e7, 3e9] Pa.
 fn material() -> impl Strategy<Value = Material> {

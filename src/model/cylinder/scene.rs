@@ -1,5 +1,7 @@
 //! The force range an impact reaches, and the power-law fit over it (Table 2).
 
+use crate::model::numeric::roots::brent;
+
 use super::super::error::{Domain, FitFailure, ModelError, require_positive};
 use super::super::pair::ContactPair;
 use super::super::power_law::PowerLaw;
@@ -7,7 +9,6 @@ use super::super::pressure::YIELD_FACTOR;
 use super::PowerFit;
 use super::approach::LineContact;
 use super::fit::fit_line_contact;
-use crate::model::numeric::roots::brent;
 
 /// Lower end of the scene's fit range as a fraction of its upper end.
 ///

@@ -5,13 +5,14 @@
 //! that is [2104.6, 21046] N for two cylinders (F_top = F_y: the impact is past yield) and
 //! [2947.7, 29477] N for a cylinder on a plane (F_top = F_max).
 
-use super::{PowerFit, fit_power_law};
 use crate::model::body::{Body, Shape};
 use crate::model::material::tests::steel;
 use crate::model::pair::ContactPair;
 use crate::model::power_law::PowerLaw;
 use crate::model::pressure::{PLASTIC_FACTOR, YIELD_FACTOR};
 use crate::model::quasistatic::{self, ContactGeometry, Quasistatic};
+
+use super::{PowerFit, fit_power_law};
 
 /// The paper's tolerance for Table 2.
 const TABLE_TOLERANCE: f64 = 0.02;

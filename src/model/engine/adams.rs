@@ -11,11 +11,12 @@
 //!
 //! No hertz-tui law has the STEP damping; it is solved here by hertz-tui's DOP853.
 
+use crate::model::power_law::PowerLaw;
+
 use super::calibrate::solve_for_restitution;
 use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
-use crate::model::power_law::PowerLaw;
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {

@@ -10,12 +10,13 @@
 //!
 //! As a hertz-tui law: the Hunt–Crossley family with n = 1 and χ = d·v₀, solved exactly.
 
+use crate::model::Shape;
+use crate::model::power_law::PowerLaw;
+
 use super::calibrate::hunt_crossley_chi;
 use super::contact::{ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, realise, shown};
-use crate::model::Shape;
-use crate::model::power_law::PowerLaw;
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {

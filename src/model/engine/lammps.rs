@@ -9,11 +9,12 @@
 //!   R = RᵢRⱼ/(Rᵢ + Rⱼ), m_eff the reduced mass; a `fix wall/gran` is infinitely massive and flat.
 //! - End of contact: the damping may pull (tension allowed) unless `limit_damping` is given.
 
+use crate::model::Shape;
+
 use super::contact::EndRule;
 use super::error::EngineError;
 use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Translation, shown};
-use crate::model::Shape;
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {

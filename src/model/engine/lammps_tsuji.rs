@@ -7,11 +7,12 @@
 //! - Parameters, combination: as the coeff_restitution variant ([`super::lammps`]).
 //! - End of contact: tension allowed unless `limit_damping` is given.
 
+use crate::model::numeric::roots::brent;
+
 use super::calibrate::solve_for_restitution;
 use super::contact::{self, EndRule};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Parameter, Translation, lammps, realise, shown, tsuji};
-use crate::model::numeric::roots::brent;
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {

@@ -9,10 +9,11 @@
 
 use serde::Serialize;
 
+use crate::format::round_trip;
+
 use super::error::ModelError;
 use super::power_law::PowerLaw;
 use super::{Body, Scene, Shape};
-use crate::format::round_trip;
 
 pub mod adams;
 pub mod calibrate;

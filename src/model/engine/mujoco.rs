@@ -18,12 +18,13 @@
 
 use std::f64::consts::PI;
 
+use crate::model::Shape;
+use crate::model::power_law::PowerLaw;
+
 use super::calibrate::solve_for_restitution;
 use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, realise, shown};
-use crate::model::Shape;
-use crate::model::power_law::PowerLaw;
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {

@@ -13,11 +13,12 @@
 
 use std::f64::consts::SQRT_2;
 
+use crate::model::power_law::PowerLaw;
+
 use super::calibrate::hunt_crossley_chi;
 use super::contact::{ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
-use crate::model::power_law::PowerLaw;
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {

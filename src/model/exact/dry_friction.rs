@@ -9,10 +9,11 @@
 //! v_out² follows from the unloading identity at X* (not at 0), and x* is left as residual
 //! approach. Eq 16's e² = 1 − 2P·x_max²/(m·v₀²) is the same identity carried on to x = 0.
 
+use crate::model::force::ImpactParams;
+
 use super::ExactImpact;
 use super::elastic::elastic;
 use super::gauss_jacobi::singular_at_end;
-use crate::model::force::ImpactParams;
 
 /// 1 − u^k for u ∈ [0, 1] from `to_one` = 1 − u, without cancellation.
 #[derive(Debug, Clone, Copy)]

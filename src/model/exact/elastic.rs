@@ -1,7 +1,8 @@
 //! The elastic Hertz impact F = k·xⁿ in closed form (eqs 5–7; docs/physics.md §3).
 
-use super::ExactImpact;
 use crate::model::force::ImpactParams;
+
+use super::ExactImpact;
 
 /// Elastic impact: x_max (eq 5), F_max (eq 6), t_c (eq 7 / incomplete-beta form), exit speed v₀.
 /// Loading and unloading are mirror images, so both peaks fall at t_c/2.

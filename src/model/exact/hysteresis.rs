@@ -10,11 +10,12 @@
 //! starting at u = 1 + a > 0 exits at x = 0 with α·v_out = 1 + W₀(−e^{−(1+C)}) < 1. Only an
 //! integrator's error can carry the state across it (the solver then ends contact there and says so).
 
+use crate::model::force::ImpactParams;
+
 use super::gauss_jacobi::{nodes_for_gap, singular_at_end, singular_at_start};
 use super::quadrature::tanh_sinh;
 use super::special::{unloading_root, y_minus_log1p};
 use super::{ExactImpact, elastic::elastic};
-use crate::model::force::ImpactParams;
 
 /// Below this exit value of w = 1 + αẋ the unloading time is integrated in x rather than in V:
 /// the force has then decayed by the factor w before the bodies reach x = 0, and they coast the

@@ -1,9 +1,10 @@
 //! Dry friction F = k·xⁿ + P·x·sign(ẋ) (eq 15), P from eq 17 (spheres) or eq 16 (general n).
 
-use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
-use super::{ForceModel, ImpactParams};
 use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, dry_friction::dry_friction};
+
+use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
+use super::{ForceModel, ImpactParams};
 
 /// ½·(4/5)^{4/5} = 0.418256…, the constant eq 17 rounds to 0.418 (docs/physics.md §2).
 pub const EQ17_CONSTANT: f64 = 0.418_255_821_036_509_3;

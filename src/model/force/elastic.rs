@@ -1,9 +1,10 @@
 //! Elastic Hertz contact, F = k·xⁿ (eq 1): no dissipation.
 
-use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
-use super::{ForceModel, ImpactParams};
 use crate::model::error::ModelError;
 use crate::model::exact::{ExactImpact, elastic::elastic};
+
+use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
+use super::{ForceModel, ImpactParams};
 
 /// F = k·xⁿ (eq 1).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -4,11 +4,12 @@
 
 use lambert_w::lambert_wm1;
 
-use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
-use super::{Contact, ForceModel, ImpactParams};
 use crate::model::cylinder::LineContact;
 use crate::model::error::{Domain, ModelError};
 use crate::model::exact::{ExactImpact, elastic::elastic};
+
+use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
+use super::{Contact, ForceModel, ImpactParams};
 
 /// The elastic law of the contact: eqs 13–14 for cylinders, eq 1 for spheres.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,11 +1,12 @@
 //! Hertz with linear viscous damping, F = k·xⁿ + γ·x^{(n−1)/2}·ẋ (Tsuji, Tanaka & Ishida 1992; the
 //! law of Chrono's SMC Hertz model, LIGGGHTS and LAMMPS), docs/physics.md §6.2.
 
+use crate::model::error::ModelError;
+use crate::model::exact::ExactImpact;
+
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
 use super::table::ContactRule;
 use super::{ForceModel, ImpactParams};
-use crate::model::error::ModelError;
-use crate::model::exact::ExactImpact;
 
 /// F = k·xⁿ + γ·x^{(n−1)/2}·ẋ (x^{1/4} for spheres). Its damping ratio γ/(2√(n·m·k)) is the same at
 /// every approach, so its realised e depends on γ but not on v₀. Two contact-end rules: F ≥ 0

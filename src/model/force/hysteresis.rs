@@ -1,10 +1,11 @@
 //! The Hunt–Crossley family F = k·xⁿ·(1 + α·ẋ), α = χ(e)/v₀: Hunt–Crossley (eq 19),
 //! Lankarani–Nikravesh (eq 20) and the χ(e) rows of the law table (docs/physics.md §6.1).
 
-use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
-use super::{ForceModel, ImpactParams};
 use crate::model::error::{Domain, ModelError, require_positive};
 use crate::model::exact::{ExactImpact, hysteresis::hysteresis};
+
+use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
+use super::{ForceModel, ImpactParams};
 
 /// F = k·xⁿ·(1 + α·ẋ) with α from the restitution e and v₀.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -2,11 +2,12 @@
 
 use std::f64::consts::PI;
 
+use crate::model::error::ModelError;
+use crate::model::exact::ExactImpact;
+
 use super::law::{ContactEnd, ForceLaw, Phase, signed_pow_n};
 use super::table::ContactRule;
 use super::{ForceModel, ImpactParams};
-use crate::model::error::ModelError;
-use crate::model::exact::ExactImpact;
 
 /// F = K·x + c·ẋ with K = m·(π/t_c)², t_c the Hertz contact time of the scene (eq 7), so that the
 /// undamped linear contact lasts as long as the Hertz one. Two contact-end rules: F ≥ 0 (contact

@@ -6,8 +6,9 @@
 //! The solver reports where this happened (`ImpactSummary::tensile_cutoff`). The proposed model
 //! (eq 18) ends at F = 0 by design — that is its own contact-end rule, not a cutoff.
 
-use super::{ForceModel, ImpactParams};
 use crate::model::exact::ExactImpact;
+
+use super::{ForceModel, ImpactParams};
 
 /// Which half of the impact a force is evaluated in.
 ///

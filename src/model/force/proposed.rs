@@ -1,12 +1,13 @@
 //! The paper's viscous model F = k·xⁿ + b·xⁿ⁻¹·ẋ (eq 18), b = k·x_pl/(v₀·e). The same law with
 //! b = k·A is the Kuwabara–Kono / Brilliantov viscoelastic sphere (docs/physics.md §6.5).
 
+use crate::model::error::ModelError;
+use crate::model::exact::{ExactImpact, elastic::elastic};
+
 use super::any::kuwabara_kono_a;
 use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1};
 use super::table::ContactRule;
 use super::{ForceModel, ImpactParams};
-use crate::model::error::ModelError;
-use crate::model::exact::{ExactImpact, elastic::elastic};
 
 /// F = xⁿ⁻¹·(k·x + b·ẋ) (eq 18). Contact ends where F returns to 0, i.e. at ẋ = −k·x/b, leaving a
 /// residual indentation; x_pl = 0 makes b = 0, the elastic law. A Kuwabara–Kono row may instead

@@ -4,10 +4,11 @@
 //! Hertz–viscous (p = (n+1)/2) the damping impulse is taken into W, whose rate is then the elastic
 //! force alone; for every other law γ = 0 and W = V.
 
+use nalgebra::Matrix2;
+
 use crate::model::force::law::{abs_pow_nm1, signed_pow_n};
 use crate::model::force::{ForceLaw, Phase};
 use crate::model::ode::{OdeSystem, State};
-use nalgebra::Matrix2;
 
 use super::scale::Scales;
 

@@ -5,8 +5,9 @@
 //! missed; the first sign change in the event's direction is then bracketed and its root located
 //! with Brent's zeroin (`model::numeric::roots`).
 
-use super::{Direction, Event, Segment, State};
 use crate::model::numeric::roots::zeroin;
+
+use super::{Direction, Event, Segment, State};
 
 /// Interior sample points per step: the step is split into this many equal sub-intervals.
 const SUBDIVISIONS: usize = 4;

@@ -5,14 +5,15 @@ use std::fmt;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use super::builtin;
-use super::error::PresetError;
-use super::save::{SaveTarget, is_kebab_case, kebab_case, save_scene_in};
-use super::user_dir::user_dir;
 use crate::model::material::Material;
 use crate::model::overrides::{self, Override};
 use crate::model::scene::Scene;
 use crate::model::scene_file::{self, Document, SceneView};
+
+use super::builtin;
+use super::error::PresetError;
+use super::save::{SaveTarget, is_kebab_case, kebab_case, save_scene_in};
+use super::user_dir::user_dir;
 
 /// Where a preset comes from.
 #[derive(Debug, Clone, PartialEq, Eq)]

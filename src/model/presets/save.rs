@@ -3,10 +3,11 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use super::error::PresetError;
-use super::user_dir::user_dir;
 use crate::model::scene::Scene;
 use crate::model::scene_file::{self, SceneView};
+
+use super::error::PresetError;
+use super::user_dir::user_dir;
 
 /// Where to save a scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

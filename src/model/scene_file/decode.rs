@@ -4,14 +4,15 @@ use std::collections::BTreeMap;
 
 use toml::{Table, Value};
 
+use crate::model::body::{Body, Shape};
+use crate::model::material::Material;
+use crate::model::scene::{ImpactConditions, Scene};
+
 use super::document::{Document, Problem, SceneFileError, ValueIssue, join};
 use super::schema::{
     BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, shape_keys,
 };
 use super::view::SceneView;
-use crate::model::body::{Body, Shape};
-use crate::model::material::Material;
-use crate::model::scene::{ImpactConditions, Scene};
 
 /// Describes a TOML value for "found …" messages: its type, and short scalars verbatim.
 fn describe(value: &Value) -> String {

@@ -7,10 +7,11 @@ use thiserror::Error;
 use toml::de::{DeTable, DeValue};
 use toml::{Table, Value};
 
-use super::schema::{MATERIAL_KEYS, SHAPES};
 use crate::model::error::ModelError;
 use crate::model::force::UnknownModel;
 use crate::model::impact::UnknownMethod;
+
+use super::schema::{MATERIAL_KEYS, SHAPES};
 
 /// Where in its source a problem is.
 #[derive(Debug, Clone, PartialEq, Eq)]

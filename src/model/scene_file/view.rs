@@ -3,12 +3,13 @@
 
 use toml::{Table, Value};
 
-use super::decode::Decoder;
-use super::document::{Problem, SceneFileError, ValueIssue};
-use super::write::toml_float;
 use crate::model::ForceModel;
 use crate::model::force::UnknownModel;
 use crate::model::impact::{MethodChoice, SolveOptions};
+
+use super::decode::Decoder;
+use super::document::{Problem, SceneFileError, ValueIssue};
+use super::write::toml_float;
 
 /// Keys of `[solver]`, as on the command line (`--method`, `--rtol`, `--atol`, `--dt`).
 pub(super) const SOLVER_KEYS: &[&str] = &["method", "rtol", "atol", "dt"];

@@ -4,12 +4,13 @@ use std::time::Duration;
 
 use serde::Serialize;
 
-use super::reference::{SummaryErrors, reference};
-use super::stability::{FIXED_STEP_METHODS, fixed_step_options, largest_bounded_step};
-use super::timing::median_seconds;
 use crate::model::force::{ForceModel, ImpactParams};
 use crate::model::impact::{ImpactError, ImpactSummary, MethodChoice, SolveOptions, solve_impact};
 use crate::model::ode::Method;
+
+use super::reference::{SummaryErrors, reference};
+use super::stability::{FIXED_STEP_METHODS, fixed_step_options, largest_bounded_step};
+use super::timing::median_seconds;
 
 /// The adaptive methods, cheapest per step first.
 pub const ADAPTIVE_METHODS: [Method; 3] = [Method::Dopri5, Method::Dop853, Method::Radau5];

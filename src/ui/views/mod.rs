@@ -12,13 +12,13 @@ use ratatui::Frame;
 use ratatui::layout::Position;
 
 use crate::chart::Chart;
+use crate::model::study::runner::{StudyKind, StudySpec};
 
 use super::action::Action;
 use super::app::{App, EditTarget, Valid};
 use super::field::Nudge;
 use super::layout::ScreenLayout;
 use super::tab::Tab;
-use crate::model::study::runner::{StudyKind, StudySpec};
 
 /// Tick labels on a figure's axes, x and y, and the columns its curves are sampled for.
 pub const FIGURE_TICKS: (usize, usize) = (9, 8);

@@ -6,13 +6,14 @@
 
 use std::f64::consts::PI;
 
-use super::Thornton;
-use super::cap::{Cap, strip_dxi_du, strip_u, strip_work_rate};
 use crate::model::exact::ExactImpact;
 use crate::model::exact::elastic::elastic;
 use crate::model::exact::gauss_jacobi::{nodes_for_gap, singular_at_end};
 use crate::model::force::law::ForceLaw;
 use crate::model::power_law::PowerLaw;
+
+use super::Thornton;
+use super::cap::{Cap, strip_dxi_du, strip_u, strip_work_rate};
 
 impl Thornton {
     /// The exact impact, its quadratures (strips only) aimed at `rtol`.

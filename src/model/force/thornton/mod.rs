@@ -5,12 +5,13 @@
 
 use std::f64::consts::PI;
 
-use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
-use super::{Contact, ForceModel, ImpactParams};
 use crate::model::cylinder::pressure_law;
 use crate::model::error::{Domain, ModelError};
 use crate::model::exact::ExactImpact;
 use crate::model::numeric::roots::brent;
+
+use super::law::{ContactEnd, ForceLaw, Phase, abs_pow_nm1, signed_pow_n};
+use super::{Contact, ForceModel, ImpactParams};
 
 mod cap;
 mod exact;

@@ -2,9 +2,9 @@
 
 mod render;
 
-use crate::chart::restitution as plot;
 use ratatui::Frame;
 
+use crate::chart::restitution as plot;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, Valid};

@@ -18,7 +18,6 @@ use crate::ui::style::Role;
 use crate::ui::widgets::common::{model_name, pane, span};
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
-
 use crate::chart::restitution as plot;
 
 pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {

@@ -4,9 +4,9 @@
 mod keys;
 mod render;
 
-use crate::chart::stability as plot;
 use ratatui::Frame;
 
+use crate::chart::stability as plot;
 use crate::chart::Chart;
 use crate::model::ode::Method;
 use crate::model::study::stability::critical_step;

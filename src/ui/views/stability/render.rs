@@ -21,7 +21,6 @@ use crate::ui::views;
 use crate::ui::widgets::common::{pane, span, wrap};
 use crate::ui::widgets::editable;
 use crate::ui::widgets::graph::{self, budget};
-
 use crate::chart::stability::{self as plot, Curve};
 
 /// The name cell of a curve: its glyph sample and name in its ink.

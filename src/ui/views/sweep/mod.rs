@@ -5,20 +5,20 @@ pub mod layout;
 mod render;
 pub mod settings;
 
-use crate::chart::sweep as plot;
 use ratatui::Frame;
 use ratatui::layout::Rect;
 
+use crate::chart::sweep as plot;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, EditTarget, Valid};
 use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
-
 use crate::chart::sweep::SweepSet;
-use settings::{SweepField, SweepSettings};
 
 use super::{FIGURE_TICKS, Hints, View};
+
+use settings::{SweepField, SweepSettings};
 
 pub struct Sweep;
 

@@ -16,9 +16,9 @@ use crate::ui::widgets::common::{pane, span, wrap};
 use crate::ui::widgets::editable;
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
+use crate::chart::sweep as plot;
 
 use super::layout::sweep_areas;
-use crate::chart::sweep as plot;
 use super::settings::SweepField;
 
 /// Width of the label column of the sweep form.

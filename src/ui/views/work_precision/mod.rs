@@ -2,15 +2,14 @@
 
 mod render;
 
-use crate::chart::work_precision as plot;
 use ratatui::Frame;
 
+use crate::chart::work_precision as plot;
 use crate::chart::Chart;
 use crate::ui::action::Action;
 use crate::ui::app::{App, Valid};
 use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, StudySpec};
-
 use crate::chart::work_precision::Cost;
 
 use super::{FIGURE_TICKS, Hints, View};

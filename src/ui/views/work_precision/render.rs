@@ -19,7 +19,6 @@ use crate::format::units::{self, sig};
 use crate::ui::views;
 use crate::ui::widgets::common::{flow, pane, span, wrap};
 use crate::ui::widgets::graph::{self, budget};
-
 use crate::chart::work_precision::{self as plot, CURRENT_GLYPH, Cost, ERROR_FLOOR};
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
