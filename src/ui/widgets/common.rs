@@ -3,15 +3,20 @@
 use ratatui::layout::{Constraint, Flex, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::Span;
+use ratatui::widgets::{Block, Borders};
 
 use crate::model::ForceModel;
-use crate::ui::style::Theme;
+use crate::ui::style::{Role, Theme};
 
-use super::pane::Pane;
-
-/// A pane's frame: full borders on roomy screens, a titled top rule on compact ones.
-pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Pane<'a> {
-    Pane::new(title, theme, roomy)
+/// A pane's frame, ratatui's `Block`: full borders on roomy screens, a titled top rule on compact
+/// ones, in the theme's border and title styles.
+pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Block<'a> {
+    let borders = if roomy { Borders::ALL } else { Borders::TOP };
+    Block::new()
+        .borders(borders)
+        .border_style(theme.style(Role::Muted))
+        .title(title)
+        .title_style(theme.style(Role::Title))
 }
 
 /// How a pane names models: the paper's label, the kebab id, or the abbreviation, longest first.

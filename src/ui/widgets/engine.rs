@@ -39,7 +39,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, panel: &EnginePanel) {
     frame.render_widget(
         Paragraph::new(lines)
             .scroll((panel.scroll, 0))
-            .block(pane(title, theme, true).block()),
+            .block(pane(title, theme, true)),
         popup,
     );
 }

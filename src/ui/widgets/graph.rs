@@ -9,8 +9,8 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Widget;
 use ratatui::widgets::canvas::{Canvas, Line as CanvasLine, Points};
+use ratatui::widgets::{Block, Widget};
 
 use crate::chart::layout::dot;
 use crate::chart::{Chart, Ink, place_ticks};
@@ -18,7 +18,6 @@ use crate::ui::style::MarkerStyle;
 use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
-use super::pane::Pane;
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -432,7 +431,7 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
 pub fn render(
     frame: &mut Frame,
     area: Rect,
-    pane: Pane,
+    pane: Block,
     chart: &Chart,
     marker: MarkerStyle,
     theme: Theme,
@@ -454,7 +453,7 @@ pub fn render(
 pub fn render_with_legend(
     frame: &mut Frame,
     area: Rect,
-    pane: Pane,
+    pane: Block,
     chart: &Chart,
     (marker, theme): (MarkerStyle, Theme),
     roomy: bool,
@@ -636,7 +635,7 @@ mod tests {
                 render(
                     frame,
                     area,
-                    Pane::new("", Theme { color: false }, true),
+                    crate::ui::widgets::common::pane("", Theme { color: false }, true),
                     chart,
                     marker,
                     Theme { color: false },

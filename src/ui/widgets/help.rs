@@ -40,9 +40,11 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let popup = centered(area, 96, lines.len() as u16 + 2);
     frame.render_widget(Clear, popup);
     frame.render_widget(
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: false })
-            .block(pane("Help · keys (Esc closes)", theme, true).block()),
+        Paragraph::new(lines).wrap(Wrap { trim: false }).block(pane(
+            "Help · keys (Esc closes)",
+            theme,
+            true,
+        )),
         popup,
     );
 }

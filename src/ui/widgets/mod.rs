@@ -7,7 +7,6 @@ pub mod engine;
 pub mod graph;
 pub mod help;
 pub mod models;
-pub(crate) mod pane;
 pub mod picker;
 pub mod prompt;
 pub mod status;

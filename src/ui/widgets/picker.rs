@@ -65,7 +65,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, picker: &Picker) {
         )
     };
     let list = List::new(items)
-        .block(pane(title, theme, true).block())
+        .block(pane(title, theme, true))
         .highlight_style(theme.style(Role::Cursor));
     let mut state = ListState::default().with_selected(Some(picker.selected));
     frame.render_widget(Clear, popup);

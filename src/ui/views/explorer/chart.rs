@@ -186,7 +186,7 @@ pub fn render(
             .into_iter()
             .map(|t| Line::from(span(t, theme.style(role))))
             .collect();
-        let note = Paragraph::new(lines).wrap(Wrap { trim: true }).block(block.block());
+        let note = Paragraph::new(lines).wrap(Wrap { trim: true }).block(block);
         frame.render_widget(note, area);
         return;
     }
