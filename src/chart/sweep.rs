@@ -442,4 +442,39 @@ mod tests {
         assert_eq!(lines[0].runs[0].len(), 5);
         assert!((lines[0].runs[0][2].1 - 3.0).abs() < 1e-12);
     }
+
+    #[test]
+    fn outputs_read_the_estimate_or_each_model() {
+        let row = SweepRow {
+            value: 0.3,
+            quasistatic: Some(QuasistaticPoint {
+                p_max: 2.1e9,
+                contact_radius: Some(3e-4),
+                half_width: None,
+                v_yield: 0.03,
+                v_plastic: 0.33,
+            }),
+            impacts: vec![ImpactPoint {
+                model: ForceModel::Proposed,
+                x_max: Some(7.6e-6),
+                f_max: Some(326.0),
+                t_contact: Some(8.3e-5),
+                v_out: Some(0.18),
+                e_out: Some(0.62),
+                error: None,
+            }],
+            error: None,
+        };
+        assert_eq!(SweepOutput::PeakPressure.estimate(&row), Some(2.1e9));
+        assert_eq!(SweepOutput::ContactSize.estimate(&row), Some(3e-4));
+        assert_eq!(
+            SweepOutput::EOut.of_model(&row, ForceModel::Proposed),
+            Some(0.62)
+        );
+        assert_eq!(
+            SweepOutput::EOut.of_model(&row, ForceModel::HuntCrossley),
+            None
+        );
+        assert!(!SweepOutput::PeakPressure.per_model() && SweepOutput::VOut.per_model());
+    }
 }

@@ -291,6 +291,14 @@ mod tests {
     }
 
     #[test]
+    fn a_keys_symbol_names_its_body() {
+        assert_eq!(
+            key_symbol(SceneKey::Body(BodyIndex::Two, BodyField::YoungsModulus)),
+            "E₂"
+        );
+    }
+
+    #[test]
     fn fit_never_cuts_a_number() {
         assert_eq!(fit(7.575, 4, 6), "7.575");
         assert_eq!(fit(1_506_870.0, 4, 6), "1.51e6");

@@ -294,9 +294,7 @@ fn cycle<T: Copy + PartialEq>(choices: &[T], current: T, direction: Nudge) -> T 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::format::units::key_symbol;
     use crate::model::scene_key::{BodyField, BodyIndex};
-    use crate::model::study::sweep::SweepRow;
     use crate::ui::testing::fig5_scene;
 
     #[test]
@@ -392,45 +390,5 @@ mod tests {
         assert_eq!(s.display_within(SweepField::Output, &scene, 300, 25), "e_out");
         assert!(s.nudge(SweepField::Scale, Nudge::Up, &scene, 300));
         assert_eq!(s.display(SweepField::Scale, &scene, 300), "linear");
-    }
-
-    #[test]
-    fn outputs_read_the_estimate_or_each_model() {
-        use crate::model::study::sweep::{ImpactPoint, QuasistaticPoint};
-        let row = SweepRow {
-            value: 0.3,
-            quasistatic: Some(QuasistaticPoint {
-                p_max: 2.1e9,
-                contact_radius: Some(3e-4),
-                half_width: None,
-                v_yield: 0.03,
-                v_plastic: 0.33,
-            }),
-            impacts: vec![ImpactPoint {
-                model: ForceModel::Proposed,
-                x_max: Some(7.6e-6),
-                f_max: Some(326.0),
-                t_contact: Some(8.3e-5),
-                v_out: Some(0.18),
-                e_out: Some(0.62),
-                error: None,
-            }],
-            error: None,
-        };
-        assert_eq!(SweepOutput::PeakPressure.estimate(&row), Some(2.1e9));
-        assert_eq!(SweepOutput::ContactSize.estimate(&row), Some(3e-4));
-        assert_eq!(
-            SweepOutput::EOut.of_model(&row, ForceModel::Proposed),
-            Some(0.62)
-        );
-        assert_eq!(
-            SweepOutput::EOut.of_model(&row, ForceModel::HuntCrossley),
-            None
-        );
-        assert!(!SweepOutput::PeakPressure.per_model() && SweepOutput::VOut.per_model());
-        assert_eq!(
-            key_symbol(SceneKey::Body(BodyIndex::Two, BodyField::YoungsModulus)),
-            "E₂"
-        );
     }
 }
