@@ -255,7 +255,12 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         let style = color(s.ink).stroke_width(if s.focused { 3 } else { 2 });
         for run in &s.runs {
             let points = thinned(run.iter().filter_map(|&q| p.at(chart, q)));
-            area.draw(&PathElement::new(points, style))?;
+            if let [dot] = points[..] {
+                // A scatter's point (an impact, a diagram's point) alone: a line would not show.
+                area.draw(&Circle::new(dot, 2, color(s.ink).filled()))?;
+            } else {
+                area.draw(&PathElement::new(points, style))?;
+            }
         }
         let glyph = text_style(16, color(s.ink), HPos::Center, VPos::Center);
         let marked: Vec<(f64, f64)> = if s.steps {

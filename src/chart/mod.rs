@@ -14,6 +14,7 @@ pub mod restitution;
 pub mod sample;
 pub mod stability;
 pub mod sweep;
+pub mod system;
 pub mod ticks;
 pub mod work_precision;
 

@@ -27,6 +27,16 @@ pub trait Background: Send + 'static {
     }
     /// Runs the job; `None` when `stop` said it was superseded on the way (its successor reports).
     fn run(&self, stop: &(dyn Fn() -> bool + Sync)) -> Option<Self::Outcome>;
+    /// [`Background::run`] for a job whose result grows (a bifurcation diagram column by column):
+    /// it may hand outcomes so far to `partial`, each reported like the final one, so that the
+    /// screen fills in as it computes. Most jobs have nothing to show before they end.
+    fn run_partially(
+        &self,
+        stop: &(dyn Fn() -> bool + Sync),
+        _partial: &dyn Fn(Self::Outcome),
+    ) -> Option<Self::Outcome> {
+        self.run(stop)
+    }
     /// The report of a panic while running it, from the panic's message.
     fn panicked(&self, message: &str) -> String;
 }
@@ -98,7 +108,10 @@ fn serve<J: Background>(
         };
         let (slot, generation) = (job.slot(), job.generation());
         let stop = || is_superseded(latest, slot, generation);
-        let report = panic::catch_unwind(AssertUnwindSafe(|| job.run(&stop)))
+        let partial = |outcome| {
+            deliver(Ok(outcome));
+        };
+        let report = panic::catch_unwind(AssertUnwindSafe(|| job.run_partially(&stop, &partial)))
             .map_err(|payload| job.panicked(&panic_message(payload.as_ref())));
         let stop_thread = report.is_err();
         let delivered = match report {
@@ -174,6 +187,19 @@ mod tests {
             (!stop()).then_some(self.generation)
         }
 
+        /// Slot 7 reports two outcomes so far (100 and 101 times its generation) before its end.
+        fn run_partially(
+            &self,
+            stop: &(dyn Fn() -> bool + Sync),
+            partial: &dyn Fn(u64),
+        ) -> Option<u64> {
+            if self.slot == 7 {
+                partial(100 * self.generation);
+                partial(101 * self.generation);
+            }
+            self.run(stop)
+        }
+
         fn panicked(&self, message: &str) -> String {
             format!("slot {} panicked ({message})", self.slot)
         }
@@ -229,6 +255,16 @@ mod tests {
         assert_eq!(rx.recv().unwrap(), Ok(4));
         drop(queue);
         assert!(rx.recv().is_err(), "the thread ended");
+    }
+
+    #[test]
+    fn a_job_reports_what_it_has_so_far_then_its_end_in_order() {
+        let (tx, rx) = mpsc::channel();
+        let queue = Jobs::spawn("test-jobs", move |report| tx.send(report).is_ok()).unwrap();
+        assert!(queue.submit(probe(2, 7, 0)));
+        assert!(queue.submit(probe(3, 1, 0)));
+        let reports: Vec<Report<u64>> = (0..4).map(|_| rx.recv().unwrap()).collect();
+        assert_eq!(reports, [Ok(200), Ok(202), Ok(2), Ok(3)]);
     }
 
     #[test]
