@@ -10,8 +10,9 @@ use std::f64::consts::TAU;
 
 use crate::chart::ticks::{NiceAxis, nice_axis};
 use crate::chart::{Chart, Ink, Rule, Series, model_glyph};
-use crate::format::units::{self, Unit};
+use crate::format::units::{self, Unit, key_label, key_unit};
 use crate::model::ForceModel;
+use crate::model::system::{Column, Contact, History, Param, SystemKey, SystemModel};
 
 /// The glyph of the rigid (instantaneous-impact) answer: none of the laws' glyphs.
 pub const RIGID_GLYPH: char = 'R';
@@ -69,6 +70,131 @@ pub struct DiagramAxes {
     /// The recorded quantity's symbol, e.g. `v_in`.
     pub quantity: String,
     pub quantity_unit: Unit,
+}
+
+impl Approach {
+    /// The approach of a model's contact.
+    pub fn of(contact: &Contact) -> Approach {
+        match contact {
+            Contact::Rigid { .. } => Approach::Rigid,
+            Contact::Compliant { model, .. } => Approach::Compliant(*model),
+        }
+    }
+}
+
+impl Motion {
+    /// The samples of `history` from `from` s on, and all its impacts.
+    pub fn of(history: &History, from: f64) -> Motion {
+        Motion {
+            samples: history
+                .samples
+                .iter()
+                .filter(|s| s.t >= from)
+                .map(|s| (s.t, s.x, s.v))
+                .collect(),
+            impacts: history.impacts.iter().map(|i| (i.phase, i.v_in)).collect(),
+        }
+    }
+}
+
+impl Stops {
+    /// The stops of `model`: the oscillator's fixed gaps, or the bouncing ball's table as `history`
+    /// sampled it from `from` s on.
+    pub fn of(model: &SystemModel, history: Option<&History>, from: f64) -> Stops {
+        use crate::model::system::SystemKind;
+        match model.spec.kind {
+            SystemKind::BouncingBall { .. } => Stops {
+                fixed: Vec::new(),
+                moving: history
+                    .map(|h| {
+                        h.samples
+                            .iter()
+                            .filter(|s| s.t >= from)
+                            .map(|s| (s.t, s.stop))
+                            .collect()
+                    })
+                    .unwrap_or_default(),
+            },
+            SystemKind::ImpactOscillator {
+                gap, second_gap, ..
+            } => Stops {
+                fixed: std::iter::once(gap).chain(second_gap.map(|g| -g)).collect(),
+                moving: Vec::new(),
+            },
+        }
+    }
+}
+
+impl Branch {
+    /// The impact speeds of every column.
+    pub fn of(columns: &[Column]) -> Branch {
+        Branch {
+            columns: columns
+                .iter()
+                .map(|c| (c.value, c.velocities.clone()))
+                .collect(),
+        }
+    }
+}
+
+const HERTZ: Unit = Unit {
+    symbol: "Hz",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+};
+const NEWTON_PER_METRE: Unit = Unit {
+    symbol: "N/m",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: false,
+};
+const NEWTON_SECOND_PER_METRE: Unit = Unit {
+    symbol: "N·s/m",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: false,
+};
+const METRE_PER_SECOND_SQUARED: Unit = Unit {
+    symbol: "m/s²",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: false,
+};
+
+impl DiagramAxes {
+    /// A diagram of the impact speeds over `param` of `model` (the forcing amplitude is a force or
+    /// a base motion by the model's forcing).
+    pub fn impact_speeds(param: Param, model: &SystemModel) -> DiagramAxes {
+        use crate::model::system::{Forcing, SystemKind};
+        let (key, key_unit) = match param {
+            Param::Scene(key) => (key_label(key).to_string(), key_unit(key)),
+            Param::System(key) => match key {
+                SystemKey::Amplitude => ("A".into(), units::METRE),
+                SystemKey::Gamma => ("Γ".into(), units::DIMENSIONLESS),
+                SystemKey::Frequency => ("f".into(), HERTZ),
+                SystemKey::Gravity => ("g".into(), METRE_PER_SECOND_SQUARED),
+                SystemKey::Stiffness => ("k".into(), NEWTON_PER_METRE),
+                SystemKey::DampingRatio => ("ζ".into(), units::DIMENSIONLESS),
+                SystemKey::Damping => ("c".into(), NEWTON_SECOND_PER_METRE),
+                SystemKey::ForcingAmplitude => match model.spec.kind {
+                    SystemKind::ImpactOscillator {
+                        forcing: Forcing::Base { .. },
+                        ..
+                    } => ("B".into(), units::METRE),
+                    _ => ("F₀".into(), units::NEWTON),
+                },
+                SystemKey::Gap => ("gap".into(), units::METRE),
+                SystemKey::SecondGap => ("second gap".into(), units::METRE),
+            },
+        };
+        DiagramAxes {
+            key,
+            key_unit,
+            quantity: "v_in".into(),
+            quantity_unit: units::METRE_PER_SECOND,
+        }
+    }
 }
 
 /// `symbol [unit]`, or the bare symbol of a dimensionless quantity.

@@ -7,6 +7,7 @@ use crate::model::impact::MethodChoice;
 use crate::model::overrides::Override;
 use crate::model::presets::DEFAULT_SCENE;
 use crate::model::scene_key::SceneKey;
+use crate::model::system::Param;
 
 /// Explore impact contact forces: Hertz contact, dry friction, Hunt–Crossley, Lankarani–Nikravesh
 /// and the proposed viscous model of Polukoshko, Sokolova & Kononova.
@@ -55,6 +56,12 @@ pub enum Command {
     Translate(TranslateArgs),
     /// Write a chart as the explorer draws it to an SVG or PNG figure.
     Plot(PlotArgs),
+    /// Simulate a system scene (its `[system]` table): impacts, detected period, time history.
+    System(SystemArgs),
+    /// A periodic orbit of a system's impact map by Newton, its Floquet multipliers and stability.
+    Orbit(OrbitArgs),
+    /// A brute-force bifurcation diagram of a system over a scene or system key (CSV streamed).
+    Bifurcation(BifurcationArgs),
 }
 
 /// Options of `hertz-tui restitution`.
@@ -85,6 +92,14 @@ pub enum ChartChoice {
     WorkPrecision,
     /// Every fixed-step method at one step (--dt) over the reference, on the first --model.
     Stability,
+    /// A system scene's time history x(t) with its stops (--contact: rigid, compliant, both).
+    History,
+    /// A system scene's phase portrait v(x).
+    Phase,
+    /// A system scene's impact map: incoming speed against forcing phase at each impact.
+    ImpactMap,
+    /// A system scene's bifurcation diagram over --param from --from to --to (--points values).
+    Bifurcation,
 }
 
 /// What a sweep chart shows against the swept key.
@@ -127,9 +142,9 @@ pub struct PlotArgs {
     /// (default there: the rk4 critical step).
     #[arg(long, value_name = "S", value_parser = positive_number, allow_hyphen_values = true)]
     pub dt: Option<f64>,
-    /// Sweep: the scene key varied.
+    /// Sweep and bifurcation: the key varied (a scene key; a bifurcation also takes system.*).
     #[arg(long, value_name = "KEY", default_value = "impact.v0")]
-    pub param: SceneKey,
+    pub param: Param,
     /// Sweep: what is drawn against the key.
     #[arg(long, value_enum, default_value_t = QuantityChoice::EOut)]
     pub quantity: QuantityChoice,
@@ -145,6 +160,10 @@ pub struct PlotArgs {
     /// Sweep: number of points.
     #[arg(long, value_name = "N", default_value_t = 200, value_parser = clap::value_parser!(u32).range(2..=100_000))]
     pub points: u32,
+    #[command(flatten)]
+    pub contact: ContactArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
     /// The figure file: .svg (vector) or .png.
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: std::path::PathBuf,
@@ -291,4 +310,150 @@ fn positive_number(s: &str) -> Result<f64, String> {
         Ok(_) => Err(format!("{s} must be a finite number > 0")),
         Err(_) => Err(format!("\"{s}\" is not a number")),
     }
+}
+
+/// Which stop a system command runs: rigid, compliant or both side by side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ContactChoice {
+    /// Instantaneous impacts with the scene's restitution e.
+    Rigid,
+    /// A contact law (--law) through every impact.
+    Compliant,
+    /// Rigid and compliant, one after the other, on the same scene.
+    Both,
+}
+
+/// How a system's stop acts (`system`, `orbit`, `bifurcation`, the system charts of `plot`).
+#[derive(Debug, Clone, Args)]
+pub struct ContactArgs {
+    /// The stop: rigid (instantaneous, restitution e), compliant (--law), or both.
+    #[arg(long, value_enum, default_value_t = ContactChoice::Rigid)]
+    pub contact: ContactChoice,
+    /// The compliant stop's law (a law id of `hertz-tui list`).
+    #[arg(long, value_name = "MODEL", default_value = "hunt-crossley")]
+    pub law: ForceModel,
+    /// How the compliant law's damping is set: per-impact (from each impact's incoming speed),
+    /// calibrated (to realise the scene's e), or a number (the law's own constant).
+    #[arg(long, value_name = "HOW", default_value = "per-impact", value_parser = damping_choice)]
+    pub damping: DampingChoice,
+}
+
+/// `--damping`: how a compliant law's damping is set at each impact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DampingChoice {
+    PerImpact,
+    Calibrated,
+    Constant(f64),
+}
+
+fn damping_choice(s: &str) -> Result<DampingChoice, String> {
+    match s {
+        "per-impact" => Ok(DampingChoice::PerImpact),
+        "calibrated" => Ok(DampingChoice::Calibrated),
+        _ => match s.parse::<f64>() {
+            Ok(x) if x.is_finite() && x >= 0.0 => Ok(DampingChoice::Constant(x)),
+            _ => Err(format!(
+                "\"{s}\" is not per-impact, calibrated or a finite number ≥ 0"
+            )),
+        },
+    }
+}
+
+/// The budgets of a system's run.
+#[derive(Debug, Clone, Args)]
+pub struct RunArgs {
+    /// Impacts simulated and dropped before recording (the transient).
+    #[arg(long, value_name = "N", default_value_t = 500)]
+    pub transient: usize,
+    /// Impacts recorded after the transient.
+    #[arg(long, value_name = "N", default_value_t = 200, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+    pub recorded: u64,
+    /// Budget of impacts of one run, chatter included: a run that needs more is refused.
+    #[arg(long, value_name = "N", default_value_t = 1_000_000)]
+    pub max_impacts: usize,
+    /// Forcing periods after which a run ends anyway (a body that stops impacting).
+    #[arg(long, value_name = "P", default_value_t = 10_000.0, value_parser = positive_number)]
+    pub max_periods: f64,
+}
+
+/// Options of `hertz-tui system`.
+#[derive(Debug, Args)]
+pub struct SystemArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    #[command(flatten)]
+    pub contact: ContactArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+    /// Output format; csv prints the recorded impacts, one row each (or with --history the
+    /// time history t,x,v,stop).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// csv and json: the time history over the recorded impacts, this many samples per forcing
+    /// period (csv then prints it instead of the impacts).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(2..=100_000))]
+    pub history: Option<u32>,
+}
+
+/// Options of `hertz-tui orbit`.
+#[derive(Debug, Args)]
+pub struct OrbitArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    #[command(flatten)]
+    pub contact: ContactArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+    /// m: forcing periods per orbit period.
+    #[arg(long, value_name = "M", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub period: u32,
+    /// n: impacts per orbit period.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub impacts: u32,
+    /// Newton's first impact: its forcing phase ωt, rad (with --speed; default: from the
+    /// attractor reached after the transient).
+    #[arg(
+        long,
+        value_name = "RAD",
+        requires = "speed",
+        allow_hyphen_values = true
+    )]
+    pub phase: Option<f64>,
+    /// Newton's first impact: its approach speed, m/s (with --phase).
+    #[arg(long, value_name = "M/S", requires = "phase", value_parser = positive_number)]
+    pub speed: Option<f64>,
+    /// Output format (table or json; csv prints the orbit's impacts).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
+
+/// Options of `hertz-tui bifurcation`.
+#[derive(Debug, Args)]
+pub struct BifurcationArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    #[command(flatten)]
+    pub contact: ContactArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+    /// The key varied: system.gamma, system.amplitude, system.frequency, system.gap, …,
+    /// impact.restitution or a body key.
+    #[arg(long, value_name = "KEY")]
+    pub param: Param,
+    /// First value, SI units (Hz for system.frequency).
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub from: f64,
+    /// Last value, SI units.
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub to: f64,
+    /// Number of values, both ends included.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(2..=1_000_000))]
+    pub points: u32,
+    /// Budget of impacts of the whole diagram (values × (transient + recorded)).
+    #[arg(long, value_name = "N", default_value_t = 50_000_000)]
+    pub budget: usize,
+    /// Output format: csv (streamed, one row per recorded impact), json or table (one row per
+    /// value).
+    #[arg(long, value_enum, default_value_t = Format::Csv)]
+    pub format: Format,
 }

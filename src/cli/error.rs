@@ -9,6 +9,7 @@ use crate::model::ModelError;
 use crate::model::engine::EngineError;
 use crate::model::impact::ImpactError;
 use crate::model::presets::PresetError;
+use crate::model::system::SystemError;
 
 #[derive(Debug, Error)]
 pub enum CliError {
@@ -27,6 +28,13 @@ pub enum CliError {
     },
     #[error("{0}")]
     Engine(#[from] EngineError),
+    /// A system's run, orbit or diagram refused, with the stop it was for.
+    #[error("{contact} stop: {source}")]
+    System {
+        contact: String,
+        #[source]
+        source: Box<SystemError>,
+    },
     #[error("cannot write the output: {0}")]
     Output(#[from] io::Error),
 }

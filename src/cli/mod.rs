@@ -2,15 +2,19 @@
 
 pub mod args;
 pub mod bench;
+pub mod bifurcation;
 pub mod error;
 mod in_order;
 mod layout;
 mod list;
+pub mod orbit;
 pub mod plot;
+mod plot_system;
 mod report;
 pub mod restitution;
 pub mod solve;
 pub mod sweep;
+pub mod system;
 pub mod translate;
 pub mod units;
 
@@ -63,6 +67,13 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         Command::Restitution(args) => restitution::run(args, &registry)?,
         Command::Translate(args) => translate::run(args, &registry)?,
         Command::Plot(args) => plot::run(args, &registry)?,
+        Command::System(args) => system::run(args, &registry)?,
+        Command::Orbit(args) => orbit::run(args, &registry)?,
+        Command::Bifurcation(args) if args.format == Format::Csv => {
+            bifurcation::stream_csv(args, &registry, out)?;
+            return Ok(out.flush()?);
+        }
+        Command::Bifurcation(args) => bifurcation::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

@@ -17,6 +17,7 @@ use crate::model::study::runner::{
 use crate::model::study::stability::critical_step;
 use crate::model::study::sweep::default_range;
 use crate::model::study::sweep::{SweepSpec, sweep};
+use crate::model::system::Param;
 use crate::model::{ForceModel, ImpactParams, Scene};
 
 use super::args::{ChartChoice, PlotArgs, QuantityChoice, SceneSelection};
@@ -65,6 +66,10 @@ pub fn run(args: &PlotArgs, registry: &Registry) -> Result<String, CliError> {
         ChartChoice::Sweep => vec![sweeps(args, &scenes)?],
         ChartChoice::WorkPrecision => work_precision(args, &scenes[0])?,
         ChartChoice::Stability => stability(args, &scenes[0])?,
+        ChartChoice::History
+        | ChartChoice::Phase
+        | ChartChoice::ImpactMap
+        | ChartChoice::Bifurcation => vec![super::plot_system::chart(args, registry, BUDGET)?],
     };
     figure::write(&charts, &args.out, size).map_err(usage)?;
     Ok(format!(
@@ -141,19 +146,25 @@ fn quantity(q: QuantityChoice) -> SweepOutput {
 /// One sweep per scene on one chart.
 fn sweeps(args: &PlotArgs, scenes: &[Scene]) -> Result<Chart, CliError> {
     let output = quantity(args.quantity);
+    let Param::Scene(key) = args.param else {
+        return Err(CliError::Usage(format!(
+            "--chart sweep varies a scene key, not {} (that is --chart bifurcation's)",
+            args.param
+        )));
+    };
     let mut data = Vec::new();
     for scene in scenes {
         let (from, to, log) = match (args.from, args.to) {
             (Some(from), Some(to)) => (from, to, args.log),
             _ => {
-                let range = default_range(args.param, scene).ok_or_else(|| {
-                    CliError::Usage(format!("{} does not apply to {}", args.param, scene.name))
+                let range = default_range(key, scene).ok_or_else(|| {
+                    CliError::Usage(format!("{key} does not apply to {}", scene.name))
                 })?;
                 (range.from, range.to, range.log)
             }
         };
         let spec = SweepSpec {
-            key: args.param,
+            key,
             from,
             to,
             points: args.points as usize,
