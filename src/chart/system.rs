@@ -70,6 +70,9 @@ pub struct DiagramAxes {
     /// The recorded quantity's symbol, e.g. `v_in`.
     pub quantity: String,
     pub quantity_unit: Unit,
+    /// The parameter's span drawn, SI (every value asked for, while the columns fill it in);
+    /// `None`: the columns'.
+    pub range: Option<(f64, f64)>,
 }
 
 impl Approach {
@@ -193,6 +196,7 @@ impl DiagramAxes {
             key_unit,
             quantity: "v_in".into(),
             quantity_unit: units::METRE_PER_SECOND,
+            range: None,
         }
     }
 }
@@ -410,7 +414,7 @@ pub fn bifurcation(
     let values = branches
         .iter()
         .flat_map(|(_, b)| b.columns.iter().map(|c| c.0));
-    let (k0, k1) = span(values).unwrap_or((0.0, 1.0));
+    let (k0, k1) = axes.range.or_else(|| span(values)).unwrap_or((0.0, 1.0));
     let points = branches
         .iter()
         .flat_map(|(_, b)| b.columns.iter().flat_map(|c| c.1.iter().copied()));
@@ -508,6 +512,7 @@ mod tests {
             key_unit: units::METRE,
             quantity: "v_in".into(),
             quantity_unit: units::METRE_PER_SECOND,
+            range: None,
         };
         let chart = bifurcation(&[(Approach::Rigid, &branch)], &axes, (6, 6));
         assert_eq!(chart.x.title, "A [µm]");

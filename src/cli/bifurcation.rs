@@ -9,6 +9,7 @@ use serde::Serialize;
 
 use crate::format::csv;
 use crate::model::presets::Registry;
+pub use crate::model::study::system::values;
 use crate::model::system::{
     self, Column, Contact, Diagram, DiagramOptions, Param, SystemError, SystemModel,
 };
@@ -19,20 +20,6 @@ use super::json;
 use super::layout::columns;
 use super::system::{contact_label, contacts, failed, load_system, run_options};
 use super::units::engineering;
-
-/// The values of the diagram: `points` evenly from `from` to `to`, both included.
-pub fn values(from: f64, to: f64, points: usize) -> Vec<f64> {
-    let n = points.max(2);
-    (0..n)
-        .map(|i| {
-            if i + 1 == n {
-                to
-            } else {
-                from + (to - from) * i as f64 / (n - 1) as f64
-            }
-        })
-        .collect()
-}
 
 /// The SI unit of a parameter's values.
 pub fn param_unit(param: Param) -> &'static str {
@@ -231,18 +218,4 @@ fn table(report: &BifurcationReport) -> String {
         out.push_str(&columns(&rows, "  "));
     }
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn values_include_both_ends_exactly() {
-        let v = values(0.9, 3.5, 27);
-        assert_eq!(v.len(), 27);
-        assert_eq!(v[0], 0.9);
-        assert_eq!(v[26], 3.5);
-        assert!((v[1] - 1.0).abs() < 1e-12);
-    }
 }

@@ -12,6 +12,7 @@ use crate::model::study::runner::{
     self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
     StudyKind, StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
 };
+use crate::model::study::system::{DiagramData, SystemRuns};
 
 use super::jobs::Background;
 
@@ -34,6 +35,15 @@ impl Background for StudyJob {
 
     fn run(&self, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutcome> {
         runner::run(self, stop)
+    }
+
+    /// A diagram reports its columns so far as it goes.
+    fn run_partially(
+        &self,
+        stop: &(dyn Fn() -> bool + Sync),
+        partial: &dyn Fn(StudyOutcome),
+    ) -> Option<StudyOutcome> {
+        runner::run_partially(self, stop, partial)
     }
 
     fn panicked(&self, message: &str) -> String {
@@ -77,12 +87,13 @@ impl Studies {
     }
 
     /// Stores an outcome if it answers the latest request of its kind; returns whether it did.
+    /// A partial one (a diagram so far) is shown while its study stays pending.
     pub fn accept(&mut self, outcome: StudyOutcome) -> bool {
         let slot = &mut self.slots[outcome.result.kind().index()];
         if outcome.generation != slot.generation || !slot.pending {
             return false;
         }
-        slot.pending = false;
+        slot.pending = outcome.result.is_partial();
         slot.shown = Some(outcome.result);
         true
     }
@@ -127,6 +138,20 @@ impl Studies {
     pub fn sweep(&self) -> Option<&Result<Arc<SweepData>, StudyError>> {
         match self.result(StudyKind::Sweep) {
             Some(StudyResult::Sweep(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    pub fn system(&self) -> Option<&Arc<SystemRuns>> {
+        match self.result(StudyKind::System) {
+            Some(StudyResult::System(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    pub fn diagram(&self) -> Option<&Arc<DiagramData>> {
+        match self.result(StudyKind::Diagram) {
+            Some(StudyResult::Diagram(r)) => Some(r),
             _ => None,
         }
     }

@@ -5,3 +5,4 @@ mod e2e_tmux;
 mod models_pane;
 mod render;
 mod results_damping;
+mod system;

@@ -4,5 +4,6 @@ pub mod reference;
 pub mod runner;
 pub mod stability;
 pub mod sweep;
+pub mod system;
 pub mod timing;
 pub mod work_precision;

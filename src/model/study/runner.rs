@@ -17,6 +17,9 @@ use crate::model::study::stability::{
     step_bounds_until, step_ratio,
 };
 use crate::model::study::sweep::{SweepError, SweepRow, SweepSpec, sweep_until};
+use crate::model::study::system::{
+    DiagramData, DiagramStudy, SystemRuns, SystemStudy, run_diagram, run_system,
+};
 use crate::model::study::timing::median_seconds;
 use crate::model::study::work_precision::{Timing, WorkPrecisionRow, work_precision_until};
 use crate::model::{ForceModel, ImpactParams};
@@ -56,6 +59,10 @@ pub enum StudySpec {
         models: Vec<ForceModel>,
         params: ImpactParams,
     },
+    /// A system run with each stop (boxed: a system model holds its scene).
+    System(Box<SystemStudy>),
+    /// A system's bifurcation diagram with each stop, reported as it fills in.
+    Diagram(Box<DiagramStudy>),
 }
 
 /// The kinds of study, one slot each.
@@ -67,16 +74,20 @@ pub enum StudyKind {
     Bounds,
     Sweep,
     Restitution,
+    System,
+    Diagram,
 }
 
 impl StudyKind {
-    pub const ALL: [StudyKind; 6] = [
+    pub const ALL: [StudyKind; 8] = [
         StudyKind::WorkPrecision,
         StudyKind::Current,
         StudyKind::Runs,
         StudyKind::Bounds,
         StudyKind::Sweep,
         StudyKind::Restitution,
+        StudyKind::System,
+        StudyKind::Diagram,
     ];
 
     pub fn index(self) -> usize {
@@ -89,9 +100,9 @@ impl StudyKind {
     /// Quick studies run first, so that a step change answers while a ladder is measured.
     pub fn priority(self) -> u8 {
         match self {
-            StudyKind::Current | StudyKind::Runs => 0,
+            StudyKind::Current | StudyKind::Runs | StudyKind::System => 0,
             StudyKind::Sweep | StudyKind::Restitution => 1,
-            StudyKind::Bounds => 2,
+            StudyKind::Bounds | StudyKind::Diagram => 2,
             StudyKind::WorkPrecision => 3,
         }
     }
@@ -106,6 +117,8 @@ impl StudySpec {
             StudySpec::Bounds { .. } => StudyKind::Bounds,
             StudySpec::Sweep { .. } => StudyKind::Sweep,
             StudySpec::Restitution { .. } => StudyKind::Restitution,
+            StudySpec::System(_) => StudyKind::System,
+            StudySpec::Diagram(_) => StudyKind::Diagram,
         }
     }
 }
@@ -206,6 +219,10 @@ pub enum StudyResult {
     Bounds(Result<Arc<Vec<MeasuredBound>>, StudyError>),
     Sweep(Result<Arc<SweepData>, StudyError>),
     Restitution(Result<Arc<RestitutionData>, StudyError>),
+    /// Each stop's run (each with its own error).
+    System(Arc<SystemRuns>),
+    /// Each stop's diagram so far (see [`DiagramData::complete`]).
+    Diagram(Arc<DiagramData>),
 }
 
 impl StudyResult {
@@ -217,7 +234,14 @@ impl StudyResult {
             StudyResult::Bounds(_) => StudyKind::Bounds,
             StudyResult::Sweep(_) => StudyKind::Sweep,
             StudyResult::Restitution(_) => StudyKind::Restitution,
+            StudyResult::System(_) => StudyKind::System,
+            StudyResult::Diagram(_) => StudyKind::Diagram,
         }
+    }
+
+    /// A report of a study still running (a diagram filling in): more will come.
+    pub fn is_partial(&self) -> bool {
+        matches!(self, StudyResult::Diagram(d) if !d.complete)
     }
 }
 
@@ -233,6 +257,28 @@ pub const TIMING: Timing = Timing {
     min_repeats: 3,
     min_total: std::time::Duration::from_millis(1),
 };
+
+/// [`run`], handing `partial` what a study that fills in (a diagram) has so far.
+pub fn run_partially(
+    job: &StudyJob,
+    stop: &(dyn Fn() -> bool + Sync),
+    partial: &dyn Fn(StudyOutcome),
+) -> Option<StudyOutcome> {
+    let StudySpec::Diagram(study) = &job.spec else {
+        return run(job, stop);
+    };
+    let report = |data| {
+        partial(StudyOutcome {
+            generation: job.generation,
+            result: StudyResult::Diagram(Arc::new(data)),
+        })
+    };
+    let data = run_diagram(study, stop, &report)?;
+    (!stop()).then_some(StudyOutcome {
+        generation: job.generation,
+        result: StudyResult::Diagram(Arc::new(data)),
+    })
+}
 
 /// Computes `job` on the calling thread; `None` when `stop` returned true on the way.
 pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutcome> {
@@ -284,6 +330,8 @@ pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutc
             Some(data) => StudyResult::Restitution(Ok(Arc::new(data))),
             None => return None,
         },
+        StudySpec::System(study) => StudyResult::System(Arc::new(run_system(study))),
+        StudySpec::Diagram(_) => return run_partially(job, stop, &|_| {}),
     };
     // A study cut short is incomplete: nobody wants it.
     (!stop()).then_some(StudyOutcome {

@@ -96,6 +96,7 @@ registry! {
     stability::Stability,
     sweep::Sweep,
     restitution::Restitution,
+    system::System,
 }
 
 const _: () = assert!(!VIEWS.is_empty());
