@@ -235,12 +235,18 @@ impl<'a> Run<'a> {
                 .into());
             }
             if gap <= tolerance {
-                let closing = sigma * (state.v - sv);
+                let rate = sigma * (state.v - sv);
+                let tiny = 1e-13 * d.speed_scale;
+                // On the stop and leaving it: a flight from exactly there.
+                if rate > tiny {
+                    let on = State { x: s, ..state };
+                    return Ok(Phase::Flight {
+                        state: on,
+                        free_until: 0.0,
+                    });
+                }
                 let (after, v_in, v_out) = impact(d, stop, state.t, state.v);
-                if closing < 0.0
-                    && v_in > 1e-13 * d.speed_scale
-                    && self.impact(stop, after, v_in, v_out, ImpactKind::Impact)?
-                {
+                if rate < -tiny && self.impact(stop, after, v_in, v_out, ImpactKind::Impact)? {
                     return Ok(Phase::Done(after));
                 }
                 return Ok(match after_impact(d, stop, after, v_out) {
