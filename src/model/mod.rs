@@ -36,6 +36,7 @@ pub mod scene_file;
 pub mod scene_key;
 pub mod sphere;
 pub mod study;
+pub mod system;
 pub mod warnings;
 
 pub use body::{Body, Shape};
