@@ -219,6 +219,27 @@ pub fn simulate_detailed(
     run(&stop, model, options)
 }
 
+/// A periodic orbit of the compliant impact map and its Floquet multipliers: the compliant arm of
+/// `system::find_orbit` ([`orbit::find_orbit`]).
+pub fn find_orbit(
+    model: &SystemModel,
+    law: ForceModel,
+    damping: CompliantDamping,
+    guess: &super::OrbitGuess,
+    options: &super::OrbitOptions,
+) -> Result<super::Orbit, SystemError> {
+    let compliant = CompliantOptions {
+        rtol: ORBIT_RTOL,
+        ..CompliantOptions::default()
+    };
+    let stop = CompliantStop::new(model, law, damping, compliant)?;
+    orbit::find_orbit(&stop, model, guess, options)
+}
+
+/// The tolerance orbits are integrated to: the Jacobian's central differences divide the map's
+/// error by their relative step, 1e-6.
+pub const ORBIT_RTOL: f64 = 1e-12;
+
 /// Where a run starts by default: at rest at t = 0 (the ball on the table, the body at x = 0).
 fn rest_state() -> State {
     State {

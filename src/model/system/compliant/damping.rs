@@ -62,11 +62,7 @@ impl LawSource {
                     restitution: e,
                     ..base
                 };
-                Some(
-                    calibrate(model, &target)?
-                        .damping
-                        .value,
-                )
+                Some(calibrate(model, &target)?.damping.value)
             }
         };
         let fixed = if defined_per_impact(model) {

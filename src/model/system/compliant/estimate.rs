@@ -42,7 +42,7 @@ pub fn hertz_estimate(law: &PowerLaw, mass: f64, v: f64) -> Option<HertzEstimate
 /// n = 1 every speed gives the same t_c and `None` is returned.
 pub fn speed_for_contact_time(law: &PowerLaw, mass: f64, t_c: f64) -> Option<f64> {
     let exponent = (law.n - 1.0) / (law.n + 1.0);
-    if exponent <= 0.0 || !(t_c > 0.0) {
+    if exponent <= 0.0 || t_c.is_nan() || t_c <= 0.0 {
         return None;
     }
     // t_c(v) = t_c(1)·v^(−exponent).

@@ -8,12 +8,18 @@
 //! on the surface and turns straight back in) aborts the flight and is reported as a contact
 //! starting at once, so the body never passes into a stop unseen at a step end.
 
-use crate::model::ode::{self, DenseOutput, Direction, Event, Method, OdeError, OdeSystem, State, Stop};
+use crate::model::ode::{
+    self, DenseOutput, Direction, Event, Method, OdeError, OdeSystem, State, Stop,
+};
 
 use super::plant::Plant;
 
 /// Flight steps per forcing period at most.
 pub const STEPS_PER_PERIOD: f64 = 32.0;
+
+/// The surface's slack in units of the flight's scale a·T²: far above the rounding of a landed
+/// event (~1e-16 of the positions), far below any contact's indentation.
+const SLACK: f64 = 1e-12;
 
 /// How a flight ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,8 +41,11 @@ pub struct Flight {
 
 struct FreeOde<'a, P> {
     plant: &'a P,
-    /// Stops whose gap is checked at step ends.
+    /// The stop found inside at a step end.
     inside: Option<usize>,
+    /// Gaps above −this count as on the surface: an event landed on by Newton's method lies on
+    /// either side of it by rounding.
+    slack: f64,
 }
 
 impl<P: Plant> OdeSystem for FreeOde<'_, P> {
@@ -47,7 +56,7 @@ impl<P: Plant> OdeSystem for FreeOde<'_, P> {
 
     fn check(&mut self, t: f64, y: &State) -> Result<(), String> {
         for i in 0..self.plant.stop_count() {
-            if self.plant.stop(i, t).gap(y[0]) < 0.0 {
+            if self.plant.stop(i, t).gap(y[0]) < -self.slack {
                 self.inside = Some(i);
                 return Err(format!("inside stop {i}"));
             }
@@ -80,6 +89,7 @@ pub fn fly<P: Plant>(
     let mut sys = FreeOde {
         plant,
         inside: None,
+        slack: SLACK * plant.accel_scale() * period * period,
     };
     // Position and velocity are weighed against the scale the flight covers.
     let opts = ode::Options {

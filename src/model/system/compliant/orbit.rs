@@ -105,7 +105,11 @@ pub fn map_n(
 }
 
 /// The Jacobian ∂(t_n, v_n)/∂(t₀, v₀) of the n-fold map at `p` by central differences.
-pub fn map_jacobian(stop: &CompliantStop, p: MapPoint, n: u32) -> Result<Matrix2<f64>, SystemError> {
+pub fn map_jacobian(
+    stop: &CompliantStop,
+    p: MapPoint,
+    n: u32,
+) -> Result<Matrix2<f64>, SystemError> {
     let ht = FD_STEP * stop.plant.period();
     let hv = FD_STEP * p.v_in.abs().max(f64::MIN_POSITIVE);
     let image = |t: f64, v: f64| -> Result<Vector2<f64>, SystemError> {
@@ -130,7 +134,11 @@ pub fn eigenvalues(j: &Matrix2<f64>) -> [Complex<f64>; 2] {
         let r = disc.sqrt();
         // The larger-magnitude root first, the other from the product to keep its digits.
         let big = half_trace + r.copysign(half_trace);
-        let small = if big != 0.0 { j.determinant() / big } else { 0.0 };
+        let small = if big != 0.0 {
+            j.determinant() / big
+        } else {
+            0.0
+        };
         [Complex::new(big, 0.0), Complex::new(small, 0.0)]
     } else {
         let r = (-disc).sqrt();
@@ -154,24 +162,25 @@ pub fn find_orbit(
             "an orbit needs at least one forcing period and one impact",
         ));
     }
-    let mut p = match guess.start {
-        Some(s) => MapPoint {
-            t: s.phase / plant.omega(),
-            v_in: s.v_in,
-            stop: s.stop,
-        },
-        None => {
-            let h = super::run(stop, model, &guess.attractor)?.history;
-            let last = h.impacts.iter().rev().nth(n as usize - 1).ok_or(
-                SystemError::OrbitDegenerate("the attractor run recorded too few impacts"),
-            )?;
-            MapPoint {
-                t: last.t,
-                v_in: last.v_in,
-                stop: last.stop,
+    let mut p =
+        match guess.start {
+            Some(s) => MapPoint {
+                t: s.phase / plant.omega(),
+                v_in: s.v_in,
+                stop: s.stop,
+            },
+            None => {
+                let h = super::run(stop, model, &guess.attractor)?.history;
+                let last = h.impacts.iter().rev().nth(n as usize - 1).ok_or(
+                    SystemError::OrbitDegenerate("the attractor run recorded too few impacts"),
+                )?;
+                MapPoint {
+                    t: last.t,
+                    v_in: last.v_in,
+                    stop: last.stop,
+                }
             }
-        }
-    };
+        };
     let tol = options.tolerance.max(TOLERANCE_FLOOR);
     let target = m as f64 * period;
     let mut residual = f64::INFINITY;
@@ -193,7 +202,7 @@ pub fn find_orbit(
         residual = (step[0] / period).abs().max((step[1] / p.v_in).abs());
         p.t += step[0];
         p.v_in += step[1];
-        if !(p.v_in > 0.0) {
+        if p.v_in.is_nan() || p.v_in <= 0.0 {
             return Err(SystemError::OrbitDegenerate(
                 "Newton drove the impact speed to zero (grazing or sticking)",
             ));
@@ -224,6 +233,9 @@ fn orbit_at(
         impacts_per_period: n,
         points: steps.iter().map(|s| s.point).collect(),
         multipliers: multipliers.to_vec(),
+        // In (time of first contact, approach speed): similar to the rigid map's (time, speed
+        // after), so the same multipliers.
+        jacobian: [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]],
         jacobian_det: j.determinant(),
         stable: multipliers.iter().all(|z| z.norm() < 1.0),
         iterations,

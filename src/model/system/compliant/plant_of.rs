@@ -45,10 +45,9 @@ impl SystemPlant {
             } => {
                 // `oscillator` is Some for every oscillator kind.
                 let c = spec.oscillator(model.mass);
-                let (omega0, zeta, forcing, omega) =
-                    c.map_or((0.0, 0.0, 0.0, spec.omega()), |c| {
-                        (c.omega0, c.zeta, c.forcing, c.omega)
-                    });
+                let (omega0, zeta, forcing, omega) = c.map_or((0.0, 0.0, 0.0, spec.omega()), |c| {
+                    (c.omega0, c.zeta, c.forcing, c.omega)
+                });
                 SystemPlant::Oscillator {
                     mass: model.mass,
                     omega0,

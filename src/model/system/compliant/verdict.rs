@@ -116,9 +116,15 @@ pub fn verdict(
     let stop = CompliantStop::new(model, law, damping, CompliantOptions::default())?;
     let compliant = run(&stop, model, options)?.history;
     let rigid_asked = rigid::simulate(model, model.restitution, options)?;
-    let realised = mean(compliant.impacts.iter().filter(|i| i.v_in > 0.0).map(|i| i.v_out / i.v_in))
-        .unwrap_or(model.restitution)
-        .clamp(0.0, 1.0);
+    let realised = mean(
+        compliant
+            .impacts
+            .iter()
+            .filter(|i| i.v_in > 0.0)
+            .map(|i| i.v_out / i.v_in),
+    )
+    .unwrap_or(model.restitution)
+    .clamp(0.0, 1.0);
     let rigid_realised = rigid::simulate(model, realised, options)?;
     let period = model.spec.period();
     let contact_time = compliant
@@ -145,7 +151,9 @@ pub fn verdict(
         .max_by(|a, b| a.1.relative().abs().total_cmp(&b.1.relative().abs()))
         .map_or(0, |(i, _)| i);
     let contact_ratio = contact_time / period;
-    let worst = comparisons.get(decisive).map_or(0.0, |c| c.relative().abs());
+    let worst = comparisons
+        .get(decisive)
+        .map_or(0.0, |c| c.relative().abs());
     let validity = if contact_ratio > LONG_CONTACT || worst > DISAGREEMENT {
         Validity::NotValid
     } else if contact_ratio > SHORT_CONTACT || worst > AGREEMENT {
@@ -178,9 +186,9 @@ fn answer(quantity: Quantity, history: &History, period: f64) -> f64 {
     match quantity {
         Quantity::MeanImpactSpeed => mean(impacts.iter().map(|i| i.v_in)).unwrap_or(0.0),
         Quantity::MeanImpactPhase => {
-            let (s, c) = impacts
-                .iter()
-                .fold((0.0, 0.0), |(s, c), i| (s + i.phase.sin(), c + i.phase.cos()));
+            let (s, c) = impacts.iter().fold((0.0, 0.0), |(s, c), i| {
+                (s + i.phase.sin(), c + i.phase.cos())
+            });
             if s == 0.0 && c == 0.0 {
                 0.0
             } else {
