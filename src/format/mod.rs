@@ -9,6 +9,7 @@ pub mod recommendation;
 mod shortest_exp;
 pub mod translation;
 pub mod units;
+pub mod verdict;
 
 pub use number::{
     ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, NOT_A_NUMBER, PICO, Prefix,

@@ -28,6 +28,7 @@ mod ode_stability;
 mod presets;
 mod quasistatic_props;
 mod scene_view;
+mod system_compliant;
 mod systems_ball;
 #[allow(dead_code)]
 mod systems_common;

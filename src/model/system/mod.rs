@@ -8,8 +8,7 @@
 //!
 //! The entry points dispatch on [`Contact`]: `Rigid { restitution }` (instantaneous impacts,
 //! the [`rigid`] solver) or `Compliant { model, damping }` (a law of the law table through each
-//! contact; `compliant.rs`, not in this build yet: it returns
-//! [`SystemError::CompliantUnavailable`]).
+//! contact; the [`compliant`] solver).
 //! - [`simulate`]`(&model, &contact, &RunOptions) -> History`: impacts (time, phase, speeds in
 //!   and out, peak force or its Hertz estimate, energy lost), sticking phases, dense samples.
 //! - [`find_orbit`]`(&model, &contact, &OrbitGuess, &OrbitOptions) -> Orbit`: a periodic orbit
@@ -22,6 +21,7 @@
 //! Everything is SI; phases are ωt mod 2π in radians. Errors ([`SystemError`]) name the scene
 //! key or the budget concerned.
 
+pub mod compliant;
 mod contact;
 mod diagram;
 mod error;
@@ -55,7 +55,10 @@ pub fn simulate(
 ) -> Result<History, SystemError> {
     match contact {
         Contact::Rigid { restitution } => rigid::simulate(model, *restitution, options),
-        Contact::Compliant { .. } => Err(SystemError::CompliantUnavailable),
+        Contact::Compliant {
+            model: law,
+            damping,
+        } => compliant::simulate(model, *law, *damping, options),
     }
 }
 
@@ -68,7 +71,10 @@ pub fn find_orbit(
 ) -> Result<Orbit, SystemError> {
     match contact {
         Contact::Rigid { restitution } => rigid::find_orbit(model, *restitution, guess, options),
-        Contact::Compliant { .. } => Err(SystemError::CompliantUnavailable),
+        Contact::Compliant {
+            model: law,
+            damping,
+        } => compliant::find_orbit(model, *law, *damping, guess, options),
     }
 }
 

@@ -1,0 +1,203 @@
+//! "Which approach does my system need?" (issue 25, item 6): the same system run with a rigid and
+//! a compliant stop, the contact time set against the forcing period, and the answers compared.
+//! Data only; src/format/verdict.rs puts it in words.
+//!
+//! The paper's introduction names the criterion: the instantaneous model is valid when contacts
+//! are short against the system's motion. Short contacts are not enough on their own: a law that
+//! does not realise the e it was given for (clamped Kelvin–Voigt) moves the whole answer, so the
+//! rigid stop is also run at the compliant law's *realised* e, which separates the two effects.
+
+use serde::Serialize;
+
+use crate::model::force::ForceModel;
+
+use super::super::{CompliantDamping, History, RunOptions, SystemError, SystemModel, rigid};
+use super::{CompliantOptions, CompliantStop, run};
+
+/// Contacts shorter than this fraction of the forcing period, with answers that agree within
+/// [`AGREEMENT`], make the instantaneous model valid.
+pub const SHORT_CONTACT: f64 = 0.01;
+/// Contacts longer than this fraction of the period make it invalid whatever the answers say.
+pub const LONG_CONTACT: f64 = 0.05;
+/// Relative agreement of the compared answers for a valid instantaneous model.
+pub const AGREEMENT: f64 = 0.01;
+/// Beyond this relative difference the instantaneous model is invalid.
+pub const DISAGREEMENT: f64 = 0.05;
+
+/// The quantity a comparison is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Quantity {
+    /// The mean approach speed of the recorded impacts, m/s.
+    MeanImpactSpeed,
+    /// The mean forcing phase of the recorded impacts, as a fraction of the period (circular mean).
+    MeanImpactPhase,
+    /// Impacts per forcing period over the recorded part.
+    ImpactRate,
+}
+
+/// One answer of both stops.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Comparison {
+    pub quantity: Quantity,
+    /// The rigid stop's answer at the scene's e.
+    pub rigid: f64,
+    /// The rigid stop's answer at the compliant law's realised e.
+    pub rigid_at_realised: f64,
+    /// The compliant stop's answer.
+    pub compliant: f64,
+}
+
+impl Comparison {
+    /// (compliant − rigid)/|rigid| (0 when both are 0); for the phase, the difference in
+    /// periods wrapped to [−½, ½).
+    pub fn relative(&self) -> f64 {
+        relative(self.quantity, self.compliant, self.rigid)
+    }
+
+    /// The same against the rigid stop at the realised e.
+    pub fn relative_at_realised(&self) -> f64 {
+        relative(self.quantity, self.compliant, self.rigid_at_realised)
+    }
+}
+
+fn relative(quantity: Quantity, a: f64, b: f64) -> f64 {
+    if quantity == Quantity::MeanImpactPhase {
+        (a - b + 0.5).rem_euclid(1.0) - 0.5
+    } else if a == b {
+        0.0
+    } else {
+        (a - b) / b.abs().max(f64::MIN_POSITIVE)
+    }
+}
+
+/// What the comparison says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Validity {
+    /// Short contacts and agreeing answers: the rigid stop is enough.
+    Valid,
+    /// Between the thresholds: the rigid stop is an approximation worth checking.
+    Marginal,
+    /// Long contacts or disagreeing answers: the system needs the compliant stop.
+    NotValid,
+}
+
+/// The verdict for one system, law and damping.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Verdict {
+    pub law: ForceModel,
+    /// Forcing period T, s.
+    pub period: f64,
+    /// The longest recorded contact, s.
+    pub contact_time: f64,
+    /// contact_time / T.
+    pub contact_ratio: f64,
+    /// The scene's e (what the rigid stop uses and the law was given).
+    pub asked_restitution: f64,
+    /// The compliant law's mean v_out/v_in over the recorded impacts.
+    pub realised_restitution: f64,
+    pub comparisons: Vec<Comparison>,
+    /// The comparison that decided (largest relative difference).
+    pub decisive: usize,
+    pub validity: Validity,
+    /// Recorded impacts of each run (rigid, compliant).
+    pub impacts: (usize, usize),
+}
+
+/// Runs `model` rigid (at the scene's e and at the law's realised e) and compliant with `law` and
+/// `damping` over `options`, and compares them.
+pub fn verdict(
+    model: &SystemModel,
+    law: ForceModel,
+    damping: CompliantDamping,
+    options: &RunOptions,
+) -> Result<Verdict, SystemError> {
+    let stop = CompliantStop::new(model, law, damping, CompliantOptions::default())?;
+    let compliant = run(&stop, model, options)?.history;
+    let rigid_asked = rigid::simulate(model, model.restitution, options)?;
+    let realised = mean(
+        compliant
+            .impacts
+            .iter()
+            .filter(|i| i.v_in > 0.0)
+            .map(|i| i.v_out / i.v_in),
+    )
+    .unwrap_or(model.restitution)
+    .clamp(0.0, 1.0);
+    let rigid_realised = rigid::simulate(model, realised, options)?;
+    let period = model.spec.period();
+    let contact_time = compliant
+        .impacts
+        .iter()
+        .filter_map(|i| i.contact_time)
+        .fold(0.0, f64::max);
+    let comparisons: Vec<Comparison> = [
+        Quantity::MeanImpactSpeed,
+        Quantity::MeanImpactPhase,
+        Quantity::ImpactRate,
+    ]
+    .into_iter()
+    .map(|q| Comparison {
+        quantity: q,
+        rigid: answer(q, &rigid_asked, period),
+        rigid_at_realised: answer(q, &rigid_realised, period),
+        compliant: answer(q, &compliant, period),
+    })
+    .collect();
+    let decisive = comparisons
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.relative().abs().total_cmp(&b.1.relative().abs()))
+        .map_or(0, |(i, _)| i);
+    let contact_ratio = contact_time / period;
+    let worst = comparisons
+        .get(decisive)
+        .map_or(0.0, |c| c.relative().abs());
+    let validity = if contact_ratio > LONG_CONTACT || worst > DISAGREEMENT {
+        Validity::NotValid
+    } else if contact_ratio > SHORT_CONTACT || worst > AGREEMENT {
+        Validity::Marginal
+    } else {
+        Validity::Valid
+    };
+    Ok(Verdict {
+        law,
+        period,
+        contact_time,
+        contact_ratio,
+        asked_restitution: model.restitution,
+        realised_restitution: realised,
+        comparisons,
+        decisive,
+        validity,
+        impacts: (rigid_asked.impacts.len(), compliant.impacts.len()),
+    })
+}
+
+fn mean(values: impl Iterator<Item = f64>) -> Option<f64> {
+    let (sum, n) = values.fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
+    (n > 0).then(|| sum / n as f64)
+}
+
+/// A run's answer for `quantity`.
+fn answer(quantity: Quantity, history: &History, period: f64) -> f64 {
+    let impacts = &history.impacts;
+    match quantity {
+        Quantity::MeanImpactSpeed => mean(impacts.iter().map(|i| i.v_in)).unwrap_or(0.0),
+        Quantity::MeanImpactPhase => {
+            let (s, c) = impacts.iter().fold((0.0, 0.0), |(s, c), i| {
+                (s + i.phase.sin(), c + i.phase.cos())
+            });
+            if s == 0.0 && c == 0.0 {
+                0.0
+            } else {
+                s.atan2(c).rem_euclid(std::f64::consts::TAU) / std::f64::consts::TAU
+            }
+        }
+        Quantity::ImpactRate => match (impacts.first(), impacts.last()) {
+            (Some(a), Some(b)) if b.t > a.t => (impacts.len() - 1) as f64 * period / (b.t - a.t),
+            _ => 0.0,
+        },
+    }
+}

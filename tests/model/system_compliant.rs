@@ -1,0 +1,258 @@
+//! The compliant stop (issue 25, item 4; docs/systems.md): its period-doubling threshold of the
+//! bouncing ball converges to the rigid closed form as contact time over forcing period falls —
+//! for Hunt–Crossley with the exact χ at the asked e, for clamped Kelvin–Voigt at the e it
+//! *realises*; every contact's energy balance closes; the elastic contact's peak force and
+//! duration are Hertz's (eqs 5–7) where the system's forces are negligible during contact.
+
+use std::f64::consts::PI;
+
+use hertz_tui::model::ForceModel;
+use hertz_tui::model::force::ForceLaw;
+use hertz_tui::model::numeric::roots::brent;
+use hertz_tui::model::presets::Registry;
+use hertz_tui::model::system::compliant::estimate::hertz_estimate;
+use hertz_tui::model::system::compliant::orbit::{MapPoint, map_jacobian, map_n};
+use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop, simulate_detailed};
+use hertz_tui::model::system::{CompliantDamping, RunOptions, SystemKind, SystemModel, SystemSpec};
+
+const E: f64 = 0.5;
+const G: f64 = 9.81;
+
+/// Γ_PD = √(Γ_SN² + (2(1+e²)/(1+e)²)²), Γ_SN = π(1−e)/(1+e): the rigid bouncing ball's period-1
+/// orbit loses stability there (exact impact map; docs/physics.md, bouncing ball).
+fn rigid_threshold(e: f64) -> f64 {
+    let sn = PI * (1.0 - e) / (1.0 + e);
+    let b = 2.0 * (1.0 + e * e) / (1.0 + e).powi(2);
+    (sn * sn + b * b).sqrt()
+}
+
+/// The steel sphere R = 10 mm on a steel plate, bouncing on a table at `frequency` with Γ.
+fn ball(frequency: f64, gamma: f64) -> SystemModel {
+    let mut scene = Registry::builtin()
+        .unwrap()
+        .scene("steel-sphere-r10-plate")
+        .unwrap();
+    scene.impact.restitution = E;
+    let omega = 2.0 * PI * frequency;
+    let spec = SystemSpec {
+        kind: SystemKind::BouncingBall {
+            amplitude: gamma * G / (omega * omega),
+            frequency,
+            gravity: G,
+        },
+    };
+    SystemModel::from_scene(&scene, &spec).unwrap()
+}
+
+fn stop(model: &SystemModel, law: ForceModel, damping: CompliantDamping) -> CompliantStop {
+    let options = CompliantOptions {
+        rtol: 1e-12,
+        ..CompliantOptions::default()
+    };
+    CompliantStop::new(model, law, damping, options).unwrap()
+}
+
+/// The period-1 orbit of the compliant map at Γ by Newton from `guess`, and 1 + tr J + det J, the
+/// characteristic polynomial at −1: it changes sign where a multiplier crosses −1.
+fn pd_function(
+    frequency: f64,
+    gamma: f64,
+    law: ForceModel,
+    damping: CompliantDamping,
+    guess: &mut MapPoint,
+) -> f64 {
+    let model = ball(frequency, gamma);
+    let s = stop(&model, law, damping);
+    let period = 1.0 / frequency;
+    let mut p = *guess;
+    for _ in 0..30 {
+        let (q, _) = map_n(&s, p, 1).unwrap();
+        let r = [q.t - p.t - period, q.v_in - p.v_in];
+        let j = map_jacobian(&s, p, 1).unwrap();
+        let a = j - nalgebra::Matrix2::identity();
+        let step = -(a.try_inverse().unwrap() * nalgebra::Vector2::new(r[0], r[1]));
+        p.t += step[0];
+        p.v_in += step[1];
+        if (step[0] / period).abs() < 1e-11 && (step[1] / p.v_in).abs() < 1e-11 {
+            break;
+        }
+    }
+    *guess = p;
+    let j = map_jacobian(&s, p, 1).unwrap();
+    1.0 + j.trace() + j.determinant()
+}
+
+/// The rigid period-1 orbit at Γ: impact speed gT/(1+e), table velocity u(1−e)/(1+e) with u = gT/2.
+fn rigid_orbit(frequency: f64, gamma: f64, e: f64) -> MapPoint {
+    let period = 1.0 / frequency;
+    let omega = 2.0 * PI * frequency;
+    let amplitude = gamma * G / (omega * omega);
+    let u = G * period / 2.0;
+    let phase = (u * (1.0 - e) / ((1.0 + e) * amplitude * omega)).acos();
+    MapPoint {
+        t: phase / omega,
+        v_in: G * period / (1.0 + e),
+        stop: 0,
+    }
+}
+
+/// The compliant period-doubling threshold near the rigid one at `e_rigid`.
+fn compliant_threshold(
+    frequency: f64,
+    law: ForceModel,
+    damping: CompliantDamping,
+    e_rigid: f64,
+) -> f64 {
+    let rigid = rigid_threshold(e_rigid);
+    let mut guess = rigid_orbit(frequency, 0.99 * rigid, e_rigid);
+    let (lo, hi) = (0.9 * rigid, 1.03 * rigid);
+    brent(
+        |gamma| pd_function(frequency, gamma, law, damping, &mut guess),
+        lo,
+        hi,
+    )
+    .expect("a sign change of 1 + tr J + det J")
+}
+
+/// The forcing frequency at which the ball's elastic contact at the rigid orbit's impact speed
+/// gT/(1+e) lasts `ratio` of the period (eq 7: t_c ∝ v^(−1/5)).
+fn frequency_for_ratio(ratio: f64) -> f64 {
+    let model = ball(20.0, 1.0);
+    let s = stop(&model, ForceModel::Quasistatic, CompliantDamping::PerImpact);
+    let c1 = s.elastic.contact_time(model.mass, 1.0);
+    // ratio = c1·(g/((1+e)f))^(−1/5)·f  ⇒  f = (ratio/c1·(g/(1+e))^(1/5))^(5/6).
+    (ratio / c1 * (G / (1.0 + E)).powf(0.2)).powf(5.0 / 6.0)
+}
+
+#[test]
+fn hunt_crossley_with_the_exact_chi_converges_to_the_rigid_threshold() {
+    let rigid = rigid_threshold(E);
+    let mut deviations = Vec::new();
+    for ratio in [0.1, 0.03, 0.01, 0.003] {
+        let f = frequency_for_ratio(ratio);
+        let gamma = compliant_threshold(
+            f,
+            ForceModel::HuntCrossley,
+            CompliantDamping::CalibratedTo(E),
+            E,
+        );
+        deviations.push((ratio, gamma / rigid - 1.0));
+    }
+    eprintln!("Hunt–Crossley exact χ, (t_c/T, ΔΓ_PD/Γ_PD): {deviations:?}");
+    // The issue's figures: about −1.4 % at t_c/T = 0.1, −0.1 % at 0.003.
+    let at = |r: f64| deviations.iter().find(|d| d.0 == r).unwrap().1;
+    assert!((-0.025..-0.005).contains(&at(0.1)), "{deviations:?}");
+    assert!(at(0.003).abs() < 0.003, "{deviations:?}");
+    for pair in deviations.windows(2) {
+        assert!(
+            pair[1].1.abs() < pair[0].1.abs(),
+            "not converging: {deviations:?}"
+        );
+    }
+}
+
+#[test]
+fn clamped_kelvin_voigt_converges_to_the_rigid_threshold_at_its_realised_e() {
+    // The law's own e: its exact impact (docs/physics.md §6.3) at the scene's v₀.
+    let model = ball(20.0, 1.0);
+    let s = stop(
+        &model,
+        ForceModel::with_id("kelvin-voigt"),
+        CompliantDamping::PerImpact,
+    );
+    let law = s.source.at(1.0).unwrap();
+    let exact = law.exact(1e-12).unwrap();
+    let realised = exact.v_out / s.source.base().v0;
+    assert!((realised - 0.55).abs() < 0.01, "{realised}");
+    let t_c = exact.t_contact;
+    let mut deviations = Vec::new();
+    for ratio in [0.03, 0.003] {
+        let f = ratio / t_c;
+        let gamma = compliant_threshold(
+            f,
+            ForceModel::with_id("kelvin-voigt"),
+            CompliantDamping::PerImpact,
+            realised,
+        );
+        deviations.push((
+            ratio,
+            gamma / rigid_threshold(realised) - 1.0,
+            gamma / rigid_threshold(E) - 1.0,
+        ));
+    }
+    eprintln!(
+        "clamped Kelvin–Voigt, (t_c/T, vs rigid at realised e, vs rigid at asked e): {deviations:?}"
+    );
+    let last = deviations[1];
+    assert!(last.1.abs() < 0.003, "{deviations:?}");
+    // ...and far from the rigid answer at the e it was asked for (the issue: −7.4 %).
+    assert!(last.2 < -0.05, "{deviations:?}");
+    assert!(
+        deviations[1].1.abs() < deviations[0].1.abs(),
+        "{deviations:?}"
+    );
+}
+
+#[test]
+fn every_contact_closes_its_energy_balance_and_elastic_contacts_are_hertz() {
+    let model = ball(20.0, 2.0);
+    let options = RunOptions {
+        transient_impacts: 5,
+        recorded_impacts: 30,
+        ..RunOptions::default()
+    };
+    let compliant = CompliantOptions::default();
+    for law in [
+        ForceModel::HuntCrossley,
+        ForceModel::with_id("kelvin-voigt"),
+        ForceModel::Proposed,
+        ForceModel::DryFriction,
+    ] {
+        let run = simulate_detailed(
+            &model,
+            law,
+            CompliantDamping::PerImpact,
+            &options,
+            compliant,
+        )
+        .unwrap();
+        assert_eq!(run.history.impacts.len(), 30, "{law}");
+        for (impact, detail) in run.history.impacts.iter().zip(&run.details) {
+            assert!(detail.energy.closure() < 1e-6, "{law}: {detail:?}");
+            // Dissipative laws never return more than they took (beyond the closure).
+            assert!(
+                detail.energy.lost() > -1e-6 * detail.energy.incoming,
+                "{law}: {detail:?}"
+            );
+            assert!(
+                impact.v_out <= impact.v_in * 1.001 + 1e-9,
+                "{law}: {impact:?}"
+            );
+        }
+    }
+    // Elastic Hertz: with g·t_c ≪ v_in the contact is the free impact of eqs 5–7.
+    let run = simulate_detailed(
+        &model,
+        ForceModel::Quasistatic,
+        CompliantDamping::PerImpact,
+        &options,
+        compliant,
+    )
+    .unwrap();
+    let law = stop(&model, ForceModel::Quasistatic, CompliantDamping::PerImpact).elastic;
+    for impact in &run.history.impacts {
+        let hertz = hertz_estimate(&law, model.mass, impact.v_in).unwrap();
+        let f = impact.peak_force.unwrap();
+        let t_c = impact.contact_time.unwrap();
+        // Gravity and the table's acceleration act over t_c: their share of the momentum is
+        // (g + Aω²)·t_c / v_in, below 1e-3 here.
+        assert!(
+            (f / hertz.peak_force - 1.0).abs() < 2e-3,
+            "{impact:?} {hertz:?}"
+        );
+        assert!(
+            (t_c / hertz.contact_time - 1.0).abs() < 2e-3,
+            "{impact:?} {hertz:?}"
+        );
+    }
+}
