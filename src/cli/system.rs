@@ -5,7 +5,9 @@
 use serde::Serialize;
 
 use crate::format::csv;
+use crate::format::verdict as words;
 use crate::model::presets::Registry;
+use crate::model::system::compliant::verdict::{Verdict, verdict};
 use crate::model::system::{
     self, CompliantDamping, Contact, EndReason, History, ImpactKind, ImpactRecord, RunOptions,
     Stick, SystemError, SystemModel, SystemSample,
@@ -172,6 +174,15 @@ pub struct RunReport {
     pub samples: Vec<SystemSample>,
 }
 
+/// Which approach the system needs (with `--contact both` or `compliant`): the model's verdict
+/// and its sentence.
+#[derive(Debug, Clone, Serialize)]
+pub struct VerdictRow {
+    pub sentence: String,
+    #[serde(flatten)]
+    pub verdict: Verdict,
+}
+
 /// The JSON document of `system`.
 #[derive(Debug, Clone, Serialize)]
 pub struct SystemReport {
@@ -182,6 +193,8 @@ pub struct SystemReport {
     pub frequency: f64,
     pub groups: GroupsRow,
     pub runs: Vec<RunReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<VerdictRow>,
 }
 
 /// Simulates every contact asked for.
@@ -208,7 +221,24 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
             })
         })
         .collect::<Result<Vec<_>, CliError>>()?;
+    let verdict = match contacts(&args.contact, &model).last() {
+        Some(
+            contact @ Contact::Compliant {
+                model: law,
+                damping,
+            },
+        ) => {
+            let plain = run_options(&args.run, 0);
+            let v = verdict(&model, *law, *damping, &plain).map_err(|e| failed(contact, e))?;
+            Some(VerdictRow {
+                sentence: words::sentence(&v),
+                verdict: v,
+            })
+        }
+        _ => None,
+    };
     Ok(SystemReport {
+        verdict,
         scene: model
             .scene
             .as_ref()
@@ -298,6 +328,13 @@ fn table(report: &SystemReport, transient: usize) -> String {
                 run.impacts.len()
             ));
         }
+    }
+    if let Some(v) = &report.verdict {
+        out.push_str(&format!(
+            "\nwhich approach: {}: {}\n",
+            words::gist(&v.verdict),
+            v.sentence
+        ));
     }
     out
 }

@@ -5,3 +5,4 @@ mod laws;
 mod plot;
 mod readme;
 mod studies;
+mod systems;

@@ -4,6 +4,7 @@
 
 use std::ops::ControlFlow;
 
+use crate::model::system::compliant::verdict::{Verdict, verdict};
 use crate::model::system::{
     self, Column, Contact, DiagramOptions, History, Param, RunOptions, SystemError, SystemModel,
 };
@@ -16,10 +17,12 @@ pub struct SystemStudy {
     pub run: RunOptions,
 }
 
-/// Each stop's run, or why it failed.
+/// Each stop's run, or why it failed, and which approach the system needs (with a compliant
+/// stop among them).
 #[derive(Debug, Clone)]
 pub struct SystemRuns {
     pub runs: Vec<(Contact, Result<History, SystemError>)>,
+    pub verdict: Option<Result<Verdict, SystemError>>,
 }
 
 /// A bifurcation diagram of a system with each stop.
@@ -67,12 +70,23 @@ pub fn values(from: f64, to: f64, points: usize) -> Vec<f64> {
 
 /// Every stop's run.
 pub fn run_system(study: &SystemStudy) -> SystemRuns {
+    let plain = RunOptions {
+        samples_per_period: 0,
+        ..study.run
+    };
     SystemRuns {
         runs: study
             .contacts
             .iter()
             .map(|c| (*c, system::simulate(&study.model, c, &study.run)))
             .collect(),
+        verdict: study.contacts.iter().find_map(|c| match c {
+            Contact::Compliant {
+                model: law,
+                damping,
+            } => Some(verdict(&study.model, *law, *damping, &plain)),
+            Contact::Rigid { .. } => None,
+        }),
     }
 }
 

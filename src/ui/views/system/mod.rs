@@ -115,14 +115,14 @@ impl View for System {
             StudySpec::System(Box::new(SystemStudy {
                 model: model.clone(),
                 contacts: contacts.clone(),
-                run: settings::run_options(),
+                run: settings::run_options(s),
             })),
             StudySpec::Diagram(Box::new(DiagramStudy {
                 param: s.diagram_key(&model),
                 model,
                 contacts,
                 values,
-                options: settings::diagram_options(),
+                options: settings::diagram_options(s),
             })),
         ]
     }

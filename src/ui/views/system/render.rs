@@ -8,7 +8,9 @@ use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
 use crate::chart::Chart;
+use crate::format::verdict as words;
 use crate::model::study::runner::StudyKind;
+use crate::model::system::compliant::verdict::Validity;
 use crate::model::system::{Contact, EndReason, SystemModel};
 use crate::ui::app::{App, Mode};
 use crate::ui::layout::{ScreenLayout, left_width};
@@ -156,6 +158,20 @@ pub fn note_texts(app: &App, model: Result<&SystemModel, &String>) -> Vec<(Strin
                 }
                 Err(e) => texts.push((format!("✗ {name}: {e}"), Role::Error)),
             }
+        }
+        match &runs.verdict {
+            Some(Ok(v)) => {
+                let role = match v.validity {
+                    Validity::Valid => Role::Normal,
+                    Validity::Marginal | Validity::NotValid => Role::Warning,
+                };
+                texts.push((
+                    format!("{}: {}", words::gist(v), words::sentence(v)),
+                    role,
+                ));
+            }
+            Some(Err(e)) => texts.push((format!("✗ verdict: {e}"), Role::Error)),
+            None => {}
         }
     }
     if let Some(d) = app.studies.diagram() {

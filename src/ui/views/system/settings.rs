@@ -56,6 +56,8 @@ pub struct Settings {
     /// The diagram's range, SI; `None`: the default of its key.
     pub range: Option<(f64, f64)>,
     pub values: Option<usize>,
+    /// Transient and recorded impacts of the run and of each diagram value; `None`: 200 and 40.
+    pub budget: Option<(usize, usize)>,
 }
 
 /// The `[system]` table of the preset the explorer shows, or why there is none.
@@ -266,10 +268,11 @@ pub fn contacts(model: &SystemModel, law: ForceModel) -> Vec<Contact> {
 }
 
 /// The run drawn: a transient, then recorded impacts with dense samples.
-pub fn run_options() -> RunOptions {
+pub fn run_options(settings: &Settings) -> RunOptions {
+    let (transient, recorded) = settings.budget.unwrap_or((TRANSIENT, RECORDED));
     RunOptions {
-        transient_impacts: TRANSIENT,
-        recorded_impacts: RECORDED,
+        transient_impacts: transient,
+        recorded_impacts: recorded,
         max_periods: 2000.0,
         max_impacts: 200_000,
         samples_per_period: SAMPLES_PER_PERIOD,
@@ -278,11 +281,11 @@ pub fn run_options() -> RunOptions {
 }
 
 /// Each value of the diagram: the same budgets without samples.
-pub fn diagram_options() -> DiagramOptions {
+pub fn diagram_options(settings: &Settings) -> DiagramOptions {
     DiagramOptions {
         run: RunOptions {
             samples_per_period: 0,
-            ..run_options()
+            ..run_options(settings)
         },
         ..DiagramOptions::default()
     }
