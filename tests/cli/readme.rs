@@ -153,6 +153,9 @@ fn run(command: &str, dir: &Path) -> Result<(), String> {
         "plot",
         "translate",
         "restitution",
+        "system",
+        "orbit",
+        "bifurcation",
         "help",
     ];
     if !args

@@ -101,7 +101,7 @@ fn the_oscillator_shows_its_groups_and_a_period_one_rigid_orbit() {
 #[test]
 fn an_edit_of_a_system_key_runs_it_again_and_bad_input_names_the_key() {
     let mut app = app_on("bouncing-ball", 160, 48);
-    go_to_row(&mut app, "amplitude");
+    go_to_row(&mut app, "A amplitude");
     type_in(&mut app, "0.8 mm");
     assert!(
         app.take_studies().len() == 2,
@@ -119,7 +119,7 @@ fn an_edit_of_a_system_key_runs_it_again_and_bad_input_names_the_key() {
     // The rejected text stays in the editor, nothing is run.
     assert!(app.take_studies().is_empty());
     press(&mut app, KeyCode::Esc);
-    go_to_row(&mut app, "frequency");
+    go_to_row(&mut app, "f frequency");
     type_in(&mut app, "0");
     assert!(screen(&app, 160, 48).contains("system.frequency must be"));
 }

@@ -35,8 +35,19 @@ impl Row {
     /// Its label in the form.
     pub fn label(self) -> String {
         match self {
-            Row::Key(SystemKey::Gamma) => "Γ".into(),
-            Row::Key(key) => key.name().replace('_', " "),
+            Row::Key(key) => match key {
+                SystemKey::Amplitude => "A amplitude",
+                SystemKey::Gamma => "Γ = Aω²/g",
+                SystemKey::Frequency => "f frequency",
+                SystemKey::Gravity => "g gravity",
+                SystemKey::Stiffness => "k stiffness",
+                SystemKey::DampingRatio => "ζ damping",
+                SystemKey::Damping => "c damping",
+                SystemKey::ForcingAmplitude => "forcing",
+                SystemKey::Gap => "gap",
+                SystemKey::SecondGap => "gap₂",
+            }
+            .into(),
             Row::DiagramKey => "diagram".into(),
             Row::From => "from".into(),
             Row::To => "to".into(),
