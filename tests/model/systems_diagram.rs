@@ -150,3 +150,38 @@ fn budgets_and_cancellation() {
     .to_string();
     assert!(err.contains("system.frequency must be"), "{err}");
 }
+
+#[test]
+fn a_diagram_over_the_restitution_moves_the_rigid_stop_e() {
+    // Γ = 1.3: the period-1 orbit's impact speed π + Γ_SN(e) depends on the varied e.
+    let gamma = 1.3;
+    let sn = |e: f64| PI * (1.0 - e) / (1.0 + e);
+    let phase = (sn(0.5) / gamma).acos();
+    let mut run = options(400, 8);
+    run.run.initial = Some(State {
+        t: phase,
+        x: gamma * phase.sin(),
+        v: PI,
+    });
+    let values = [0.45, 0.5, 0.55];
+    let param: Param = "impact.restitution".parse().unwrap();
+    let d = bifurcation(
+        &ball(gamma, 0.5),
+        &Contact::rigid(0.5),
+        param,
+        &values,
+        &run,
+        |_| ControlFlow::Continue(()),
+    )
+    .unwrap();
+    for c in &d.columns {
+        assert_eq!(c.period, Some((1, 1)), "e = {}", c.value);
+        let expected = PI + sn(c.value);
+        assert!(
+            (c.velocities[0] - expected).abs() < 1e-9,
+            "e = {}: {} vs {expected}",
+            c.value,
+            c.velocities[0]
+        );
+    }
+}
