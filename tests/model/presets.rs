@@ -75,10 +75,13 @@ restitution = 0.6
 plastic_indentation = 2.3e-6
 "#;
 
-const BUILTIN_SCENES: [&str; 7] = [
+const BUILTIN_SCENES: [&str; 10] = [
     "aluminium-sphere-r10-plate",
+    "bouncing-ball",
     "fig4-steel-sphere-r10-plate",
     "fig5-steel-sphere-r10-plate",
+    "impact-oscillator",
+    "impact-oscillator-clearance",
     "steel-cylinder-r20-l100-plate",
     "steel-cylinders-r20-l100",
     "steel-sphere-r10-plate",

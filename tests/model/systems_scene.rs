@@ -51,6 +51,14 @@ fn presets_load_simulate_and_round_trip() {
         };
         let h = simulate(&model, &Contact::rigid(model.restitution), &options).unwrap();
         assert_eq!(h.impacts.len(), 20, "{name} impacts");
+        // Each rigid impact carries the Hertz estimate of its peak force at its own speed
+        // (eqs 5–6): the scene's quasistatic estimate at v₀ = v_in.
+        for i in h.impacts.iter().filter(|i| i.v_in > 0.0) {
+            let mut at = scene.clone();
+            at.impact.v0 = i.v_in;
+            let f_max = at.quasistatic().unwrap().f_max;
+            assert_eq!(i.peak_force_estimate, Some(f_max), "{name}");
+        }
         // Written back and read again: the same scene and the same system.
         let text = scene_file::to_toml_with_system(&scene, None, None, Some(&spec));
         let doc = Document::parse("again", &text).unwrap();

@@ -12,6 +12,7 @@ use super::error::SystemError;
 use super::model::SystemModel;
 use super::param::Param;
 use super::run::{EndReason, History, RunOptions, State};
+use super::spec::SystemKind;
 
 /// The recorded impacts at one parameter value.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -45,7 +46,8 @@ pub struct Diagram {
 /// How a diagram is run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DiagramOptions {
-    /// The run at each value; its `initial` is the start of each chunk.
+    /// The run at each value; its `initial` (a state of the model passed in, carried to each
+    /// value at the same phase and gap) starts each chunk.
     pub run: super::run::RunOptions,
     /// Budget of values × (transient + recorded) impacts for the whole diagram.
     pub max_total_impacts: usize,
@@ -111,18 +113,19 @@ where
             if c >= chunks || cancelled.load(Ordering::Relaxed) {
                 break;
             }
-            let mut state: Option<State> = options.run.initial;
+            // Each chunk starts from the given state (of `model`), then follows the attractor.
+            let mut state: Option<(State, &SystemModel)> = options.run.initial.map(|s| (s, model));
             for i in c * chunk..((c + 1) * chunk).min(values.len()) {
                 if cancelled.load(Ordering::Relaxed) {
                     return;
                 }
                 let m = &models[i];
                 let run_options = RunOptions {
-                    initial: state.map(|s| rebase(s, model, m)),
+                    initial: state.map(|(s, from)| rebase(s, from, m)),
                     ..options.run
                 };
                 let column = run(m, &run_options).map(|h| {
-                    state = Some(h.end_state);
+                    state = Some((h.end_state, m));
                     column_of(i, values[i], &h, m.spec.period())
                 });
                 let column = column.map_err(|e| match e {
@@ -186,13 +189,49 @@ where
     })
 }
 
-/// A state of the run at `from` moved to the same forcing phase in a period of `to` near t = 0
-/// (the systems are periodic in t; a small t keeps ωt accurate along a long diagram).
+/// A state of the run at `from` carried to `to` at the same forcing phase, in the first period
+/// (the systems are periodic in t; a small t keeps ωt accurate along a long diagram), with the
+/// same gap and relative velocity to the table, or inside the new stops.
 fn rebase(state: State, from: &SystemModel, to: &SystemModel) -> State {
     let phase = (from.spec.omega() * state.t).rem_euclid(2.0 * PI);
-    State {
-        t: phase / to.spec.omega(),
-        ..state
+    let t = phase / to.spec.omega();
+    match (from.spec.kind, to.spec.kind) {
+        (
+            SystemKind::BouncingBall {
+                amplitude: a_from, ..
+            },
+            SystemKind::BouncingBall {
+                amplitude: a_to, ..
+            },
+        ) => {
+            let (w_from, w_to) = (from.spec.omega(), to.spec.omega());
+            let (s, c) = phase.sin_cos();
+            let gap = (state.x - a_from * s).max(0.0);
+            let rate = state.v - a_from * w_from * c;
+            State {
+                t,
+                x: a_to * s + gap,
+                v: a_to * w_to * c + rate,
+            }
+        }
+        (
+            _,
+            SystemKind::ImpactOscillator {
+                gap, second_gap, ..
+            },
+        ) => {
+            let low = -second_gap.unwrap_or(f64::INFINITY);
+            let x = state.x.clamp(low, gap);
+            let v = if x == gap {
+                state.v.min(0.0)
+            } else if x == low {
+                state.v.max(0.0)
+            } else {
+                state.v
+            };
+            State { t, x, v }
+        }
+        _ => State { t, ..state },
     }
 }
 

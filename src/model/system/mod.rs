@@ -87,6 +87,13 @@ pub fn bifurcation(
     options: &DiagramOptions,
     on_column: impl FnMut(&Column) -> ControlFlow<()>,
 ) -> Result<Diagram, SystemError> {
-    let run = |model: &SystemModel, run: &RunOptions| simulate(model, contact, run);
+    // A rigid stop's e follows the model when the diagram varies `impact.restitution`.
+    let follows_e = param == Param::Scene(crate::model::scene_key::SceneKey::Restitution);
+    let run = |model: &SystemModel, run: &RunOptions| match contact {
+        Contact::Rigid { .. } if follows_e => {
+            simulate(model, &Contact::rigid(model.restitution), run)
+        }
+        _ => simulate(model, contact, run),
+    };
     diagram::run(model, param, values, options, run, on_column)
 }

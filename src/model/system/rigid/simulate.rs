@@ -16,6 +16,9 @@ use super::search::{Found, first_impact};
 /// about (this fraction)²·ωT of a period (docs/systems.md §4).
 pub const CHATTER_WINDOW: f64 = 1e-6;
 
+/// Forcing periods searched at a time along a flight.
+const FLIGHT_STRETCH: f64 = 64.0;
+
 /// What the body does next.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Phase {
@@ -97,7 +100,7 @@ pub fn simulate(
         (0.0..=1.0).contains(&e)
     })?;
     let dynamics = Dynamics::new(model, restitution);
-    let mut run = Run::new(&dynamics, model.mass, options);
+    let mut run = Run::new(&dynamics, model, options);
     let start = options.initial.unwrap_or_else(|| dynamics.rest_state(0.0));
     let t_max = start.t + options.max_periods * dynamics.period;
     let mut phase = run.start(start)?;
@@ -133,18 +136,26 @@ pub fn simulate(
             },
             Phase::Flight { state, free_until } => {
                 let flight = dynamics.flight(state.t, state.x, state.v);
-                match first_impact(&flight, free_until, t_max - state.t)? {
+                // A long flight is searched a stretch at a time, so that one search's step budget
+                // bounds a stretch, not the run.
+                let stretch = (t_max - state.t).min(FLIGHT_STRETCH * dynamics.period);
+                match first_impact(&flight, free_until, stretch)? {
                     Found::Nothing => {
-                        let p = flight.at(t_max - state.t);
-                        run.samples_of(&flight, t_max);
-                        return Ok(run.finish(
-                            EndReason::TimeLimit,
-                            State {
-                                t: t_max,
-                                x: state.x + p.dx,
-                                v: p.v,
-                            },
-                        ));
+                        let end = state.t + stretch;
+                        let p = flight.at(stretch);
+                        run.samples_of(&flight, end);
+                        let next = State {
+                            t: end,
+                            x: state.x + p.dx,
+                            v: p.v,
+                        };
+                        if end >= t_max {
+                            return Ok(run.finish(EndReason::TimeLimit, next));
+                        }
+                        Phase::Flight {
+                            state: next,
+                            free_until: 0.0,
+                        }
                     }
                     Found::Impact { tau, stop, point } => {
                         let t = state.t + tau;
@@ -181,7 +192,7 @@ pub fn simulate(
 /// The bookkeeping of one run: counts, records, samples.
 struct Run<'a> {
     dynamics: &'a Dynamics,
-    mass: f64,
+    model: &'a SystemModel,
     options: &'a RunOptions,
     history: History,
     /// Sample spacing, s (∞: none).
@@ -189,10 +200,10 @@ struct Run<'a> {
 }
 
 impl<'a> Run<'a> {
-    fn new(dynamics: &'a Dynamics, mass: f64, options: &'a RunOptions) -> Run<'a> {
+    fn new(dynamics: &'a Dynamics, model: &'a SystemModel, options: &'a RunOptions) -> Run<'a> {
         Run {
             dynamics,
-            mass,
+            model,
             options,
             history: History {
                 samples: Vec::new(),
@@ -235,12 +246,18 @@ impl<'a> Run<'a> {
                 .into());
             }
             if gap <= tolerance {
-                let closing = sigma * (state.v - sv);
+                let rate = sigma * (state.v - sv);
+                let tiny = 1e-13 * d.speed_scale;
+                // On the stop and leaving it: a flight from exactly there.
+                if rate > tiny {
+                    let on = State { x: s, ..state };
+                    return Ok(Phase::Flight {
+                        state: on,
+                        free_until: 0.0,
+                    });
+                }
                 let (after, v_in, v_out) = impact(d, stop, state.t, state.v);
-                if closing < 0.0
-                    && v_in > 1e-13 * d.speed_scale
-                    && self.impact(stop, after, v_in, v_out, ImpactKind::Impact)?
-                {
+                if rate < -tiny && self.impact(stop, after, v_in, v_out, ImpactKind::Impact)? {
                     return Ok(Phase::Done(after));
                 }
                 return Ok(match after_impact(d, stop, after, v_out) {
@@ -285,9 +302,14 @@ impl<'a> Run<'a> {
                 v_in,
                 v_out,
                 peak_force: None,
-                peak_force_estimate: None,
+                // The Hertz estimate (eqs 5–6) of the peak force at this impact's speed.
+                peak_force_estimate: if v_in > 0.0 {
+                    self.model.peak_force_estimate(v_in)
+                } else {
+                    None
+                },
                 contact_time: None,
-                energy_lost: 0.5 * self.mass * (v_in * v_in - v_out * v_out),
+                energy_lost: 0.5 * self.model.mass * (v_in * v_in - v_out * v_out),
                 kind,
             });
             return Ok(self.history.impacts.len() >= self.options.recorded_impacts);
