@@ -57,7 +57,7 @@ pub fn map_step(stop: &CompliantStop, p: MapPoint) -> Result<MapStep, SystemErro
             "the body comes to rest on the stop (a contact that does not end)",
         ));
     };
-    let flight = stop.flight((t, xe, ve), t + 64.0 * period, false)?;
+    let flight = stop.flight((t, xe, ve), t + 64.0 * period)?;
     let Landing::Contact {
         stop: next_stop,
         t: tn,
@@ -157,14 +157,13 @@ pub fn find_orbit(
     options: &OrbitOptions,
 ) -> Result<Orbit, SystemError> {
     let plant = &stop.plant;
-    let period = plant.period();
     let (m, n) = (guess.forcing_cycles, guess.impacts);
     if m == 0 || n == 0 {
         return Err(SystemError::OrbitDegenerate(
             "an orbit needs at least one forcing period and one impact",
         ));
     }
-    let mut p =
+    let p =
         match guess.start {
             Some(s) => MapPoint {
                 t: s.phase / plant.omega(),
