@@ -8,10 +8,9 @@ use std::f64::consts::PI;
 
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::force::ForceLaw;
-use hertz_tui::model::numeric::roots::brent;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::compliant::estimate::hertz_estimate;
-use hertz_tui::model::system::compliant::orbit::{MapPoint, map_jacobian, map_n};
+use hertz_tui::model::system::compliant::orbit::{MapPoint, period_doubling};
 use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop, simulate_detailed};
 use hertz_tui::model::system::{CompliantDamping, RunOptions, SystemKind, SystemModel, SystemSpec};
 
@@ -52,36 +51,6 @@ fn stop(model: &SystemModel, law: ForceModel, damping: CompliantDamping) -> Comp
     CompliantStop::new(model, law, damping, options).unwrap()
 }
 
-/// The period-1 orbit of the compliant map at Γ by Newton from `guess`, and 1 + tr J + det J, the
-/// characteristic polynomial at −1: it changes sign where a multiplier crosses −1.
-fn pd_function(
-    frequency: f64,
-    gamma: f64,
-    law: ForceModel,
-    damping: CompliantDamping,
-    guess: &mut MapPoint,
-) -> f64 {
-    let model = ball(frequency, gamma);
-    let s = stop(&model, law, damping);
-    let period = 1.0 / frequency;
-    let mut p = *guess;
-    for _ in 0..30 {
-        let (q, _) = map_n(&s, p, 1).unwrap();
-        let r = [q.t - p.t - period, q.v_in - p.v_in];
-        let j = map_jacobian(&s, p, 1).unwrap();
-        let a = j - nalgebra::Matrix2::identity();
-        let step = -(a.try_inverse().unwrap() * nalgebra::Vector2::new(r[0], r[1]));
-        p.t += step[0];
-        p.v_in += step[1];
-        if (step[0] / period).abs() < 1e-11 && (step[1] / p.v_in).abs() < 1e-11 {
-            break;
-        }
-    }
-    *guess = p;
-    let j = map_jacobian(&s, p, 1).unwrap();
-    1.0 + j.trace() + j.determinant()
-}
-
 /// The rigid period-1 orbit at Γ: impact speed gT/(1+e), table velocity u(1−e)/(1+e) with u = gT/2.
 fn rigid_orbit(frequency: f64, gamma: f64, e: f64) -> MapPoint {
     let period = 1.0 / frequency;
@@ -104,13 +73,13 @@ fn compliant_threshold(
     e_rigid: f64,
 ) -> f64 {
     let rigid = rigid_threshold(e_rigid);
-    let mut guess = rigid_orbit(frequency, 0.99 * rigid, e_rigid);
-    let (lo, hi) = (0.9 * rigid, 1.03 * rigid);
-    brent(
-        |gamma| pd_function(frequency, gamma, law, damping, &mut guess),
-        lo,
-        hi,
+    period_doubling(
+        |gamma| Ok(stop(&ball(frequency, gamma), law, damping)),
+        rigid_orbit(frequency, 0.99 * rigid, e_rigid),
+        (1, 1),
+        (0.9 * rigid, 1.03 * rigid),
     )
+    .unwrap()
     .expect("a sign change of 1 + tr J + det J")
 }
 

@@ -1,7 +1,9 @@
 //! The compliant stop: every contact integrated through a law of the law table with the project's
-//! own integrators (src/model/ode), flights between contacts likewise, contact start and end
-//! located as events at the method's full order (docs/systems.md, "Compliant stops").
+//! own integrators (src/model/ode), contact turn and end located as events at the method's full
+//! order (docs/systems.md, "Compliant stops").
 //!
+//! - Flights are the rigid solver's closed forms with its certified search for the first impact
+//!   (docs/systems.md §3): no contact is missed, and a flight costs one bracketed root.
 //! - Each impact's law comes from the scene's bodies (Hertz k, n; eqs 1–9) with its damping set
 //!   by [`CompliantDamping`]: from the impact's own incoming velocity for the laws defined that
 //!   way (the Hunt–Crossley family's α = χ/v₀, eqs 19–20), from a material constant, or
@@ -40,6 +42,8 @@ use flight::{Landing, fly};
 use plant::Plant;
 use plant_of::SystemPlant;
 
+use super::rigid::dynamics::Dynamics;
+
 /// A contact still held after this many forcing periods is taken to be permanent: the body rests
 /// on the stop for ever (the run ends with [`EndReason::StuckForever`]).
 pub const HELD_PERIODS: f64 = 4.0;
@@ -74,6 +78,8 @@ pub struct CompliantStop {
     /// The Hertz law F = k·xⁿ of the scene's bodies (eq 1).
     pub elastic: PowerLaw,
     pub options: CompliantOptions,
+    /// The flights' closed forms (the rigid solver's).
+    dynamics: Dynamics,
 }
 
 impl CompliantStop {
@@ -103,6 +109,7 @@ impl CompliantStop {
             source,
             elastic,
             options,
+            dynamics: Dynamics::new(model, model.restitution),
         })
     }
 
@@ -149,17 +156,18 @@ impl CompliantStop {
         &self,
         from: (f64, f64, f64),
         t_limit: f64,
-        keep_dense: bool,
     ) -> Result<flight::Flight, SystemError> {
-        fly(
-            &self.plant,
-            self.options.method,
-            self.options.rtol,
-            from,
-            t_limit,
-            keep_dense,
-        )
-        .map_err(|e| SystemError::Compliant(format!("flight: {e}")))
+        fly(&self.dynamics, from, t_limit, 0.0)
+    }
+
+    /// [`CompliantStop::flight`] after a contact that ended as it began (a touch with no approach
+    /// speed, the body pulled away): the first millionth of a period is known free.
+    fn flight_after_touch(
+        &self,
+        from: (f64, f64, f64),
+        t_limit: f64,
+    ) -> Result<flight::Flight, SystemError> {
+        fly(&self.dynamics, from, t_limit, 1e-6 * self.dynamics.period)
     }
 }
 
@@ -302,6 +310,7 @@ pub fn run(
     let mut sticks = Vec::new();
     let mut total = 0usize;
     let mut sampler: Option<Sampler> = None;
+    let mut touched = false;
     let end = loop {
         let recording = total >= options.transient_impacts;
         if recording && sampler.is_none() {
@@ -311,15 +320,16 @@ pub fn run(
             break EndReason::Recorded;
         }
         let keep = sampler.is_some();
-        let flight = stop.flight(state, t_limit, keep)?;
-        if let (Some(s), Some(dense)) = (sampler.as_mut(), flight.dense.as_ref()) {
+        let flight = if std::mem::take(&mut touched) {
+            stop.flight_after_touch(state, t_limit)?
+        } else {
+            stop.flight(state, t_limit)?
+        };
+        if let Some(s) = sampler.as_mut() {
             let b = match flight.landing {
                 Landing::Contact { t, .. } | Landing::TimeLimit { t, .. } => t,
             };
-            s.fill(plant, b, |t| {
-                let y = dense.eval(t);
-                (y[0], y[1])
-            });
+            s.fill(plant, b, |t| flight.at(t));
         }
         let (i, t, x, v) = match flight.landing {
             Landing::TimeLimit { t, x, v } => {
@@ -364,7 +374,10 @@ pub fn run(
             });
         }
         match c.exit {
-            Exit::Free { t, x, v } => state = (t, x, v),
+            Exit::Free { t, x, v } => {
+                touched = c.t_end == c.t_start;
+                state = (t, x, v);
+            }
             Exit::Held { t, x, v } => {
                 state = (t, x, v);
                 if total > options.transient_impacts {

@@ -258,6 +258,29 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         evals: 0,
     };
     let tau_limit = (t_limit - t0) / scale.t;
+    // A touch with no approach speed while the stop pulls away (or the body is pulled off it) is
+    // no contact: it ends where it began.
+    if v_in == 0.0 {
+        let (ddd, stop_now, ..) = ode_sys.relative_accel(0.0, &State::zeros());
+        if ddd <= 0.0 {
+            let (x, v) = stop_now.body(0.0, 0.0);
+            return Ok(finish(
+                mass,
+                Some((0.0, State::zeros())),
+                scale,
+                t0,
+                v_in,
+                stop,
+                (0.0, t0),
+                0.0,
+                EnergyAudit::default(),
+                Exit::Free { t: t0, x, v },
+                0,
+                0,
+                Vec::new(),
+            ));
+        }
+    }
     let mut tau = 0.0;
     let mut y = State::new(0.0, v_in / v_s);
     let mut steps = 0;

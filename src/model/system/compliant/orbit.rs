@@ -11,6 +11,8 @@ use std::f64::consts::TAU;
 
 use nalgebra::{Complex, Matrix2, Vector2};
 
+use crate::model::numeric::roots::brent;
+
 use super::super::{ImpactPoint, Orbit, OrbitGuess, OrbitOptions, SystemError};
 use super::contact::Exit;
 use super::flight::Landing;
@@ -55,7 +57,7 @@ pub fn map_step(stop: &CompliantStop, p: MapPoint) -> Result<MapStep, SystemErro
             "the body comes to rest on the stop (a contact that does not end)",
         ));
     };
-    let flight = stop.flight((t, xe, ve), t + 64.0 * period, false)?;
+    let flight = stop.flight((t, xe, ve), t + 64.0 * period)?;
     let Landing::Contact {
         stop: next_stop,
         t: tn,
@@ -155,14 +157,13 @@ pub fn find_orbit(
     options: &OrbitOptions,
 ) -> Result<Orbit, SystemError> {
     let plant = &stop.plant;
-    let period = plant.period();
     let (m, n) = (guess.forcing_cycles, guess.impacts);
     if m == 0 || n == 0 {
         return Err(SystemError::OrbitDegenerate(
             "an orbit needs at least one forcing period and one impact",
         ));
     }
-    let mut p =
+    let p =
         match guess.start {
             Some(s) => MapPoint {
                 t: s.phase / plant.omega(),
@@ -182,9 +183,25 @@ pub fn find_orbit(
             }
         };
     let tol = options.tolerance.max(TOLERANCE_FLOOR);
+    let (p, iterations) = newton(stop, p, m, n, tol, options.max_iterations)?;
+    orbit_at(stop, p, m, n, iterations)
+}
+
+/// Newton on (t_n − t₀ − m·T, v_n − v₀) from `p`, to a correction below `tol` (relative to the
+/// period and to the speed), with steps damped to a quarter period and half the speed. Returns
+/// the converged point and the iterations taken.
+pub fn newton(
+    stop: &CompliantStop,
+    mut p: MapPoint,
+    m: u32,
+    n: u32,
+    tol: f64,
+    max_iterations: usize,
+) -> Result<(MapPoint, usize), SystemError> {
+    let period = stop.plant.period();
     let target = m as f64 * period;
     let mut residual = f64::INFINITY;
-    for iteration in 1..=options.max_iterations {
+    for iteration in 1..=max_iterations {
         let (q, _) = map_n(stop, p, n)?;
         let r = Vector2::new(q.t - p.t - target, q.v_in - p.v_in);
         let j = map_jacobian(stop, p, n)?;
@@ -194,7 +211,6 @@ pub fn find_orbit(
                 "the map's Jacobian has a multiplier at 1 (a fold)",
             ));
         };
-        // Damped: at most a quarter period in time and half the speed.
         let scale = (step[0].abs() / (0.25 * period))
             .max(step[1].abs() / (0.5 * p.v_in.max(f64::MIN_POSITIVE)))
             .max(1.0);
@@ -208,13 +224,47 @@ pub fn find_orbit(
             ));
         }
         if residual <= tol {
-            return orbit_at(stop, p, m, n, iteration);
+            return Ok((p, iteration));
         }
     }
     Err(SystemError::OrbitNotConverged {
-        iterations: options.max_iterations,
+        iterations: max_iterations,
         residual,
     })
+}
+
+/// Where, between `lo` and `hi`, a period-m, n-impact orbit loses stability by period doubling: the
+/// root in the parameter of 1 + tr J + det J (the characteristic polynomial of the map's Jacobian
+/// at −1), by Brent's method, the orbit followed from each value to the next by Newton starting
+/// at `guess`. `build` makes the stop at a parameter value. `None` without a sign change there.
+pub fn period_doubling(
+    build: impl Fn(f64) -> Result<CompliantStop, SystemError>,
+    guess: MapPoint,
+    (m, n): (u32, u32),
+    (lo, hi): (f64, f64),
+) -> Result<Option<f64>, SystemError> {
+    let mut p = guess;
+    let mut failure = None;
+    let mut at = |value: f64| -> f64 {
+        let result = build(value).and_then(|stop| {
+            let (q, _) = newton(&stop, p, m, n, 1e-11, 40)?;
+            p = q;
+            let j = map_jacobian(&stop, q, n)?;
+            Ok(1.0 + j.trace() + j.determinant())
+        });
+        match result {
+            Ok(f) => f,
+            Err(e) => {
+                failure.get_or_insert(e);
+                f64::NAN
+            }
+        }
+    };
+    let root = brent(&mut at, lo, hi);
+    match failure {
+        Some(e) => Err(e),
+        None => Ok(root),
+    }
 }
 
 /// The orbit through the converged point `p`: its impacts and multipliers.

@@ -2,9 +2,9 @@
 //! chatter summed to its accumulation point, sticking until the contact force turns tensile,
 //! and the impact map with its Jacobian for periodic orbits (docs/systems.md).
 
-mod dynamics;
+pub(crate) mod dynamics;
 mod orbit;
-mod search;
+pub(crate) mod search;
 mod simulate;
 
 pub use orbit::find_orbit;
