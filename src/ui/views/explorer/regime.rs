@@ -8,7 +8,6 @@ use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
 use crate::format::recommendation;
-use crate::model::recommend::recommend;
 use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::style::Role;
@@ -60,7 +59,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     };
     let onset = &valid.quasistatic.onset;
     let v0 = valid.scene.impact.v0;
-    let advice = recommend(&valid.scene, &valid.quasistatic);
+    let advice = &valid.advice;
     let regime_role = match advice.regime {
         Regime::Elastic => Role::Good,
         Regime::YieldBegins => Role::Warning,
@@ -151,7 +150,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         );
     }
     let room = max_lines.saturating_sub(lines.len());
-    let why = wrap(&format!("why: {}", recommendation::why(&advice.reason)), width);
+    let why = wrap(&format!("why: {}", recommendation::why(advice, &valid.scene)), width);
     // The reason whole, or not at all; then the other convention if a line is left.
     if why.len() <= room {
         lines.extend(
