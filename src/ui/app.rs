@@ -439,6 +439,8 @@ impl App {
     /// Re-evaluates the estimate of the draft and requests the solves whose inputs changed.
     pub(crate) fn recompute(&mut self) {
         let start = Instant::now();
+        // Named before it is copied: the valid scene's name and materials are those shown.
+        super::edited::name_edited_materials(self);
         match self.draft.scene.quasistatic() {
             Ok(quasistatic) => {
                 self.scene_error = None;
