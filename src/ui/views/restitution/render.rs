@@ -22,7 +22,7 @@ use crate::chart::restitution as plot;
 
 /// Said by every chart and table of the view while `C` is on: they show each law's own damping
 /// rule, which is what they are about, and not the calibration the Models pane announces.
-pub const UNCALIBRATED: &str = " · each law's own rule: C (calibrate) does not apply here";
+pub const UNCALIBRATED: &str = " · own rules: C not applied";
 
 pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {
     let [left, right] = Layout::horizontal([
