@@ -23,10 +23,15 @@ pub fn gist(reason: &Reason) -> &'static str {
     }
 }
 
-/// Why, in one line: the case of the guidance with the numbers that decided it, the body that
-/// yields, what the recommended law (and, once the contact yields, Thornton's) realises on the
-/// scene, and which inputs were assumed rather than given.
+/// Why, in one line: the clauses of [`why_clauses`] joined.
 pub fn why(advice: &Recommendation, scene: &Scene) -> String {
+    why_clauses(advice, scene).join("; ")
+}
+
+/// Why, clause by clause, the most needed first: the case of the guidance with the numbers that
+/// decided it and the body that yields; which inputs were assumed rather than given; what the
+/// recommended law (and, once the contact yields, Thornton's) realises on the scene.
+pub fn why_clauses(advice: &Recommendation, scene: &Scene) -> Vec<String> {
     let e = advice.restitution;
     let x_pl = advice.plastic_indentation;
     let who = yielding_body(advice, scene);
@@ -48,8 +53,8 @@ pub fn why(advice: &Recommendation, scene: &Scene) -> String {
              Thornton's elastic–plastic law models the yield from σ_y"
         ),
         Reason::DentKept => format!(
-            "p₀ ≥ {}·σ_y of {who}: {}, and the given x_pl = {} > 0 says the surface keeps a \
-             dent: the proposed model (eq 18, §4.2) leaves it",
+            "p₀ ≥ {}·σ_y of {who}: {}; the given x_pl = {} keeps a dent, which the proposed \
+             model (eq 18, §4.2) leaves",
             onset_factor(advice),
             regime_words(advice),
             length(x_pl)
@@ -73,12 +78,6 @@ pub fn why(advice: &Recommendation, scene: &Scene) -> String {
             hysteresis_clause(choice)
         ),
     }];
-    if let Some(outcome) = advice.outcome {
-        clauses.extend(outcome_clause(advice, &outcome));
-    }
-    if let Some(thornton) = advice.thornton {
-        clauses.push(thornton_clause(advice, &thornton));
-    }
     if advice.assumed.plastic_indentation && x_pl > 0.0 && advice.regime != Regime::Elastic {
         clauses.push(format!(
             "x_pl = {} was not given (a stand-in): nothing here rests on it; give \
@@ -92,7 +91,13 @@ pub fn why(advice: &Recommendation, scene: &Scene) -> String {
             short(e)
         ));
     }
-    clauses.join("; ")
+    if let Some(outcome) = advice.outcome {
+        clauses.extend(outcome_clause(advice, &outcome));
+    }
+    if let Some(thornton) = advice.thornton {
+        clauses.push(thornton_clause(advice, &thornton));
+    }
+    clauses
 }
 
 /// What the recommended law realises, where the reason does not already say it.
@@ -157,8 +162,8 @@ fn regime_words(advice: &Recommendation) -> &'static str {
     }
 }
 
-/// The body that yields, named with its material and σ_y: "body 2, the aluminium-alloy plate
-/// (σ_y = 300 MPa)", or both.
+/// The body that yields (the softer), named with its material and σ_y: "body 2, the
+/// aluminium-alloy plate (σ_y = 340 MPa)", or both.
 fn yielding_body(advice: &Recommendation, scene: &Scene) -> String {
     let stress = engineering(advice.yield_stress, PASCAL, 3);
     let body = |n: u8, body: &Body| {
@@ -167,14 +172,14 @@ fn yielding_body(advice: &Recommendation, scene: &Scene) -> String {
             other => other.name().to_string(),
         };
         format!(
-            "body {n}, the {} {shape} (σ_y = {stress}), which yields",
+            "body {n}, the {} {shape} (σ_y = {stress})",
             body.material.name
         )
     };
     match advice.yielding {
         Yielding::Body1 => body(1, &scene.body1),
         Yielding::Body2 => body(2, &scene.body2),
-        Yielding::Both => format!("both bodies (σ_y = {stress} each)"),
+        Yielding::Both => format!("both bodies (σ_y {stress})"),
     }
 }
 
@@ -256,7 +261,7 @@ mod tests {
         // Once the contact yields, Thornton's law is solved beside, and the body that yields named.
         assert!(
             why_at(0.2, 0.95, 0.0)
-                .contains("of both bodies (σ_y = 780 MPa each): yield begins, with e close to 1"),
+                .contains("of both bodies (σ_y 780 MPa): yield begins, with e close to 1"),
             "{}",
             why_at(0.2, 0.95, 0.0)
         );

@@ -35,9 +35,16 @@ fn body_words(body: &Body) -> String {
     }
 }
 
-/// A length in mm to four significant digits, trailing zeros dropped.
+/// A length in mm to four significant digits, trailing zeros dropped; in powers of ten outside
+/// 0.001 … 10⁶ mm.
 fn millimetres(metres: f64) -> String {
     let mm = metres * 1e3;
+    if !(1e-3..1e6).contains(&mm.abs()) {
+        let text = format!("{mm:.3e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        return format!("{mantissa}e{exponent}");
+    }
     let decimals = (3 - mm.abs().log10().floor() as i32).clamp(0, 12) as usize;
     let text = format!("{mm:.decimals$}");
     if text.contains('.') {
@@ -127,6 +134,13 @@ mod tests {
                  body2.material.youngs_modulus = 70000000000"
             )
         );
+    }
+
+    #[test]
+    fn extreme_sizes_read_in_powers_of_ten() {
+        assert_eq!(millimetres(1e100), "1e103");
+        assert_eq!(millimetres(2.5e-9), "2.5e-6");
+        assert_eq!(millimetres(0.0123456), "12.35");
     }
 
     #[test]
