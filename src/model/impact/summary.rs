@@ -26,18 +26,6 @@ fn phase_peak<L: ForceLaw>(
     t_hi: f64,
 ) -> (f64, f64) {
     let force = |y: State| law.phase_force(y[0] * sc.x, sc.velocity(&y) * sc.v, phase);
-    dense_peak(force, dense, t_lo, t_hi)
-}
-
-/// The peak (T, value) of `value` along `dense` over [t_lo, t_hi], found as [`phase_peak`] finds
-/// the force's.
-fn dense_peak(
-    value: impl Fn(State) -> f64,
-    dense: &DenseOutput,
-    t_lo: f64,
-    t_hi: f64,
-) -> (f64, f64) {
-    let force = value;
     let segments = dense.segments();
     let mut best = (t_lo, force(dense.eval(t_lo)));
     let end = (t_hi, force(dense.eval(t_hi)));
@@ -209,21 +197,6 @@ pub(crate) fn cycle_work<L: ForceLaw>(law: &L, sc: &Scales, run: &Run) -> f64 {
     sc.energy(run.y_end[0], 0.0) + (sc.n + 1.0) * dissipative
 }
 
-/// The maximum approach of `run` in scaled units: where ẋ = 0 ends the loading phase, or above it
-/// where a fixed-step method's data put it. A step near the stability bound spans much of the
-/// impact; its interpolant of x need not peak where that of ẋ vanishes (symplectic Euler's
-/// staggered update leaves a step point above the turn: 7.37 against 7.21 µm at a quarter of the
-/// RK4 critical step on Fig. 5), and x_max is the largest approach the solution shows.
-fn deepest(run: &Run) -> f64 {
-    let at_turn = run.y_switch[0];
-    match run.loading.segments().last() {
-        Some(Segment::Hermite { .. }) => {
-            at_turn.max(dense_peak(|y| y[0], &run.loading, 0.0, run.t_switch).1)
-        }
-        _ => at_turn,
-    }
-}
-
 /// The summary of an integrated impact (SI units); the energy residual compares the lost kinetic
 /// energy 1 − V_end² with [`cycle_work`].
 pub(crate) fn summarize<L: ForceLaw>(
@@ -271,7 +244,7 @@ pub(crate) fn summarize<L: ForceLaw>(
     ImpactSummary {
         model: law.model(),
         method,
-        x_max: deepest(run) * sc.x,
+        x_max: run.y_switch[0] * sc.x,
         t_x_max: run.t_switch * sc.t,
         f_max,
         t_f_max: t_f * sc.t,
