@@ -202,7 +202,7 @@ pub(super) fn monotone_slopes(
 
 impl Segment {
     /// A fixed step's cubic refitted to end at an event (t, y) inside the step with the slope f
-    /// there, its slopes limited as [`monotone_slopes`] does; `None` for the other forms, which
+    /// there, its slopes limited as `monotone_slopes` does; `None` for the other forms, which
     /// are cut at the event as they are. Cut instead, the step's cubic keeps the slope it had at
     /// the step's far end and can peak before the event: the approach rose to 4.53 µm before a
     /// maximum compression at 4.40 µm (elastic Hertz, the RK4 critical step, Fig. 5).
