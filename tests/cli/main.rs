@@ -4,5 +4,6 @@ mod commands;
 mod laws;
 mod plot;
 mod readme;
+mod recommendation;
 mod studies;
 mod systems;
