@@ -62,10 +62,6 @@ impl View for System {
         "system"
     }
 
-    fn short_title(&self) -> &'static str {
-        "sys"
-    }
-
     fn help(&self) -> Option<&'static str> {
         Some("↑ ↓ rows; Enter types; ← → steps; [ ] the compliant law")
     }
