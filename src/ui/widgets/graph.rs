@@ -339,12 +339,24 @@ fn axes(
     let title = theme.style(Role::Label).add_modifier(Modifier::BOLD);
     put(buf, inner.x, inner.y, &chart.y.title, title, inner);
     let x_title = width(&chart.x.title);
-    if let Some(readout) = &chart.readout {
-        // The cursor's reading takes the row above the plot after the y title.
+    let room = readout_room(inner, chart);
+    if let Some(readout) = &chart.readout
+        && let Some((text, form)) = readout.line(usize::from(room))
+    {
         let x = inner.x + width(&chart.y.title) + 2;
-        let room = inner.right().saturating_sub(x);
-        let text = readout.fit(usize::from(room));
+        // The cursor's reading takes the row above the plot after the y title where it fits on
+        // one line (else it is a box on the plot: `readout_box`), each curve's name in its ink.
         put(buf, x, inner.y, &text, theme.style(Role::Normal), inner);
+        let mut name_x = x + width(&readout.at) + 3;
+        for curve in &readout.curves {
+            let name: String = curve
+                .text(form)
+                .chars()
+                .take(curve.name_len(form))
+                .collect();
+            put(buf, name_x, inner.y, &name, theme.ink(curve.ink), inner);
+            name_x += width(&curve.text(form)) + 3;
+        }
         if f.x_title_below {
             let x = inner.right().saturating_sub(x_title);
             put(buf, x, axis_y + 2, &chart.x.title, title, inner);
@@ -427,6 +439,87 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
     }
 }
 
+/// The data cursor's reading where it does not fit the row above the plot: a box of rows on the
+/// plot's top, on the side away from the cursor's rule, one row per curve named in its ink with
+/// its values whole; `+N more` on the last row where the plot has fewer rows than curves.
+fn readout_box(
+    buf: &mut Buffer,
+    chart: &Chart,
+    (inner, f): (Rect, &ChartFrame),
+    theme: Theme,
+    marker: MarkerStyle,
+) {
+    let Some(readout) = &chart.readout else {
+        return;
+    };
+    let plot = f.plot;
+    if readout
+        .line(usize::from(readout_room(inner, chart)))
+        .is_some()
+        || plot.height < 2
+    {
+        return;
+    }
+    // At most half the plot's width, but room for the names' abbreviations and values.
+    let widest = |form: usize| {
+        (0..readout.curves.len())
+            .map(|i| readout.curves[i].text(form).chars().count())
+            .chain([readout.at.chars().count()])
+            .max()
+            .unwrap_or(0)
+    };
+    let want = (0..readout.forms())
+        .map(widest)
+        .find(|&w| w <= usize::from(plot.width / 2));
+    let box_width = want
+        .unwrap_or(usize::from(plot.width))
+        .min(usize::from(plot.width.saturating_sub(1)));
+    let (mut rows, form) = readout.rows(box_width);
+    let height = usize::from(plot.height);
+    let mut more = None;
+    if rows.len() > height {
+        let left = rows.len() - (height - 1);
+        rows.truncate(height - 1);
+        more = Some(format!("+{left} more"));
+    }
+    // Away from the cursor's rule: on the right when the rule is in the left half.
+    let rule_col = chart
+        .rules
+        .iter()
+        .find(|r| !r.horizontal)
+        .and_then(|r| cell_of(chart, plot, marker, (r.at, chart.y.range[0])))
+        .map_or(plot.x, |(col, _)| col);
+    let w = box_width as u16 + 1;
+    let x = if rule_col < plot.x + plot.width / 2 {
+        plot.right().saturating_sub(w)
+    } else {
+        plot.x
+    };
+    let blank = " ".repeat(usize::from(w));
+    let normal = theme.style(Role::Normal);
+    for (i, row) in rows.iter().enumerate() {
+        let y = plot.y + i as u16;
+        put(buf, x, y, &blank, normal, plot);
+        put(buf, x + 1, y, row, normal, plot);
+        // Row 0 says where the cursor stands; row i names curve i − 1, in its ink.
+        if let Some(curve) = i.checked_sub(1).and_then(|c| readout.curves.get(c)) {
+            let name: String = row.chars().take(curve.name_len(form)).collect();
+            put(buf, x + 1, y, &name, theme.ink(curve.ink), plot);
+        }
+    }
+    if let Some(more) = more {
+        let y = plot.y + rows.len() as u16;
+        put(buf, x, y, &blank, normal, plot);
+        put(buf, x + 1, y, &more, theme.style(Role::Muted), plot);
+    }
+}
+
+/// Columns left for the data cursor's reading on the row above the plot, after the y title.
+fn readout_room(inner: Rect, chart: &Chart) -> u16 {
+    let x = inner.x + width(&chart.y.title) + 2;
+    inner.right().saturating_sub(x)
+}
+
 /// Draws `chart` in `area` inside `pane`.
 pub fn render(
     frame: &mut Frame,
@@ -446,6 +539,7 @@ pub fn render(
     plot(buf, chart, f.plot, theme, marker);
     axes(buf, chart, inner, &f, theme, marker);
     labels(buf, chart, &f, theme, marker);
+    readout_box(buf, chart, (inner, &f), theme, marker);
 }
 
 /// [`render`] with the legend along the pane's bottom edge on roomy screens (compact panes have
