@@ -7,8 +7,9 @@
 use std::collections::HashSet;
 use std::path::Path;
 
+use hertz_tui::model::ForceModel;
 use hertz_tui::ui::action::Action;
-use hertz_tui::ui::app::App;
+use hertz_tui::ui::app::{App, Cursor};
 use hertz_tui::ui::tab::Tab;
 use hertz_tui::ui::update::update;
 use ratatui::crossterm::event::KeyCode;
@@ -246,6 +247,17 @@ fn no_view_cuts_a_word_without_an_ellipsis_at_any_size() {
                     .map(|c| format!("{}×{} {view}: {c}", size.0, size.1)),
             );
         }
+        // A model being solved: its row says so, whole or with `…`.
+        let mut busy = super::render::app();
+        update(&mut busy, Action::Resize(size.0, size.1));
+        busy.cursor = Cursor::Model(ForceModel::DryFriction);
+        press(&mut busy, KeyCode::Char(' '));
+        assert!(busy.is_computing());
+        cut.extend(
+            cut_words(&busy, size, &vocabulary, None)
+                .into_iter()
+                .map(|c| format!("{}×{} computing: {c}", size.0, size.1)),
+        );
         // The overlays, over the explorer: help, engine panel, presets.
         update(&mut app, Action::Tab(Tab::HOME));
         for (open, close, title) in [
