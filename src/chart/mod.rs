@@ -206,7 +206,7 @@ impl ReadoutCurve {
         self.names.len().max(1) + self.values.len().max(1) - 1
     }
 
-    /// `name values` in form `form` (see [`ReadoutCurve::parts`]).
+    /// `name values` in form `form`: the names shorten first, then the values.
     pub fn text(&self, form: usize) -> String {
         let (name, value) = self.parts(form);
         format!("{name} {value}")
