@@ -532,6 +532,19 @@ fn the_data_cursor_names_each_curve_with_its_value_at_120_columns_and_jumps_to_t
         crate::format::units::sig(f_max, 4)
     );
     assert!(lines.contains(&shown), "{shown} in\n{lines}");
+    // At 80×24 the reading is a box on the plot with a blank column after each row: a mark's
+    // label never runs on from it (it read `proposed 326 / 248 N326.4 N`).
+    update(&mut a, Action::Resize(80, 24));
+    let lines = screen(&a, 80, 24);
+    let name = format!("{} ", a.focused.name());
+    let row = lines
+        .iter()
+        .find(|l| l.contains(&name) && l.contains(" N"))
+        .unwrap_or_else(|| panic!("{name} read at 80×24:\n{}", lines.join("\n")));
+    let after = &row[row.find(&name).unwrap()..];
+    let end = after.find(" N").unwrap() + 2;
+    assert!(after[end..].starts_with(' '), "{row}");
+    update(&mut a, Action::Resize(120, 40));
     // < > move ten steps at once.
     let at = a.views.explorer.data_cursor.unwrap();
     key(&mut a, KeyCode::Char('<'));
