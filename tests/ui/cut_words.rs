@@ -223,8 +223,8 @@ fn the_vocabulary_catches_a_cut_word_and_passes_an_ellipsis() {
         ["def"]
     );
     assert_eq!(
-        cut_in(&line("damping coefficient held (α f"), &vocabulary),
-        ["f"]
+        cut_in(&line("Fig. 4: the dry-friction mo"), &vocabulary),
+        ["mo"]
     );
     assert!(cut_in(&line("log₁₀ s per solve│"), &vocabulary).is_empty());
     assert!(cut_in(&line("fits the regime───┐ ⠉⠉⠉o│"), &vocabulary).is_empty());
