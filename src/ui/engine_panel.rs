@@ -1,8 +1,9 @@
 //! The engine panel (`t` in the explorer): the scene's contact parameters for one simulation
 //! engine, as `hertz-tui translate` prints them; ← → picks the engine, ↑ ↓ scroll.
 
-use crate::format::translation::render;
+use crate::format::translation::render_run;
 use crate::model::Scene;
+use crate::model::engine::run::DEFAULT_TOLERANCE;
 use crate::model::engine::{self, ENGINES};
 
 use super::action::Action;
@@ -22,8 +23,9 @@ impl EnginePanel {
     pub fn new(index: usize, scene: Option<&Scene>) -> Self {
         let index = index % ENGINES.len();
         let id = ENGINES[index].id;
-        let (text, failed) = match scene.map(|s| (s, engine::translate(id, s))) {
-            Some((s, Ok(translation))) => (render(&s.name, &translation), false),
+        let translated = scene.map(|s| (s, engine::translate_run(id, s, DEFAULT_TOLERANCE)));
+        let (text, failed) = match translated {
+            Some((s, Ok(translated))) => (render_run(&s.name, &translated), false),
             Some((_, Err(e))) => (format!("{}: {e}", ENGINES[index].name), true),
             None => ("no valid scene to translate".to_string(), true),
         };
