@@ -620,7 +620,11 @@ fn translate_text_ends_with_the_script_and_writes_it() {
         out.trim_end().ends_with(script.trim_end()),
         "the script comes last, as written: {out}"
     );
-    assert!(script.trim_end().ends_with("contact_time {contact_time:.12g}\")"));
+    assert!(
+        script
+            .trim_end()
+            .ends_with("contact_time {contact_time:.12g}\")")
+    );
 }
 
 #[test]
@@ -674,7 +678,10 @@ fn translate_json_carries_the_run_and_the_regime() {
         "--script",
         "never-written.py",
     ]);
-    assert!(err.contains("--script") && err.contains("cylinder"), "{err}");
+    assert!(
+        err.contains("--script") && err.contains("cylinder"),
+        "{err}"
+    );
 }
 
 #[test]

@@ -29,8 +29,12 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, panel: &EnginePanel) {
         area.width.saturating_sub(4),
         area.height.saturating_sub(2),
     );
+    let keys = match &panel.note {
+        Some(note) => note.clone(),
+        None => "← → engine, ↑ ↓ PgUp PgDn Home End scroll, w write, y copy, Esc".to_string(),
+    };
     let title = format!(
-        "Engine {}/{} · {} (← → engine, ↑ ↓ scroll, Esc closes)",
+        "Engine {}/{} · {} ({keys})",
         panel.index + 1,
         ENGINES.len(),
         ENGINES[panel.index].id
