@@ -70,3 +70,48 @@ pub fn regime_warnings(scene: &Scene) -> Result<Vec<RegimeWarning>, ModelError> 
     );
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::presets::Registry;
+
+    fn steel_at(v0: f64) -> Scene {
+        let mut scene = Registry::builtin()
+            .and_then(|r| r.scene("steel-sphere-r10-plate"))
+            .expect("preset");
+        scene.impact.v0 = v0;
+        scene
+    }
+
+    /// The paper's Table 1 for steel R = 10 mm: yield begins near 0.03 m/s, full plasticity near
+    /// 0.33 m/s; Fig. 5's 0.3 m/s lies between.
+    #[test]
+    fn warns_from_yield_onset_and_says_fully_plastic_above_it() {
+        assert_eq!(regime_warnings(&steel_at(0.01)), Ok(Vec::new()));
+        let yielding = regime_warnings(&steel_at(0.3)).unwrap();
+        let [
+            RegimeWarning::YieldBegins {
+                v_yield, v_plastic, ..
+            },
+        ] = yielding[..]
+        else {
+            panic!("{yielding:?}");
+        };
+        assert!(v_yield < 0.3 && 0.3 < v_plastic, "{v_yield} {v_plastic}");
+        assert!(yielding[0].to_string().starts_with("yield begins"));
+        let plastic = regime_warnings(&steel_at(1.0)).unwrap();
+        assert!(
+            matches!(plastic[0], RegimeWarning::FullyPlastic { .. }),
+            "{plastic:?}"
+        );
+        // A far faster impact also leaves Hertz's small-contact range.
+        let extreme = regime_warnings(&steel_at(300.0)).unwrap();
+        assert!(
+            extreme
+                .iter()
+                .any(|w| matches!(w, RegimeWarning::OutsideHertz(_))),
+            "{extreme:?}"
+        );
+    }
+}
