@@ -79,6 +79,15 @@ def off(measured, reference):
     return abs(measured / reference - 1.0)
 
 
+def departure(claim, measured, translation):
+    """The largest relative difference of e, F_max, t_c from what the claim predicts exactly."""
+    e, f, tc = measured[:3]
+    if claim["kind"] == "stepped":
+        at = claim["at_step"]
+        return max(off(e, at["e_out"]), off(f, at["f_max"]), off(tc, at["t_contact"]))
+    return off(e, translation["realised"]["e_out"])
+
+
 def check_claim(claim, measured, translation):
     """Failures of `measured` (e, F_max, t_c) against `claim`, and a one-line summary."""
     e, f, tc = measured[:3]
@@ -121,6 +130,7 @@ def main():
     args = parser.parse_args()
     required = os.environ.get("HERTZ_TUI_ENGINES") == "required"
     passed = failed = skipped = 0
+    largest = {}  # (engine, claim kind) -> largest departure from the claim's own numbers
     for engine, (probe, install) in ENGINES.items():
         if args.only and engine not in args.only:
             continue
@@ -155,6 +165,8 @@ def main():
                         failed += 1
                         continue
                     failures, summary = check_claim(claim, measured, t)
+                    key = (engine, claim["kind"])
+                    largest[key] = max(largest.get(key, 0.0), departure(claim, measured, t))
                     status = "FAIL" if failures else "ok"
                     print(f"{status:4} {engine:12} {label:24} {command:28} {summary} [{measured[3]:.1f} s]")
                     for failure in failures:
@@ -164,6 +176,9 @@ def main():
                     else:
                         passed += 1
         sys.stdout.flush()
+    for (engine, kind), worst in largest.items():
+        what = "e, F_max, t_c from the step model" if kind == "stepped" else "e from the law"
+        print(f"largest departure, {engine} ({kind}): {worst:.1e} ({what})")
     print(f"{passed} passed, {failed} failed, {skipped} skipped")
     return 1 if failed else 0
 

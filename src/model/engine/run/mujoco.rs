@@ -105,7 +105,7 @@ contact_time = steps_in_contact * model.opt.timestep
         }),
         no_script: None,
         versions: vec![
-            "MuJoCo ≥ 2.1: solref (timeconst, dampratio) and solimp as used here; MuJoCo raises a timeconst below 2·timestep to 2·timestep (refsafe), which is why the step stays at or below timeconst/2.".into(),
+            "Checked in MuJoCo 4.0.0, with solref (timeconst, dampratio) and solimp as doc/modeling.rst describes them; MuJoCo raises a timeconst below 2·timestep to 2·timestep (refsafe), which is why the step stays at or below timeconst/2.".into(),
             "The step is MuJoCo's, not a stability bound: at timeconst/10 a lightly damped contact gains energy (e = 7.5 asked 0.9 on the Fig. 5 scene).".into(),
         ],
         fragments: vec![Fragment {
