@@ -180,8 +180,8 @@ pub struct StepChoice {
     pub at_step: SteppedImpact,
 }
 
-/// Steps per contact tried, coarsest first.
-const LADDER: [f64; 14] = [
+/// Steps per contact time tried, coarsest first.
+pub const LADDER: [f64; 14] = [
     10.0, 20.0, 30.0, 50.0, 100.0, 200.0, 300.0, 500.0, 1e3, 2e3, 5e3, 1e4, 2e4, 5e4,
 ];
 
