@@ -11,14 +11,13 @@
 //!
 //! As a hertz-tui law: the linear spring–dashpot with the F ≥ 0 clamp (as MuJoCo), ζ = τ·ω₀/2.
 
-use std::f64::consts::PI;
-
+use crate::model::error::ModelError;
+use crate::model::force::{AnyLaw, ForceModel};
 use crate::model::power_law::PowerLaw;
 
-use super::calibrate::solve_for_restitution;
-use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
-use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
+use super::solve::{calibrated_damping, realise};
+use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
@@ -28,27 +27,19 @@ pub const ENGINE: Engine = Engine {
     translate,
 };
 
-/// The clamped Kelvin–Voigt law on reduced mass m with K = m·ω₀² and ζ.
-fn law(mass: f64, omega: f64, zeta: f64) -> ContactLaw {
-    ContactLaw {
-        elastic: PowerLaw {
-            k: mass * omega * omega,
-            n: 1.0,
-        },
-        damping: EngineDamping::Viscous {
-            c: 2.0 * zeta * omega * mass,
-            p: 0.0,
-        },
-        end: EndRule::Clamp,
-    }
+/// The law-table row of SAP's point contact: the linear spring–dashpot with the F ≥ 0 clamp.
+const ROW: ForceModel = ForceModel::with_id("kelvin-voigt");
+
+/// The largest damping ratio tried: far beyond critical, where the clamp has long ended contact.
+const MAX_DAMPING_RATIO: f64 = 50.0;
+
+/// SAP's law as a force on the reduced mass for an impact at `v0`: K·x + c·ẋ, clamped.
+fn law(scene: &EngineScene, big_k: f64, c: f64, v0: f64) -> Result<AnyLaw, ModelError> {
+    let elastic = PowerLaw { k: big_k, n: 1.0 };
+    ROW.law_with_damping(&scene.params(elastic, v0), c)
 }
 
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
-    let omega = PI / scene.t_contact;
-    let e_of = |zeta: f64| {
-        contact::solve(&law(scene.mass, omega, zeta), scene.mass, scene.v0).map(|r| r.e_out)
-    };
-    let zeta = solve_for_restitution(ENGINE.id, scene.restitution, 0.0, 50.0, e_of)?;
     let k = Parameter::new(
         "point_contact_stiffness",
         2.0 * scene.linear_stiffness(),
@@ -59,26 +50,30 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(scene.t_contact)
         ),
     );
+    let big_k = k.value / 2.0;
+    let critical = 2.0 * (scene.mass * big_k).sqrt();
+    let c = calibrated_damping(
+        ENGINE.id,
+        ROW,
+        scene,
+        PowerLaw { k: big_k, n: 1.0 },
+        0.0..=MAX_DAMPING_RATIO * critical,
+        |c| law(scene, big_k, c, scene.v0),
+    )?;
+    // c = τ·K, τ = τ₁ + τ₂: half on each geometry.
     let tau = Parameter::new(
         "relaxation_time",
-        zeta / omega,
+        c / big_k / 2.0,
         "s",
         format!(
-            "per geometry, half of τ = 2ζ/ω₀ (the two add): ζ = {} is the damping ratio whose clamped linear spring–dashpot realises the requested e at v₀ (Brent root on hertz-tui's solve)",
-            shown(zeta)
+            "per geometry, half of τ = c/K (the two add): c = {} N·s/m, damping ratio ζ = τω₀/2 = {}, is the damping whose clamped linear spring–dashpot realises the requested e at v₀ (hertz-tui's calibration of kelvin-voigt)",
+            shown(c),
+            shown(c / critical)
         ),
     );
-    let big_k = k.value / 2.0;
     let tau_total = 2.0 * tau.value;
-    let law = ContactLaw {
-        elastic: PowerLaw { k: big_k, n: 1.0 },
-        damping: EngineDamping::Viscous {
-            c: tau_total * big_k,
-            p: 0.0,
-        },
-        end: EndRule::Clamp,
-    };
-    let (realised, e_of_v) = realise(&law, scene)?;
+    let c = tau_total * big_k;
+    let (realised, e_of_v) = realise(scene, |v0| Ok(law(scene, big_k, c, v0)?))?;
     let notes = vec![
         "SAP ignores hunt_crossley_dissipation; the Hunt–Crossley translation (--engine drake) is for TAMSI, Similar, Lagged or the continuous plant.".into(),
         format!(
@@ -107,7 +102,8 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(tau_total)
         ),
         hertz_tui_law: "linear spring–dashpot (kelvin-voigt) with the F ≥ 0 clamp".into(),
-        end_rule: law.end,
+        model: ROW,
+        end_rule: ROW.spec().contact,
         approximation: None,
         parameters: vec![k, tau],
         fragments,

@@ -2,9 +2,10 @@
 //!
 //! Each engine is one file holding its documented law (source named in its doc comment), the rule
 //! that maps the scene to its parameters, and its input fragment; [`ENGINES`] lists them. The
-//! engine's law is written as a [`contact::ContactLaw`] and solved by hertz-tui itself, so the
-//! translation states what the engine will really give: realised restitution at v₀ and over a
-//! range of v₀, peak force, contact time and the largest stable explicit step.
+//! engine's law is a law of hertz-tui's table ([`crate::model::force::LAWS`]; a row added where
+//! the table lacked one), solved and calibrated as every law is ([`solve`]), so the translation
+//! states what the engine will really give: realised restitution at v₀ and over a range of v₀,
+//! peak force, contact time and the largest stable explicit step.
 #![warn(missing_docs)]
 
 use serde::Serialize;
@@ -12,13 +13,12 @@ use serde::Serialize;
 use crate::format::round_trip;
 
 use super::error::ModelError;
+use super::force::{ContactRule, ForceModel};
 use super::power_law::PowerLaw;
 use super::{Body, Scene, Shape};
 
 pub mod adams;
-pub mod calibrate;
 pub mod chrono;
-pub mod contact;
 pub mod drake;
 pub mod drake_sap;
 pub mod error;
@@ -29,13 +29,14 @@ pub mod mujoco;
 pub mod regime;
 pub mod run;
 pub mod simbody;
+pub mod solve;
 pub mod tsuji;
 pub mod yade;
 
-pub use contact::{ContactLaw, EndRule, EngineDamping, EngineImpact};
 pub use error::EngineError;
 pub use regime::RegimeWarning;
 pub use run::Run;
+pub use solve::{EngineImpact, realise};
 
 /// One engine: its `--engine` id, its name, and how it translates a scene.
 #[derive(Debug, Clone, Copy)]
@@ -314,8 +315,10 @@ pub struct Translation {
     pub law: String,
     /// The same law among hertz-tui's.
     pub hertz_tui_law: String,
-    /// How the engine's contact ends.
-    pub end_rule: EndRule,
+    /// The row of hertz-tui's law table the engine's law is (`--model` id in JSON).
+    pub model: ForceModel,
+    /// How the engine's contact ends: the row's rule.
+    pub end_rule: ContactRule,
     /// Where the translation approximates the engine (`None`: the engine's law exactly).
     pub approximation: Option<String>,
     /// The engine's parameters, as it takes them.
@@ -336,22 +339,6 @@ pub struct Translation {
 
 /// The factors of v₀ at which [`Translation::e_of_v`] is evaluated: two decades around the scene.
 pub const VELOCITY_FACTORS: [f64; 7] = [0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0];
-
-/// What the engine's law gives: at v₀, and its restitution at [`VELOCITY_FACTORS`]·v₀.
-pub fn realise(
-    law: &ContactLaw,
-    scene: &EngineScene,
-) -> Result<(EngineImpact, Vec<VelocityPoint>), EngineError> {
-    let at_v0 = contact::solve(law, scene.mass, scene.v0)?;
-    let e_of_v = VELOCITY_FACTORS
-        .iter()
-        .map(|f| {
-            let v0 = f * scene.v0;
-            contact::solve(law, scene.mass, v0).map(|r| VelocityPoint { v0, e_out: r.e_out })
-        })
-        .collect::<Result<_, _>>()?;
-    Ok((at_v0, e_of_v))
-}
 
 /// How a body's geometry reads in prose ("sphere R = 0.01 m").
 pub fn describe(shape: &Shape) -> String {

@@ -9,9 +9,9 @@
 
 use crate::model::numeric::roots::brent;
 
-use super::super::calibrate::beta;
 use super::super::error::EngineError;
 use super::super::lammps_tsuji::alpha;
+use super::super::tsuji::beta;
 use super::super::{EngineScene, Translation};
 use super::{Bodies, Claim, Run, Scheme, Script, gap, max_steps, num, parameter, stepped};
 

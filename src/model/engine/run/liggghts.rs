@@ -6,8 +6,8 @@
 //! LIGGGHTS's law from the printed input (doc/gran_model_hertz.txt): F = k·x^{3/2} + γ·x^{1/4}·ẋ,
 //! γ = 2√(5/6)·|β(e)|·√(2Y*√R*·m*), clamped at F ≥ 0 (limitForce), stepped by velocity Verlet.
 
-use super::super::calibrate::beta;
 use super::super::error::EngineError;
+use super::super::tsuji::beta;
 use super::super::{EngineScene, Fragment, Translation};
 use super::{Bodies, Claim, Run, Scheme, Script, gap, max_steps, num, parameter, stepped};
 

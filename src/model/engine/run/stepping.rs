@@ -83,7 +83,7 @@ pub fn step_impact(
     t_scale: f64,
 ) -> Result<SteppedImpact, EngineError> {
     if !(h > 0.0 && h.is_finite() && mass > 0.0 && v0 > 0.0 && t_scale > 0.0) {
-        return Err(EngineError::NonFinite);
+        return Err(EngineError::SteppingNonFinite);
     }
     let max_steps = (MAX_STEPS_PER_CONTACT * t_scale / h).ceil().min(1e8) as u64;
     let (mut x, mut v) = (x0, v0);
@@ -120,7 +120,7 @@ pub fn step_impact(
             }
         };
         if !(x.is_finite() && v.is_finite() && f.is_finite()) {
-            return Err(EngineError::NonFinite);
+            return Err(EngineError::SteppingNonFinite);
         }
         if f != 0.0 {
             steps_in_contact += 1;
@@ -137,7 +137,7 @@ pub fn step_impact(
             });
         }
     }
-    Err(EngineError::NoSeparation {
+    Err(EngineError::SteppingNoSeparation {
         t_limit: max_steps as f64 * h,
     })
 }
@@ -159,7 +159,7 @@ fn implicit_force(
     }
     let residual = |u: f64| mass * (u - v) + h * clamped(u);
     let lo = v - h * at_v / mass;
-    let u = brent(residual, lo, v).ok_or(EngineError::NonFinite)?;
+    let u = brent(residual, lo, v).ok_or(EngineError::SteppingNonFinite)?;
     Ok(mass * (v - u) / h)
 }
 
@@ -208,7 +208,9 @@ pub fn choose_step(
         }
         let at_step = match simulate(step) {
             Ok(s) if within(&s) => s,
-            Ok(_) | Err(EngineError::NoSeparation { .. }) | Err(EngineError::NonFinite) => {
+            Ok(_)
+            | Err(EngineError::SteppingNoSeparation { .. })
+            | Err(EngineError::SteppingNonFinite) => {
                 continue;
             }
             Err(other) => return Err(other),

@@ -9,8 +9,8 @@
 //! Why a sphere for the plate: a `utils.wall` reports no radius and HertzMindlin.cpp then uses
 //! the ball's twice, R* = R/2 (F_max 15 % low); a facet gives 2R/3.
 
-use super::super::calibrate::beta;
 use super::super::error::EngineError;
+use super::super::tsuji::beta;
 use super::super::{EngineScene, Fragment, Translation};
 use super::{
     Bodies, Claim, PY_RESULT, Run, Scheme, Script, gap, max_steps, num, parameter, stepped,
