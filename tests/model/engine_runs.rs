@@ -22,7 +22,7 @@ fn scenes() -> Vec<Scene> {
     vec![
         fig5.clone(),
         with(fig5.clone(), 0.3, 0.3),
-        with(fig5, 0.3, 0.9),
+        with(fig5, 0.3, 0.95),
         with(scene("aluminium-sphere-r10-plate"), 1.0, 0.7),
         with(scene("steel-sphere-r10-plate"), 0.03, 0.8),
     ]
