@@ -132,7 +132,7 @@ fn claim(out: &mut String, prefix: &str, claim: &Claim) {
         } => {
             let _ = writeln!(
                 out,
-                "  {prefix}no fixed step: {integrator}; the engine gives the numbers above, e to {}",
+                "  {prefix}no fixed step: {integrator}; the engine gives the numbers above, e within {} (relative)",
                 significant(*tolerance, 2, Zeros::Trim)
             );
         }

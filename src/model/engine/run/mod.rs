@@ -115,7 +115,7 @@ pub fn run(
             checked_in: None,
             checked: "not run in the engine: checked against the formulas of its source (named above)".into(),
             claim: Claim::ContinuousOnly {
-                reason: "no package of this engine is available to run it; only the continuous law is claimed".into(),
+                reason: "no package of this engine is available here to run it".into(),
             },
             other_claims: Vec::new(),
             script: None,
