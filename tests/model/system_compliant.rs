@@ -6,13 +6,17 @@
 
 use std::f64::consts::PI;
 
+use hertz_tui::format::verdict::sentence;
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::force::ForceLaw;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::compliant::estimate::hertz_estimate;
 use hertz_tui::model::system::compliant::orbit::{MapPoint, period_doubling};
+use hertz_tui::model::system::compliant::verdict::{Validity, verdict};
 use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop, simulate_detailed};
-use hertz_tui::model::system::{CompliantDamping, RunOptions, SystemKind, SystemModel, SystemSpec};
+use hertz_tui::model::system::{
+    CompliantDamping, RunOptions, State, SystemKind, SystemModel, SystemSpec,
+};
 
 const E: f64 = 0.5;
 const G: f64 = 9.81;
@@ -224,4 +228,79 @@ fn every_contact_closes_its_energy_balance_and_elastic_contacts_are_hertz() {
             "{impact:?} {hertz:?}"
         );
     }
+}
+
+#[test]
+fn the_verdict_follows_contact_time_over_period_and_the_realised_e() {
+    // Γ = 1.3: both stops settle on the period-1 orbit when started on the rigid one (just after
+    // its impact); from rest they may chatter and stick instead.
+    let on_orbit = |frequency: f64| {
+        let p = rigid_orbit(frequency, 1.3, E);
+        let omega = 2.0 * PI * frequency;
+        let amplitude = 1.3 * G / (omega * omega);
+        RunOptions {
+            transient_impacts: 60,
+            recorded_impacts: 40,
+            initial: Some(State {
+                t: p.t,
+                x: amplitude * (omega * p.t).sin(),
+                v: amplitude * omega * (omega * p.t).cos() + E * p.v_in,
+            }),
+            ..RunOptions::default()
+        }
+    };
+    let f = frequency_for_ratio(0.003);
+    let run = on_orbit(f);
+    let short = ball(f, 1.3);
+    let v = verdict(
+        &short,
+        ForceModel::HuntCrossley,
+        CompliantDamping::CalibratedTo(E),
+        &run,
+    )
+    .unwrap();
+    eprintln!("{v:?}\n{}", sentence(&v));
+    assert_eq!(v.validity, Validity::Valid, "{v:?}");
+    assert!((v.contact_ratio / 0.003 - 1.0).abs() < 0.3, "{v:?}");
+    assert!((v.realised_restitution - E).abs() < 0.005, "{v:?}");
+    assert!(
+        v.comparisons.iter().all(|c| c.relative().abs() < 0.01),
+        "{v:?}"
+    );
+
+    let f = frequency_for_ratio(0.1);
+    let long = ball(f, 1.3);
+    let v = verdict(
+        &long,
+        ForceModel::HuntCrossley,
+        CompliantDamping::CalibratedTo(E),
+        &on_orbit(f),
+    )
+    .unwrap();
+    eprintln!("{v:?}\n{}", sentence(&v));
+    assert_eq!(v.validity, Validity::NotValid, "{v:?}");
+    assert!(
+        sentence(&v).starts_with("not valid: the stop is soft"),
+        "{}",
+        sentence(&v)
+    );
+
+    // Clamped Kelvin–Voigt realises more than the e = 0.5 it was asked for, and says so.
+    let v = verdict(
+        &short,
+        ForceModel::with_id("kelvin-voigt"),
+        CompliantDamping::PerImpact,
+        &run,
+    )
+    .unwrap();
+    eprintln!("{v:?}\n{}", sentence(&v));
+    assert!((v.realised_restitution - 0.553).abs() < 0.01, "{v:?}");
+    assert_ne!(v.validity, Validity::Valid, "{v:?}");
+    let decisive = v.comparisons[v.decisive];
+    assert!(decisive.relative_at_realised().abs() < 0.01, "{v:?}");
+    assert!(
+        sentence(&v).contains("the law realises e = 0.55"),
+        "{}",
+        sentence(&v)
+    );
 }
