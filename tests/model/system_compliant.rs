@@ -5,6 +5,7 @@
 //! duration are Hertz's (eqs 5–7) where the system's forces are negligible during contact.
 
 use std::f64::consts::PI;
+use std::ops::ControlFlow;
 
 use hertz_tui::format::verdict::sentence;
 use hertz_tui::model::ForceModel;
@@ -15,7 +16,8 @@ use hertz_tui::model::system::compliant::orbit::{MapPoint, period_doubling};
 use hertz_tui::model::system::compliant::verdict::{Validity, verdict};
 use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop, simulate_detailed};
 use hertz_tui::model::system::{
-    CompliantDamping, RunOptions, State, SystemKind, SystemModel, SystemSpec,
+    CompliantDamping, Contact, DiagramOptions, GuessStart, OrbitGuess, OrbitOptions, Param,
+    RunOptions, State, SystemKey, SystemKind, SystemModel, SystemSpec, bifurcation, find_orbit,
 };
 
 const E: f64 = 0.5;
@@ -303,4 +305,80 @@ fn the_verdict_follows_contact_time_over_period_and_the_realised_e() {
         "{}",
         sentence(&v)
     );
+}
+
+#[test]
+fn orbits_and_diagrams_dispatch_on_the_compliant_contact_and_meet_the_rigid_ones() {
+    // Short contacts (t_c/T = 0.003), Γ = 1.3: the period-1 orbit of both stops.
+    let f = frequency_for_ratio(0.003);
+    let model = ball(f, 1.3);
+    let hc = Contact::Compliant {
+        model: ForceModel::HuntCrossley,
+        damping: CompliantDamping::CalibratedTo(E),
+    };
+    let p = rigid_orbit(f, 1.3, E);
+    let guess = OrbitGuess {
+        forcing_cycles: 1,
+        impacts: 1,
+        start: Some(GuessStart {
+            phase: 2.0 * PI * f * p.t,
+            v_in: p.v_in,
+            stop: 0,
+        }),
+        attractor: RunOptions::default(),
+    };
+    let compliant = find_orbit(&model, &hc, &guess, &OrbitOptions::default()).unwrap();
+    let rigid = find_orbit(&model, &Contact::rigid(E), &guess, &OrbitOptions::default()).unwrap();
+    assert!(compliant.stable && rigid.stable);
+    let (c, r) = (&compliant.points[0], &rigid.points[0]);
+    assert!((c.v_in / r.v_in - 1.0).abs() < 2e-3, "{c:?} {r:?}");
+    // det J = e² for the rigid map (docs/physics.md §8.1); the compliant map's is near it.
+    assert!((rigid.jacobian_det - E * E).abs() < 1e-8, "{rigid:?}");
+    assert!(
+        (compliant.jacobian_det / (E * E) - 1.0).abs() < 0.02,
+        "{compliant:?}"
+    );
+    for (a, b) in compliant.multipliers.iter().zip(&rigid.multipliers) {
+        assert!(
+            (a.norm() - b.norm()).abs() < 0.02,
+            "{compliant:?} {rigid:?}"
+        );
+    }
+
+    // A small diagram through the same entry point: period 1 at every value, the compliant
+    // columns' impact speeds within 0.5 % of the rigid ones.
+    let omega = 2.0 * PI * f;
+    let amplitude = 1.3 * G / (omega * omega);
+    let options = DiagramOptions {
+        run: RunOptions {
+            transient_impacts: 60,
+            recorded_impacts: 10,
+            initial: Some(State {
+                t: p.t,
+                x: amplitude * (omega * p.t).sin(),
+                v: amplitude * omega * (omega * p.t).cos() + E * p.v_in,
+            }),
+            ..RunOptions::default()
+        },
+        chunk: 3,
+        ..DiagramOptions::default()
+    };
+    let values = [1.25, 1.3, 1.35];
+    let run = |contact: &Contact| {
+        bifurcation(
+            &model,
+            contact,
+            Param::System(SystemKey::Gamma),
+            &values,
+            &options,
+            |_| ControlFlow::Continue(()),
+        )
+        .unwrap()
+    };
+    let (d_rigid, d_compliant) = (run(&Contact::rigid(E)), run(&hc));
+    for (a, b) in d_rigid.columns.iter().zip(&d_compliant.columns) {
+        assert_eq!(b.velocities.len(), 10, "{b:?}");
+        let (va, vb) = (a.velocities[9], b.velocities[9]);
+        assert!((vb / va - 1.0).abs() < 5e-3, "Γ = {}: {va} {vb}", a.value);
+    }
 }
