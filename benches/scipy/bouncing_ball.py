@@ -104,12 +104,12 @@ class Ball:
                 return None
             te = sol.t_events[0][0]
             ye, ve = sol.y_events[0][0]
-            if te > t:
+            closing = ve - self.amp * omega * math.cos(omega * te) < 0.0
+            if te > t or closing:
                 return te, ye, ve
-            # An event at the start itself (leaving the surface): step off it and look again.
-            t, y, v = sol.t[-1], sol.y[0][-1], sol.y[1][-1]
-            if sol.status != 1:
-                return None
+            # An event at the start itself on a gap that opens: step off the surface.
+            dt = 1e-9 * self.period
+            t, y, v = t + dt, y + v * dt - 0.5 * G * dt * dt, v - G * dt
         return None
 
     def stick_release(self, t):

@@ -85,3 +85,60 @@ pub fn sentence(verdict: &Verdict) -> String {
     }
     text
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::ForceModel;
+    use crate::model::system::compliant::verdict::Comparison;
+
+    fn verdict(ratio: f64, rigid: f64, realised: f64, validity: Validity) -> Verdict {
+        Verdict {
+            law: ForceModel::HuntCrossley,
+            period: 0.01,
+            contact_time: ratio * 0.01,
+            contact_ratio: ratio,
+            asked_restitution: 0.5,
+            realised_restitution: realised,
+            comparisons: vec![Comparison {
+                quantity: Quantity::MeanImpactSpeed,
+                rigid,
+                rigid_at_realised: 1.0,
+                compliant: 1.0,
+            }],
+            decisive: 0,
+            validity,
+            impacts: (10, 10),
+        }
+    }
+
+    #[test]
+    fn each_verdict_reads_with_its_numbers() {
+        assert_eq!(
+            sentence(&verdict(0.0082, 1.003, 0.5, Validity::Valid)),
+            "the instantaneous model is within 0.3 % of the Hunt–Crossley (eq 19) stop on the \
+             mean impact speed here; contacts last 0.82 % of a forcing period"
+        );
+        assert_eq!(
+            sentence(&verdict(0.12, 1.0, 0.5, Validity::NotValid)),
+            "not valid: the stop is soft, contacts last 12 % of a forcing period (the mean \
+             impact speed differs by 0 %)"
+        );
+        let text = sentence(&verdict(0.002, 1.05, 0.553, Validity::NotValid));
+        assert!(
+            text.starts_with("not valid: the mean impact speed differs by 4.8 %"),
+            "{text}"
+        );
+        assert!(
+            text.ends_with(
+                "the law realises e = 0.553, not the 0.5 asked: against a rigid stop at \
+                 e = 0.553 the mean impact speed differs by 0 %"
+            ),
+            "{text}"
+        );
+        assert_eq!(
+            gist(&verdict(0.2, 1.0, 0.5, Validity::NotValid)),
+            "needs the compliant stop"
+        );
+    }
+}

@@ -5,14 +5,20 @@
 //! duration are Hertz's (eqs 5–7) where the system's forces are negligible during contact.
 
 use std::f64::consts::PI;
+use std::ops::ControlFlow;
 
+use hertz_tui::format::verdict::sentence;
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::force::ForceLaw;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::compliant::estimate::hertz_estimate;
 use hertz_tui::model::system::compliant::orbit::{MapPoint, period_doubling};
+use hertz_tui::model::system::compliant::verdict::{Validity, verdict};
 use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop, simulate_detailed};
-use hertz_tui::model::system::{CompliantDamping, RunOptions, SystemKind, SystemModel, SystemSpec};
+use hertz_tui::model::system::{
+    CompliantDamping, Contact, DiagramOptions, GuessStart, OrbitGuess, OrbitOptions, Param,
+    RunOptions, State, SystemKey, SystemKind, SystemModel, SystemSpec, bifurcation, find_orbit,
+};
 
 const E: f64 = 0.5;
 const G: f64 = 9.81;
@@ -223,5 +229,156 @@ fn every_contact_closes_its_energy_balance_and_elastic_contacts_are_hertz() {
             (t_c / hertz.contact_time - 1.0).abs() < 2e-3,
             "{impact:?} {hertz:?}"
         );
+    }
+}
+
+#[test]
+fn the_verdict_follows_contact_time_over_period_and_the_realised_e() {
+    // Γ = 1.3: both stops settle on the period-1 orbit when started on the rigid one (just after
+    // its impact); from rest they may chatter and stick instead.
+    let on_orbit = |frequency: f64| {
+        let p = rigid_orbit(frequency, 1.3, E);
+        let omega = 2.0 * PI * frequency;
+        let amplitude = 1.3 * G / (omega * omega);
+        RunOptions {
+            transient_impacts: 60,
+            recorded_impacts: 40,
+            initial: Some(State {
+                t: p.t,
+                x: amplitude * (omega * p.t).sin(),
+                v: amplitude * omega * (omega * p.t).cos() + E * p.v_in,
+            }),
+            ..RunOptions::default()
+        }
+    };
+    let f = frequency_for_ratio(0.003);
+    let run = on_orbit(f);
+    let short = ball(f, 1.3);
+    let v = verdict(
+        &short,
+        ForceModel::HuntCrossley,
+        CompliantDamping::CalibratedTo(E),
+        &run,
+    )
+    .unwrap();
+    eprintln!("{v:?}\n{}", sentence(&v));
+    assert_eq!(v.validity, Validity::Valid, "{v:?}");
+    assert!((v.contact_ratio / 0.003 - 1.0).abs() < 0.3, "{v:?}");
+    assert!((v.realised_restitution - E).abs() < 0.005, "{v:?}");
+    assert!(
+        v.comparisons.iter().all(|c| c.relative().abs() < 0.01),
+        "{v:?}"
+    );
+
+    let f = frequency_for_ratio(0.1);
+    let long = ball(f, 1.3);
+    let v = verdict(
+        &long,
+        ForceModel::HuntCrossley,
+        CompliantDamping::CalibratedTo(E),
+        &on_orbit(f),
+    )
+    .unwrap();
+    eprintln!("{v:?}\n{}", sentence(&v));
+    assert_eq!(v.validity, Validity::NotValid, "{v:?}");
+    assert!(
+        sentence(&v).starts_with("not valid: the stop is soft"),
+        "{}",
+        sentence(&v)
+    );
+
+    // Clamped Kelvin–Voigt realises more than the e = 0.5 it was asked for, and says so.
+    let v = verdict(
+        &short,
+        ForceModel::with_id("kelvin-voigt"),
+        CompliantDamping::PerImpact,
+        &run,
+    )
+    .unwrap();
+    eprintln!("{v:?}\n{}", sentence(&v));
+    assert!((v.realised_restitution - 0.553).abs() < 0.01, "{v:?}");
+    assert_ne!(v.validity, Validity::Valid, "{v:?}");
+    let decisive = v.comparisons[v.decisive];
+    assert!(decisive.relative_at_realised().abs() < 0.01, "{v:?}");
+    assert!(
+        sentence(&v).contains("the law realises e = 0.55"),
+        "{}",
+        sentence(&v)
+    );
+}
+
+#[test]
+fn orbits_and_diagrams_dispatch_on_the_compliant_contact_and_meet_the_rigid_ones() {
+    // Short contacts (t_c/T = 0.003), Γ = 1.3: the period-1 orbit of both stops.
+    let f = frequency_for_ratio(0.003);
+    let model = ball(f, 1.3);
+    let hc = Contact::Compliant {
+        model: ForceModel::HuntCrossley,
+        damping: CompliantDamping::CalibratedTo(E),
+    };
+    let p = rigid_orbit(f, 1.3, E);
+    let guess = OrbitGuess {
+        forcing_cycles: 1,
+        impacts: 1,
+        start: Some(GuessStart {
+            phase: 2.0 * PI * f * p.t,
+            v_in: p.v_in,
+            stop: 0,
+        }),
+        attractor: RunOptions::default(),
+    };
+    let compliant = find_orbit(&model, &hc, &guess, &OrbitOptions::default()).unwrap();
+    let rigid = find_orbit(&model, &Contact::rigid(E), &guess, &OrbitOptions::default()).unwrap();
+    assert!(compliant.stable && rigid.stable);
+    let (c, r) = (&compliant.points[0], &rigid.points[0]);
+    assert!((c.v_in / r.v_in - 1.0).abs() < 2e-3, "{c:?} {r:?}");
+    // det J = e² for the rigid map (docs/physics.md §8.1); the compliant map's is near it.
+    assert!((rigid.jacobian_det - E * E).abs() < 1e-8, "{rigid:?}");
+    assert!(
+        (compliant.jacobian_det / (E * E) - 1.0).abs() < 0.02,
+        "{compliant:?}"
+    );
+    for (a, b) in compliant.multipliers.iter().zip(&rigid.multipliers) {
+        assert!(
+            (a.norm() - b.norm()).abs() < 0.02,
+            "{compliant:?} {rigid:?}"
+        );
+    }
+
+    // A small diagram through the same entry point: period 1 at every value, the compliant
+    // columns' impact speeds within 0.5 % of the rigid ones.
+    let omega = 2.0 * PI * f;
+    let amplitude = 1.3 * G / (omega * omega);
+    let options = DiagramOptions {
+        run: RunOptions {
+            transient_impacts: 60,
+            recorded_impacts: 10,
+            initial: Some(State {
+                t: p.t,
+                x: amplitude * (omega * p.t).sin(),
+                v: amplitude * omega * (omega * p.t).cos() + E * p.v_in,
+            }),
+            ..RunOptions::default()
+        },
+        chunk: 3,
+        ..DiagramOptions::default()
+    };
+    let values = [1.25, 1.3, 1.35];
+    let run = |contact: &Contact| {
+        bifurcation(
+            &model,
+            contact,
+            Param::System(SystemKey::Gamma),
+            &values,
+            &options,
+            |_| ControlFlow::Continue(()),
+        )
+        .unwrap()
+    };
+    let (d_rigid, d_compliant) = (run(&Contact::rigid(E)), run(&hc));
+    for (a, b) in d_rigid.columns.iter().zip(&d_compliant.columns) {
+        assert_eq!(b.velocities.len(), 10, "{b:?}");
+        let (va, vb) = (a.velocities[9], b.velocities[9]);
+        assert!((vb / va - 1.0).abs() < 5e-3, "Γ = {}: {va} {vb}", a.value);
     }
 }

@@ -53,7 +53,8 @@ pub const HELD_PERIODS: f64 = 4.0;
 pub struct CompliantOptions {
     /// DOP853 (default) or DOPRI5.
     pub method: Method,
-    /// Relative tolerance of contacts (scaled variables) and flights.
+    /// Relative tolerance of the contacts, in their scaled variables (the single-impact solver's
+    /// default, 1e-8; orbits take [`ORBIT_RTOL`]).
     pub rtol: f64,
     /// Accepted plus rejected steps allowed per contact.
     pub max_steps_per_contact: usize,
@@ -63,7 +64,7 @@ impl Default for CompliantOptions {
     fn default() -> Self {
         CompliantOptions {
             method: Method::Dop853,
-            rtol: 1e-10,
+            rtol: 1e-8,
             max_steps_per_contact: 1_000_000,
         }
     }
