@@ -145,24 +145,28 @@ const HERTZ: Unit = Unit {
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: true,
+    others: &[],
 };
 const NEWTON_PER_METRE: Unit = Unit {
     symbol: "N/m",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: false,
+    others: &[],
 };
 const NEWTON_SECOND_PER_METRE: Unit = Unit {
     symbol: "N·s/m",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: false,
+    others: &[],
 };
 const METRE_PER_SECOND_SQUARED: Unit = Unit {
     symbol: "m/s²",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: false,
+    others: &[],
 };
 
 impl DiagramAxes {
