@@ -40,11 +40,6 @@ impl View for WorkPrecision {
         "work–precision"
     }
 
-    /// The help's line of views has 58 columns at 80: the full name leaves no room for a sixth.
-    fn short_title(&self) -> &'static str {
-        "w–p"
-    }
-
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen.body, app, screen.roomy);
     }
