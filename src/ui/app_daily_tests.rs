@@ -64,13 +64,7 @@ fn preset_app(label: &str) -> (App, std::path::PathBuf) {
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene(DEFAULT_SCENE).unwrap();
     let view = registry.scene_view(DEFAULT_SCENE).unwrap();
-    let app = App::open(
-        scene,
-        view,
-        registry,
-        MarkerStyle::Braille,
-        Theme { color: false },
-    );
+    let app = App::open(scene, view, registry, MarkerStyle::Braille, Theme::Plain);
     (app, dir)
 }
 

@@ -86,14 +86,43 @@ pub enum Hue {
     Cyan,
 }
 
+/// The pattern a curve is drawn with, as print tells curves apart: where curves lie on one
+/// another, the gaps of a dotted or dashed one show the curve under it, and the pattern names a
+/// curve without colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Dash {
+    #[default]
+    Solid,
+    /// Every other dot.
+    Dotted,
+    /// Dashes of four dots, two dots apart.
+    Dashed,
+}
+
+impl Dash {
+    /// The dots drawn and the dots left out in each period of the pattern, along the curve
+    /// (`off` = 0: solid).
+    pub fn on_off(self) -> (u8, u8) {
+        match self {
+            Dash::Solid => (1, 0),
+            Dash::Dotted => (1, 1),
+            Dash::Dashed => (4, 2),
+        }
+    }
+}
+
 /// How a law's curves and legend entries look in every chart, pane and figure: part of its row,
 /// so that adding a law restyles no other. No two laws share a glyph (it tells curves apart
-/// where colour cannot); the paper's five take five different hues.
+/// where colour cannot), nor a hue and a pattern at once; the paper's five take five different
+/// hues.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct LawStyle {
     /// Marks the law's curves at their peak and end; printable ASCII, which every font has.
     pub glyph: char,
     pub hue: Hue,
+    /// The line's pattern: the paper's Hunt–Crossley and Lankarani–Nikravesh, which lie within
+    /// a dot or two of each other, dotted and dashed.
+    pub dash: Dash,
 }
 
 /// One law of the table.
@@ -154,6 +183,7 @@ law_table! {
         style: LawStyle {
             glyph: 'o',
             hue: Hue::Blue,
+            dash: Dash::Dashed,
         },
         chi: None,
     };
@@ -169,6 +199,7 @@ law_table! {
         style: LawStyle {
             glyph: '%',
             hue: Hue::Yellow,
+            dash: Dash::Dotted,
         },
         chi: None,
     };
@@ -188,6 +219,7 @@ law_table! {
         style: LawStyle {
             glyph: '+',
             hue: Hue::Green,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -207,6 +239,7 @@ law_table! {
         style: LawStyle {
             glyph: '*',
             hue: Hue::Red,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -222,6 +255,7 @@ law_table! {
         style: LawStyle {
             glyph: '@',
             hue: Hue::Foreground,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -237,6 +271,7 @@ law_table! {
         style: LawStyle {
             glyph: '&',
             hue: Hue::Red,
+            dash: Dash::Dashed,
         },
         chi: None,
     };
@@ -252,6 +287,7 @@ law_table! {
         style: LawStyle {
             glyph: '$',
             hue: Hue::Cyan,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -267,6 +303,7 @@ law_table! {
         style: LawStyle {
             glyph: '~',
             hue: Hue::Magenta,
+            dash: Dash::Dotted,
         },
         chi: None,
     };
@@ -282,6 +319,7 @@ law_table! {
         style: LawStyle {
             glyph: '^',
             hue: Hue::Blue,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -297,6 +335,7 @@ law_table! {
         style: LawStyle {
             glyph: 'v',
             hue: Hue::Green,
+            dash: Dash::Dashed,
         },
         chi: None,
     };
@@ -316,6 +355,7 @@ law_table! {
         style: LawStyle {
             glyph: 's',
             hue: Hue::Yellow,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -331,6 +371,7 @@ law_table! {
         style: LawStyle {
             glyph: 'x',
             hue: Hue::Cyan,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 1.5 * (1.0 - e)),
     };
@@ -346,6 +387,7 @@ law_table! {
         style: LawStyle {
             glyph: '#',
             hue: Hue::Magenta,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| 0.75 * (1.0 - e * e)),
     };
@@ -361,6 +403,7 @@ law_table! {
         style: LawStyle {
             glyph: 'd',
             hue: Hue::Foreground,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
     };
@@ -376,6 +419,7 @@ law_table! {
         style: LawStyle {
             glyph: 'k',
             hue: Hue::Red,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 0.75 * (1.0 - e)),
     };
@@ -391,6 +435,7 @@ law_table! {
         style: LawStyle {
             glyph: 'z',
             hue: Hue::Cyan,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| (1.0 - e * e) / e),
     };
@@ -406,6 +451,7 @@ law_table! {
         style: LawStyle {
             glyph: 'w',
             hue: Hue::Magenta,
+            dash: Dash::Solid,
         },
         chi: Some(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
     };
@@ -421,6 +467,7 @@ law_table! {
         style: LawStyle {
             glyph: 'h',
             hue: Hue::Blue,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 1.6 * (1.0 - e) / e),
     };
@@ -436,6 +483,7 @@ law_table! {
         style: LawStyle {
             glyph: 'n',
             hue: Hue::Green,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 1.5 * (1.0 - e) / e),
     };
@@ -451,6 +499,7 @@ law_table! {
         style: LawStyle {
             glyph: 'q',
             hue: Hue::Yellow,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| 1.0 / e - 1.0),
     };
@@ -502,6 +551,34 @@ mod tests {
             for b in &LAWS[i + 1..] {
                 assert_ne!(a.style.glyph, b.style.glyph, "{} and {}", a.id, b.id);
             }
+        }
+    }
+
+    /// Two laws of one hue differ in pattern, so that colour and pattern alone tell every pair
+    /// apart; the two closest of the paper's curves (Hunt–Crossley and Lankarani–Nikravesh) and
+    /// Fig. 4's pair (elastic Hertz and dry friction) differ in pattern too.
+    #[test]
+    fn no_two_laws_share_a_hue_and_a_pattern() {
+        for (i, a) in LAWS.iter().enumerate() {
+            for b in &LAWS[i + 1..] {
+                assert!(
+                    (a.style.hue, a.style.dash) != (b.style.hue, b.style.dash),
+                    "{} and {}: {:?}",
+                    a.id,
+                    b.id,
+                    a.style
+                );
+            }
+        }
+        for (a, b) in [
+            ("hunt-crossley", "lankarani-nikravesh"),
+            ("quasistatic", "dry-friction"),
+        ] {
+            assert_ne!(
+                LAWS[index_of(a)].style.dash,
+                LAWS[index_of(b)].style.dash,
+                "{a} {b}"
+            );
         }
     }
 

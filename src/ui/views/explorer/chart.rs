@@ -209,7 +209,7 @@ pub fn cursor_at(
     roomy: bool,
     position: Position,
 ) -> Option<u16> {
-    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    let inner = pane("", Theme::Plain, roomy).inner(area);
     let chart = describe(
         app,
         kind,
