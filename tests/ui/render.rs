@@ -127,7 +127,7 @@ fn type_in(app: &mut App, value: &str) {
 }
 
 /// The app with body 1's ν set to 0.6 by keystrokes: invalid, and the last results stay.
-fn invalid_app() -> App {
+pub fn invalid_app() -> App {
     let mut app = app();
     app.cursor = Cursor::Field(Field::Number(SceneKey::Body(
         BodyIndex::One,
