@@ -127,6 +127,7 @@ pub const INPUT_HINTS: &[&str] = &[
     "numbers: 200G, 2e11, 200 GPa, 10 mm, 0.3 m/s, 2.3 µm (or um), 33 g, 60%",
     "a bare number is in SI units (Pa, m, m/s, kg); mass `auto` = ρ × volume",
     "--marker braille|dot|block for fonts without braille; NO_COLOR=1: no colour",
+    "~/.config/hertz-tui/config.toml: theme dark|light|plain, scene, [keys]",
 ];
 
 /// The action of a terminal event in `mode`, if any.
@@ -157,7 +158,7 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
         return Some(Action::Interrupt);
     }
     match mode {
-        Mode::Normal => normal(key),
+        Mode::Normal => normal(super::rebind::translate(key)),
         Mode::Editing(_) | Mode::Prompt(_) => match key.code {
             KeyCode::Enter => Some(Action::Enter),
             KeyCode::Esc => Some(Action::Cancel),

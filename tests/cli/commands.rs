@@ -697,3 +697,23 @@ fn solve_json_warns_where_the_cylinder_fit_departs_from_eqs_13_14() {
     let table_2 = json(&["solve", "--scene", "steel-cylinders-r20-l100"]);
     assert_eq!(table_2["warnings"].as_array().map(Vec::len), Some(0));
 }
+
+/// The explorer reads its config file before it takes the terminal: a mistake is a user error
+/// naming the file and line, and the file's `scene` is the one it opens without `--scene`.
+#[test]
+fn the_explorer_reads_its_config_file_and_names_the_line_of_a_mistake() {
+    let dir = TempDir::new("explorer-config");
+    dir.write(
+        "hertz-tui/config.toml",
+        "theme = \"dark\"\n[keys]\nquit = \"xy\"\n",
+    );
+    let err = user_error_with_config(Some(dir.path()), &[]);
+    let file = dir.path().join("hertz-tui").join("config.toml");
+    assert!(
+        err.contains(&format!("{}:3: keys.quit", file.display())),
+        "{err}"
+    );
+    dir.write("hertz-tui/config.toml", "scene = \"no-such-scene\"\n");
+    let err = user_error_with_config(Some(dir.path()), &[]);
+    assert!(err.contains("no-such-scene"), "{err}");
+}
