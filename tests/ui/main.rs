@@ -4,5 +4,6 @@ mod axes;
 mod contrast;
 mod e2e_tmux;
 mod models_pane;
+mod readme_screen;
 mod render;
 mod results_damping;
