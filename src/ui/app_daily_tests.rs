@@ -562,12 +562,7 @@ impl App {
 fn a_preset_s_stand_ins_are_shown_as_assumed_until_edited() {
     let registry = Registry::builtin().unwrap();
     let scene = registry.scene("steel-sphere-r10-plate").unwrap();
-    let mut a = App::new(
-        scene,
-        registry,
-        MarkerStyle::Braille,
-        Theme::Plain,
-    );
+    let mut a = App::new(scene, registry, MarkerStyle::Braille, Theme::Plain);
     let assumed_rows = |a: &App| {
         screen(a, 160, 48)
             .iter()
