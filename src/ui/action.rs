@@ -64,8 +64,14 @@ pub enum Action {
     Export,
     /// Writes the charts of the view on screen to an SVG figure.
     Figure,
-    /// Moves the explorer's data cursor along the charts' x axes (forward: right).
-    MoveCursor(bool),
+    /// Moves the explorer's data cursor along the charts' x axes: forward (right) or back, one
+    /// step (`,` `.`) or ten (`<` `>`).
+    MoveCursor {
+        forward: bool,
+        fast: bool,
+    },
+    /// `P`: the data cursor to the focused model's peak on the first chart.
+    CursorToPeak,
     /// Applies the material selected in the picker to a body.
     ApplyMaterialTo(BodyIndex),
     /// The terminal has this many columns and rows: redraw (and size sweeps to it).

@@ -209,7 +209,10 @@ fn saving_never_hides_a_built_in_without_asking_and_keeps_the_description() {
     enter_text(&mut a, DEFAULT_SCENE);
     assert_eq!(
         a.mode_confirm(),
-        Some(Confirm::ShadowBuiltin(DEFAULT_SCENE.into())),
+        Some(Confirm::ShadowBuiltin {
+            name: DEFAULT_SCENE.into(),
+            then_quit: false
+        }),
         "a built-in's name asks first"
     );
     key(&mut a, KeyCode::Char('n'));

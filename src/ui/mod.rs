@@ -16,6 +16,8 @@ mod app_daily_tests;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+#[cfg(test)]
+mod app_trap_tests;
 pub mod config;
 pub mod data_cursor;
 mod edited;

@@ -2,6 +2,7 @@
 
 mod axes;
 mod contrast;
+mod cut_words;
 mod e2e_tmux;
 mod models_pane;
 mod readme_screen;
