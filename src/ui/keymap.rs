@@ -121,8 +121,7 @@ pub const INPUT_HINTS: &[&str] = &[
     "editing: Enter commits, Esc cancels, Ctrl-U clears, Ctrl-W deletes a word",
     "numbers: 200G, 200 GPa, 1 cm, 10 mm, 2.3 µm (um), 0.3 m/s, 3.6 km/h, 60%",
     "a bare number is in SI units (Pa, m, m/s, kg); mass `auto` = ρ × volume",
-    "--marker braille|dot|block for fonts without braille; NO_COLOR=1: no colour",
-    "~/.config/hertz-tui/config.toml: theme dark|light|plain, scene, [keys]",
+    "--marker dot · NO_COLOR=1 · theme, keys: ~/.config/hertz-tui/config.toml",
 ];
 
 /// The action of a terminal event in `mode`, if any.
