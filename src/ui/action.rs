@@ -59,6 +59,8 @@ pub enum Action {
     Help,
     /// Opens the engine panel: the scene's contact parameters for a simulation engine.
     Engines,
+    /// `y` in the engine panel: copies its script to the terminal's clipboard (OSC 52).
+    Copy,
     Presets,
     Save,
     Export,

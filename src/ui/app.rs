@@ -258,6 +258,8 @@ pub struct App {
     pub message: Option<Message>,
     /// Wall time of the last complete recompute (estimate and solves).
     pub last_recompute: Option<Duration>,
+    /// Text for the terminal's clipboard, sent (OSC 52) by the event loop before the next frame.
+    pub clipboard: Option<String>,
     pub(super) recompute_started: Option<Instant>,
     outbox: Vec<Job>,
     study_outbox: Vec<StudyJob>,
@@ -320,6 +322,7 @@ impl App {
             theme,
             message: None,
             last_recompute: None,
+            clipboard: None,
             recompute_started: None,
             outbox: Vec::new(),
             study_outbox: Vec::new(),

@@ -11,17 +11,17 @@ use ratatui::crossterm::event::{
 use ratatui::layout::{Position, Rect};
 
 use crate::model::ForceModel;
-use crate::model::presets::{DEFAULT_SCENE, Registry};
+use crate::model::presets::DEFAULT_SCENE;
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
 use crate::model::study::runner;
 
 use super::action::Action;
 use super::app::{App, Confirm, Cursor, Export, Mode, PromptKind};
+use super::app_daily_tests::{preset_app, screen};
 use super::app_tests::{app, enter_text, key, key_with, settle, temp_path, type_text};
 use super::field::Field;
 use super::keymap::{INPUT_HINTS, action_for_event, bindings};
 use super::render;
-use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
 use super::update::update;
 
@@ -43,23 +43,9 @@ fn settle_all(app: &mut App) {
     }
 }
 
-/// The screen as text, one line per row.
-fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
-    let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
-    terminal.draw(|frame| render::draw(frame, app)).unwrap();
-    let buffer = terminal.backend().buffer();
-    (0..height)
-        .map(|y| (0..width).map(|x| buffer[(x, y)].symbol()).collect())
-        .collect()
-}
-
 /// The explorer on the default preset with a user folder of its own, edited (v₀ nudged).
 fn edited_app(label: &str) -> (App, std::path::PathBuf) {
-    let dir = temp_path(label);
-    let registry = Registry::load_from(Some(&dir)).unwrap();
-    let scene = registry.scene(DEFAULT_SCENE).unwrap();
-    let view = registry.scene_view(DEFAULT_SCENE).unwrap();
-    let mut app = App::open(scene, view, registry, MarkerStyle::Braille, Theme::Plain);
+    let (mut app, dir) = preset_app(label);
     key(&mut app, KeyCode::Right);
     assert!(app.is_dirty());
     (app, dir)

@@ -45,6 +45,7 @@ pub mod worker;
 
 /// The engine panel's state (`t`: a simulation engine's parameters for the scene).
 pub mod engine_panel;
+pub mod osc52;
 
 pub use style::MarkerStyle;
 

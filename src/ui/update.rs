@@ -73,10 +73,26 @@ fn transition(app: &mut App, action: Action) {
                         app.mode = Mode::Help;
                     }
                 }
-                Mode::Engine(panel) => {
-                    let scene = app.valid.as_ref().map(|v| &v.scene);
-                    if let Some(panel) = panel.update(action, scene) {
-                        app.mode = Mode::Engine(panel);
+                Mode::Engine(mut panel) => {
+                    match action {
+                        Action::Export => {
+                            if let Err(reason) = panel.write_to(Path::new(".")) {
+                                panel.note = Some(reason);
+                            }
+                            app.mode = Mode::Engine(panel);
+                        }
+                        Action::Copy => {
+                            app.clipboard = panel.copied();
+                            app.mode = Mode::Engine(panel);
+                        }
+                        action => {
+                            let scene = app.valid.as_ref().map(|v| &v.scene);
+                            // The panel's text rows: the screen less its margins and borders.
+                            let page = app.screen.1.saturating_sub(4);
+                            if let Some(panel) = panel.update(action, scene, page) {
+                                app.mode = Mode::Engine(panel);
+                            }
+                        }
                     }
                 }
                 Mode::Picker(picker) => picking(app, picker, action),
@@ -224,6 +240,7 @@ fn normal(app: &mut App, action: Action) {
         | Action::Cancel
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
+        | Action::Copy
         | Action::Quit
         | Action::Interrupt
         | Action::Yes
