@@ -96,6 +96,8 @@ pub enum QuantityChoice {
     ContactSize,
     XMax,
     FMax,
+    /// Contact time (`t-c`, also `tc`).
+    #[value(name = "t-c", alias = "tc")]
     TC,
     VOut,
     EOut,
@@ -203,8 +205,8 @@ pub struct SolveArgs {
 pub struct BenchArgs {
     #[command(flatten)]
     pub source: SceneSelection,
-    /// The force model to measure: quasistatic, dry-friction, proposed, hunt-crossley,
-    /// lankarani-nikravesh.
+    /// The force model to measure: any law id (`hertz-tui solve` lists them all), e.g.
+    /// hunt-crossley, kelvin-voigt, thornton.
     #[arg(long = "model", value_name = "MODEL")]
     pub model: ForceModel,
     /// Instead of the work-precision ladder: per fixed-step method, the measured largest stable

@@ -8,8 +8,11 @@ use tui_input::Input;
 use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
+use crate::model::presets::kebab_case;
+use crate::model::recommend::{Recommendation, recommend};
 use crate::model::scene_file::SceneView;
 use crate::model::scene_key::{BodyIndex, SceneKey};
+use crate::model::scene_title::{edits, retitled};
 use crate::model::study::runner::{StudyJob, StudySpec};
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
@@ -106,6 +109,8 @@ pub struct Valid {
     /// Where the scene leaves the theory's range (a contact not small against R, a cylinder fit
     /// that departs from eqs 13–14), computed once per edit.
     pub warnings: Vec<ModelWarning>,
+    /// The recommendation (it solves the laws it speaks of), computed once per edit.
+    pub advice: Recommendation,
 }
 
 /// Models checked when the explorer opens on a bare scene: the paper's Fig. 5 three plus elastic
@@ -309,6 +314,24 @@ impl App {
             .collect()
     }
 
+    /// The scene's name and description as shown, exported and saved: those loaded while the
+    /// draft is as loaded, else named by its bodies with what was edited (a preset's "…on steel
+    /// plate" is not the name of a scene whose plate became aluminium).
+    pub fn title(&self) -> (String, Option<String>) {
+        retitled(&self.saved, self.description.as_deref(), &self.draft.scene)
+    }
+
+    /// The file-name stem of exports: the preset's name while unedited, else the shown name in
+    /// kebab case.
+    pub fn file_stem(&self) -> String {
+        let edited = !edits(&self.saved, &self.draft.scene).is_empty();
+        match &self.preset {
+            _ if edited => kebab_case(&self.title().0),
+            Some(preset) => preset.clone(),
+            None => self.draft.scene.name.clone(),
+        }
+    }
+
     /// Whether the scene differs from the one last loaded or saved.
     pub fn is_dirty(&self) -> bool {
         self.draft.scene != self.saved
@@ -416,6 +439,8 @@ impl App {
     /// Re-evaluates the estimate of the draft and requests the solves whose inputs changed.
     pub(crate) fn recompute(&mut self) {
         let start = Instant::now();
+        // Named before it is copied: the valid scene's name and materials are those shown.
+        super::edited::name_edited_materials(self);
         match self.draft.scene.quasistatic() {
             Ok(quasistatic) => {
                 self.scene_error = None;
@@ -426,11 +451,16 @@ impl App {
                     .pair()
                     .map(|pair| scene_warnings(&pair, &quasistatic))
                     .unwrap_or_default();
+                let advice = recommend(&self.draft.scene, &quasistatic);
+                // Named as shown: the engine panel and the studies read the valid scene's name.
+                let mut scene = self.draft.scene.clone();
+                scene.name = self.title().0;
                 self.valid = Some(Valid {
-                    scene: self.draft.scene.clone(),
+                    scene,
                     quasistatic,
                     params,
                     warnings,
+                    advice,
                 });
                 if !self.request_solves(start) && !self.solutions.any_pending() {
                     // Only the estimate was recomputed.

@@ -49,6 +49,7 @@ use color_eyre::eyre::WrapErr;
 use crate::model::Scene;
 use crate::model::presets::Registry;
 use crate::model::scene_file::SceneView;
+use crate::model::scene_title::retitled;
 
 use app::App;
 use style::Theme;
@@ -68,6 +69,11 @@ pub fn run(
         .wrap_err("cannot load the presets")?;
     // A scene file's description is kept on save, as a preset's is.
     let description = registry.scene_description(source).ok().flatten();
+    // Overrides given on the command line: the description says what they edited.
+    let description = match registry.scene(source) {
+        Ok(original) => retitled(&original, description.as_deref(), &scene).1,
+        Err(_) => description,
+    };
     let mut app = App::open(scene, view, registry, marker, Theme::from_env());
     if app.description.is_none() {
         app.description = description;

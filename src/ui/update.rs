@@ -195,8 +195,7 @@ fn normal(app: &mut App, action: Action) {
                     true,
                 );
             } else if app.solutions.solution(model).is_some() {
-                let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
-                let path = export::default_path(stem, model);
+                let path = export::default_path(&app.file_stem(), model);
                 app.mode = Mode::Prompt(Prompt {
                     kind: PromptKind::Export(model),
                     input: Input::new(path.display().to_string()),
@@ -441,10 +440,13 @@ fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<Stri
     let scene = scene_to_save(app, name);
     let view = app.scene_view();
     let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
+    // An edited scene's description says what was edited, not the preset's "…on steel plate".
+    let description = app.title().1;
     let written = app
         .registry
-        .save_scene_with_view(&scene, app.description.as_deref(), &view, target)
+        .save_scene_with_view(&scene, description.as_deref(), &view, target)
         .map_err(|e| e.to_string())?;
+    app.description = description;
     saved(app, scene, view, preset);
     Ok(format!("saved {}", absolute(&written)))
 }

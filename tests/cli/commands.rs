@@ -697,3 +697,20 @@ fn solve_json_warns_where_the_cylinder_fit_departs_from_eqs_13_14() {
     let table_2 = json(&["solve", "--scene", "steel-cylinders-r20-l100"]);
     assert_eq!(table_2["warnings"].as_array().map(Vec::len), Some(0));
 }
+
+/// After `--set body2.material=…` no header says "…on steel plate": solve's, translate's and a
+/// plotted figure's title name the scene by its bodies.
+#[test]
+fn headers_follow_an_edited_plate() {
+    let set = ["--set", "body2.material=aluminium-alloy"];
+    let name = "Steel sphere R = 10 mm on aluminium-alloy plate";
+    let scene = ["--scene", "fig5-steel-sphere-r10-plate"];
+    let solve = ok(&[&["solve"][..], &scene, &set, &["--model", "proposed"]].concat());
+    assert!(solve.starts_with(&format!("Scene: {name}\n")), "{solve}");
+    let translate = ok(&[&["translate"][..], &scene, &set, &["--engine", "drake"]].concat());
+    assert!(
+        translate.lines().next().unwrap().ends_with(name),
+        "{translate}"
+    );
+    assert!(!translate.contains("steel plate"), "{translate}");
+}

@@ -13,6 +13,10 @@
 //!   exit 0. Anything else (cargo, the explorer itself, pipes) fails the test unless the block is
 //!   marked ```` ```sh no-run ````, which keeps it out: use it for what cannot run headless here.
 //!
+//! - ```` ```console ```` — a shown session: each `$ hertz-tui …` line is run as a `sh` command
+//!   is, and what it prints must be the lines under it, up to the next `$` line, exactly (trailing
+//!   spaces and blank lines at the end aside). Shown output is checked, never left to go stale.
+//!
 //! Other languages (`text` captures and error examples) are not run.
 
 use std::fs;
@@ -115,8 +119,9 @@ fn commands(text: &str) -> Vec<String> {
     commands
 }
 
-/// Runs one documented command in `dir`; the error says why it does not run as written.
-fn run(command: &str, dir: &Path) -> Result<(), String> {
+/// Runs one documented command in `dir` and returns what it printed; the error says why it does
+/// not run as written.
+fn run(command: &str, dir: &Path) -> Result<String, String> {
     let mut words = words(command);
     let mut stdout_file = None;
     if let Some(i) = words.iter().position(|w| w == ">") {
@@ -183,8 +188,58 @@ fn run(command: &str, dir: &Path) -> Result<(), String> {
     if let Some(file) = stdout_file {
         fs::write(&file, &out.stdout)
             .map_err(|e| format!("cannot write {}: {e}", file.display()))?;
+        return Ok(String::new());
     }
-    Ok(())
+    String::from_utf8(out.stdout).map_err(|e| format!("output is not UTF-8: {e}"))
+}
+
+/// A `console` block's sessions: each `$ ` command with the output shown under it.
+fn sessions(text: &str) -> Vec<(String, String)> {
+    let mut sessions: Vec<(String, String)> = Vec::new();
+    for line in text.lines() {
+        match (line.strip_prefix("$ "), sessions.last_mut()) {
+            (Some(command), _) => sessions.push((command.trim().to_string(), String::new())),
+            (None, Some((_, shown))) => {
+                shown.push_str(line);
+                shown.push('\n');
+            }
+            (None, None) => {}
+        }
+    }
+    sessions
+}
+
+/// Output compared line by line without trailing spaces or trailing blank lines.
+fn normalised(output: &str) -> String {
+    let lines: Vec<&str> = output.lines().map(str::trim_end).collect();
+    let end = lines
+        .iter()
+        .rposition(|l| !l.is_empty())
+        .map_or(0, |i| i + 1);
+    lines[..end].join("\n")
+}
+
+/// The first line where `shown` and `printed` differ, both quoted, or `None` when they agree.
+fn first_difference(shown: &str, printed: &str) -> Option<String> {
+    let (shown, printed) = (normalised(shown), normalised(printed));
+    if shown == printed {
+        return None;
+    }
+    let mut s = shown.lines();
+    let mut p = printed.lines();
+    for i in 1.. {
+        match (s.next(), p.next()) {
+            (a, b) if a == b && a.is_some() => {}
+            (a, b) => {
+                return Some(format!(
+                    "shown line {i} is {:?} but the command prints {:?}",
+                    a.unwrap_or("(nothing)"),
+                    b.unwrap_or("(nothing)")
+                ));
+            }
+        }
+    }
+    None
 }
 
 /// A TOML block of the document `name` read as what it is; `Err` says why it is refused.
@@ -217,7 +272,6 @@ impl Drop for TempDir {
 #[derive(Default)]
 struct Checked {
     failures: Vec<String>,
-    scenes: usize,
     commands_run: usize,
 }
 
@@ -233,9 +287,6 @@ fn check_document(name: &str, markdown: &str, dir: &Path, registry: &Registry) -
                         .failures
                         .push(format!("{name}:{}: toml: {e}", block.line));
                 }
-                if block.text.contains("[body1]") {
-                    checked.scenes += 1;
-                }
                 if let Some(file) = block.option("file") {
                     fs::write(dir.join(file), &block.text).unwrap();
                 }
@@ -247,6 +298,20 @@ fn check_document(name: &str, markdown: &str, dir: &Path, registry: &Registry) -
                         checked
                             .failures
                             .push(format!("{name}:{}: `{command}`: {e}", block.line));
+                    }
+                }
+            }
+            "console" => {
+                for (command, shown) in sessions(&block.text) {
+                    checked.commands_run += 1;
+                    let problem = match run(&command, dir) {
+                        Ok(printed) => first_difference(&shown, &printed),
+                        Err(e) => Some(e),
+                    };
+                    if let Some(problem) = problem {
+                        checked
+                            .failures
+                            .push(format!("{name}:{}: `{command}`: {problem}", block.line));
                     }
                 }
             }
@@ -275,8 +340,8 @@ fn every_toml_and_command_block_of_the_readme_runs_as_written() {
         checked.failures.join("\n")
     );
     assert!(
-        checked.scenes >= 1 && checked.commands_run >= 5,
-        "the README's blocks were found"
+        checked.commands_run >= 5,
+        "the README's five questions were found"
     );
 }
 
@@ -341,9 +406,39 @@ fn the_block_reader_and_the_runner_refuse_what_would_not_run() {
         line: 1,
         text: "name = \"x\"\n[body1]\nshape = \"sphere\"\nradius = 0.01\nlength = 0.1\nmaterial = \"steel\"\n[body2]\nshape = \"plane\"\nmaterial = \"steel\"\n[impact]\nv0 = 0.3\nrestitution = 0.6\nplastic_indentation = 0.0\n".into(),
     };
+    let shown = sessions("$ hertz-tui list\na\nb  \n\n$ hertz-tui help\n");
+    assert_eq!(
+        shown,
+        [
+            ("hertz-tui list".to_string(), "a\nb  \n\n".to_string()),
+            ("hertz-tui help".to_string(), String::new()),
+        ]
+    );
+    assert_eq!(first_difference(&shown[0].1, "a\nb\n"), None);
+    assert!(
+        first_difference(&shown[0].1, "a\nc\n")
+            .is_some_and(|d| d.contains("line 2") && d.contains("\"c\"")),
+        "a changed line is found"
+    );
+    assert!(
+        first_difference(&shown[0].1, "a\n").is_some(),
+        "a missing line is found"
+    );
     let error = check_toml("README.md", &sphere_with_length, &registry).unwrap_err();
     assert!(
         error.contains("`body1.length` is not used by a sphere"),
         "{error}"
+    );
+}
+
+/// The README is the first screen and the five questions; everything else lives in `docs/`.
+#[test]
+fn the_readme_stays_under_25_kb() {
+    let bytes = fs::metadata(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .unwrap()
+        .len();
+    assert!(
+        bytes < 25 * 1024,
+        "README.md is {bytes} bytes: move detail into docs/"
     );
 }

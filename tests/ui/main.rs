@@ -3,5 +3,6 @@
 mod axes;
 mod e2e_tmux;
 mod models_pane;
+mod readme_screen;
 mod render;
 mod results_damping;

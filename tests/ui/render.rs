@@ -1056,3 +1056,69 @@ fn narrow_study_headers_shorten_instead_of_cutting() {
         "the output whole or its symbol alone: {output}"
     );
 }
+
+/// The y values of `model`'s line in `chart`, in drawing order.
+fn model_ys(chart: &hertz_tui::chart::Chart, model: ForceModel) -> Vec<f64> {
+    chart
+        .series
+        .iter()
+        .find(|s| s.name == model.name())
+        .unwrap_or_else(|| panic!("{model} in {}", chart.title))
+        .runs
+        .concat()
+        .into_iter()
+        .map(|p| p.1)
+        .collect()
+}
+
+/// Views 4 and 5 both chart e_out against v₀, with opposite trends for the same law: the sweep
+/// sets each law's damping from e at every v₀ (Hunt–Crossley's χ = 3(1 − e)/2 keeps its e_out
+/// flat, docs/physics.md §6.4), view 5 sets it at the scene's v₀ and holds it (e_out falls as v₀
+/// grows). Each title says which.
+#[test]
+fn the_two_e_out_against_v0_charts_say_how_they_set_the_damping() {
+    let sweep = app_on(Tab::named("sweep").unwrap());
+    let screen = text(render(&sweep, 160, 48).backend().buffer());
+    assert!(screen.contains("damping from e at each v₀"), "{screen}");
+    let charts = sweep.tab.view().charts(&sweep);
+    let flat = model_ys(&charts[0], ForceModel::HuntCrossley);
+    let spread = flat.iter().cloned().fold(f64::MIN, f64::max)
+        - flat.iter().cloned().fold(f64::MAX, f64::min);
+    assert!(spread < 1e-6, "re-derived at each v₀: {flat:?}");
+
+    let held = app_on(Tab::named("restitution").unwrap());
+    let screen = text(render(&held, 160, 48).backend().buffer());
+    assert!(
+        screen.contains("damping set at v₀ = 0.3 m/s and held"),
+        "{screen}"
+    );
+    let charts = held.tab.view().charts(&held);
+    let falling = model_ys(&charts[1], ForceModel::HuntCrossley);
+    assert!(
+        falling.first().unwrap() - falling.last().unwrap() > 0.3,
+        "held: {falling:?}"
+    );
+    // Both meet at the scene's own impact: its e_out at v₀ (0.712 for e = 0.6, eq 19).
+    assert!((flat[0] - 0.712).abs() < 5e-4, "{}", flat[0]);
+}
+
+/// With `C` the Models pane says "calibrated to e"; view 5 shows each law's own damping rule
+/// (its subject), and says so on every chart and on its table rather than implying they follow.
+#[test]
+fn view_5_says_its_charts_are_the_laws_own_rules_while_calibrated() {
+    let mut app = app_on(Tab::named("restitution").unwrap());
+    let before = text(render(&app, 160, 48).backend().buffer());
+    assert!(!before.contains("own rules: C not applied"), "{before}");
+    press(&mut app, KeyCode::Char('C'));
+    settle(&mut app);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(screen.contains("calibrated to e"), "{screen}");
+    assert_eq!(
+        screen.matches("own rules: C not applied").count(),
+        2,
+        "both charts: {screen}"
+    );
+    press(&mut app, KeyCode::Char('c'));
+    let table = text(render(&app, 160, 48).backend().buffer());
+    assert!(table.contains("own rules: C not applied"), "{table}");
+}

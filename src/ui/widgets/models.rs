@@ -11,7 +11,6 @@ use ratatui::widgets::Paragraph;
 
 use crate::chart::model_glyph;
 use crate::model::ForceModel;
-use crate::model::recommend::recommend;
 use crate::ui::app::{App, Cursor};
 use crate::ui::style::{Role, Theme, sample};
 
@@ -92,7 +91,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let fits: Vec<ForceModel> = app
         .valid
         .as_ref()
-        .map(|v| recommend(&v.scene, &v.quasistatic).fits)
+        .map(|v| v.advice.fits.clone())
         .unwrap_or_default();
     let rows = rows();
     // The title keeps a rule cell before the next pane's title at 80 columns.

@@ -5,7 +5,7 @@ use ratatui::layout::{Constraint, Layout, Position, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Paragraph;
 
-use crate::model::scene_key::BodyIndex;
+use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::ui::app::{App, Cursor, EditTarget, Mode};
 use crate::ui::field::{self, Field, Section};
 use crate::ui::style::Role;
@@ -216,6 +216,16 @@ pub fn field_at(app: &App, area: Rect, roomy: bool, position: Position) -> Optio
     }
 }
 
+/// Whether `field` holds a value the scene's user did not give (a preset's stand-in).
+fn is_assumed(app: &App, field: Field) -> bool {
+    let assumed = app.draft.scene.assumed;
+    match field {
+        Field::Number(SceneKey::Restitution) => assumed.restitution,
+        Field::Number(SceneKey::PlasticIndentation) => assumed.plastic_indentation,
+        _ => false,
+    }
+}
+
 fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usize) {
     let theme = app.theme;
     let error_fields = app.error_fields();
@@ -263,6 +273,10 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
                     Span::styled(label, theme.style(label_role)),
                     Span::styled(value, theme.style(value_role)),
                 ]);
+                // A preset's stand-in, not a value the user gave: said beside it until edited.
+                if !editing && is_assumed(app, *field) {
+                    line.push_span(Span::styled(" assumed", theme.style(Role::Warning)));
+                }
                 if under_cursor && !matches!(app.mode, Mode::Editing(_)) {
                     line = line.patch_style(theme.style(Role::Cursor));
                 }

@@ -27,7 +27,7 @@ use crate::chart::stability::{self as plot, Curve};
 fn name_cell(curve: Curve, text: &str, theme: Theme, narrow: bool) -> Cell<'static> {
     let (ink, glyph) = match curve {
         Curve::Reference => (Ink::Foreground, REFERENCE_GLYPH),
-        Curve::Method(m) => (Ink::Method(m), method_glyph(m)),
+        Curve::Method(m) | Curve::Steps(m) => (Ink::Method(m), method_glyph(m)),
     };
     let style = theme.ink(ink);
     let lead = if narrow {
