@@ -49,7 +49,7 @@ fn mouse(app: &mut App, kind: MouseEventKind, column: u16, row: u16) {
 }
 
 /// The screen as text, one line per row.
-fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
+pub(super) fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|frame| render::draw(frame, app)).unwrap();
     let buffer = terminal.backend().buffer();
@@ -59,7 +59,7 @@ fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
 }
 
 /// The explorer on the default preset, with a user folder of its own.
-fn preset_app(label: &str) -> (App, std::path::PathBuf) {
+pub(super) fn preset_app(label: &str) -> (App, std::path::PathBuf) {
     let dir = temp_path(label);
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene(DEFAULT_SCENE).unwrap();
@@ -215,7 +215,10 @@ fn saving_never_hides_a_built_in_without_asking_and_keeps_the_description() {
     enter_text(&mut a, DEFAULT_SCENE);
     assert_eq!(
         a.mode_confirm(),
-        Some(Confirm::ShadowBuiltin(DEFAULT_SCENE.into())),
+        Some(Confirm::ShadowBuiltin {
+            name: DEFAULT_SCENE.into(),
+            then_quit: false
+        }),
         "a built-in's name asks first"
     );
     key(&mut a, KeyCode::Char('n'));

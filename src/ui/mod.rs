@@ -16,6 +16,8 @@ mod app_daily_tests;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+#[cfg(test)]
+mod app_trap_tests;
 pub mod data_cursor;
 mod edited;
 pub mod export;
@@ -41,6 +43,7 @@ pub mod worker;
 
 /// The engine panel's state (`t`: a simulation engine's parameters for the scene).
 pub mod engine_panel;
+pub mod osc52;
 
 pub use style::MarkerStyle;
 

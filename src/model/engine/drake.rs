@@ -73,7 +73,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(scene.elastic.force(scene.x_max))
         ),
         "d is a constant, so e falls as v₀ rises (see e(v₀)); the rebound speed never exceeds 1/d.".into(),
-        "Numbers are for the continuous law (MultibodyPlant time_step = 0, or a step far below the contact time); Drake's discrete approximations (TAMSI, SAP, Similar, Lagged) step through it in time.".into(),
+        "Numbers are for the continuous law (MultibodyPlant time_step = 0). TAMSI, Similar and Lagged step through it (the step below); SAP ignores hunt_crossley_dissipation and comes out perfectly inelastic with these parameters: use --engine drake-sap for SAP.".into(),
     ];
     if d.value > UNPHYSICAL_DISSIPATION {
         notes.push(format!(

@@ -113,9 +113,9 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
     let mut notes = vec![
         "Assumed: one frictionless contact (condim 1), no gravity or other force during the impact (a₀ = 0), solimp with d_min = d_max (then the impedance cancels), continuous time.".into(),
         format!(
-            "MuJoCo replaces a timeconst below 2·timestep by 2·timestep (refsafe): keep timestep ≤ {} s; the fragment uses timeconst/10 = {} s, and the realised e is the continuous-time limit.",
-            shown(timeconst.value / 2.0),
-            shown(timestep)
+            "The numbers above are the continuous-time limit. The step must follow the contact time, not timeconst: at timeconst/10 = {} s a lightly damped contact gains energy. The step printed below is hertz-tui's model of MuJoCo's Euler stepping, and stays under timeconst/2 = {} s, below which MuJoCo would raise timeconst (refsafe).",
+            shown(timestep),
+            shown(timeconst.value / 2.0)
         ),
     ];
     if dampratio.value < 1.0 {

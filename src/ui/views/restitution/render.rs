@@ -15,7 +15,7 @@ use crate::ui::app::App;
 use crate::ui::layout::{ScreenLayout, left_width};
 use crate::model::study::runner::{RestitutionData, StudyKind};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{model_name, pane, span};
+use crate::ui::widgets::common::{model_name, pane, span, titled};
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
 use crate::chart::restitution as plot;
@@ -96,7 +96,7 @@ fn velocity_chart(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionDa
 }
 
 fn draw(frame: &mut Frame, area: Rect, app: &App, roomy: bool, title: String, chart: &Chart) {
-    let block = pane(title, app.theme, roomy);
+    let block = titled(&title, area, app.theme, roomy);
     graph::render_with_legend(frame, area, block, chart, (app.marker, app.theme), roomy);
 }
 
@@ -107,7 +107,7 @@ fn table(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionData, roomy
     } else {
         "realised e for the requested e (c: charts)".to_string()
     };
-    let block = pane(title, theme, roomy);
+    let block = titled(&title, area, theme, roomy);
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let name_width = 20;
