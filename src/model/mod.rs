@@ -37,6 +37,7 @@ pub mod scene_key;
 pub mod scene_title;
 pub mod sphere;
 pub mod study;
+pub mod system;
 pub mod warnings;
 
 pub use body::{Body, Shape};

@@ -29,5 +29,12 @@ mod ode_stability;
 mod presets;
 mod quasistatic_props;
 mod scene_view;
+mod systems_ball;
+#[allow(dead_code)]
+mod systems_common;
+mod systems_diagram;
+mod systems_hard;
+mod systems_oscillator;
+mod systems_scene;
 mod tables;
 mod tolerance_promise;

@@ -42,6 +42,18 @@ pub(super) const SCENES: &[(&str, &str)] = &[
         "fig5-steel-sphere-r10-plate",
         include_str!("../../../presets/scenes/fig5-steel-sphere-r10-plate.toml"),
     ),
+    (
+        "bouncing-ball",
+        include_str!("../../../presets/scenes/bouncing-ball.toml"),
+    ),
+    (
+        "impact-oscillator",
+        include_str!("../../../presets/scenes/impact-oscillator.toml"),
+    ),
+    (
+        "impact-oscillator-clearance",
+        include_str!("../../../presets/scenes/impact-oscillator-clearance.toml"),
+    ),
 ];
 
 /// How messages name a built-in preset's source: its path in the repository.

@@ -10,6 +10,7 @@ use crate::model::overrides::{self, Override};
 use crate::model::scene::Scene;
 use crate::model::scene_file::{self, Document, SceneView};
 use crate::model::scene_title::{bodies_name, retitled};
+use crate::model::system::SystemSpec;
 
 use super::builtin;
 use super::error::PresetError;
@@ -180,6 +181,18 @@ impl Registry {
     pub fn scene_view(&self, name_or_path: &str) -> Result<SceneView, PresetError> {
         let (origin, text) = self.source(name_or_path)?;
         Ok(scene_file::decode_view(&Document::parse(origin, &text)?)?)
+    }
+
+    /// The `[system]` table of a scene preset or scene file (after `overrides`), if it has one.
+    pub fn scene_system(
+        &self,
+        name_or_path: &str,
+        overrides: &[Override],
+    ) -> Result<Option<SystemSpec>, PresetError> {
+        let (origin, text) = self.source(name_or_path)?;
+        let mut doc = Document::parse(origin, &text)?;
+        overrides::apply(&mut doc, overrides, &self.catalog)?;
+        Ok(scene_file::decode_system(&doc)?)
     }
 
     /// `scene` with `overrides` applied, through the same path as a scene file.

@@ -28,7 +28,7 @@ fn describe(value: &Value) -> String {
 /// Strict typed reading of a [`Document`].
 pub(super) struct Decoder<'a> {
     pub(super) doc: &'a Document,
-    materials: &'a BTreeMap<String, Material>,
+    pub(super) materials: &'a BTreeMap<String, Material>,
 }
 
 impl Decoder<'_> {
@@ -152,8 +152,10 @@ impl Decoder<'_> {
         let body2 = self.body(root, "body2")?;
         let impact = self.impact(root)?;
         let assumed = self.assumed(root)?;
-        // Refused here too, so that a bad view is located in the file whoever reads the scene.
+        // Refused here too, so that a bad view or system is located in the file whoever reads the
+        // scene.
         self.view(root)?;
+        self.system(root)?;
         Ok(Scene {
             name,
             body1,

@@ -67,6 +67,15 @@ pub enum ValueIssue {
     /// A solver method that is neither `auto` nor an integrator's.
     #[error(transparent)]
     UnknownMethod(#[from] UnknownMethod),
+    /// A name that is not one of the known ones (`system.kind`, `system.forcing`).
+    #[error("unknown value \"{name}\" (expected one of: {})", .known.join(", "))]
+    UnknownName {
+        name: String,
+        known: &'static [&'static str],
+    },
+    /// Two keys that exclude each other.
+    #[error("{0}")]
+    Conflict(&'static str),
     /// A number outside its range.
     #[error("must be {requirement}, got {value}")]
     OutOfRange {

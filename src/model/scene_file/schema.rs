@@ -9,6 +9,7 @@ pub(super) const SCENE_KEYS: &[&str] = &[
     "body2",
     "impact",
     "solver",
+    "system",
 ];
 /// Keys of `[body1]` and `[body2]`; which of radius/length are required depends on the shape.
 pub(super) const BODY_KEYS: &[&str] = &["shape", "radius", "length", "mass", "material"];
@@ -60,6 +61,8 @@ pub(crate) fn key_kind(path: &[&str]) -> Option<KeyKind> {
         }
         ["body1" | "body2", key] if BODY_KEYS.contains(key) => Some(KeyKind::Number),
         ["impact", key] if IMPACT_KEYS.contains(key) => Some(KeyKind::Number),
+        ["system", "kind" | "forcing"] => Some(KeyKind::Text),
+        ["system", key] if super::system::SYSTEM_KEYS.contains(key) => Some(KeyKind::Number),
         _ => None,
     }
 }

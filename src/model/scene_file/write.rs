@@ -5,6 +5,9 @@ use toml::Value;
 use crate::model::body::Shape;
 use crate::model::scene::Scene;
 
+use crate::model::system::SystemSpec;
+
+use super::system::system_table;
 use super::view::SceneView;
 
 /// A float as TOML text that reads back to exactly the same f64, in plain or exponent notation
@@ -40,6 +43,16 @@ pub fn to_toml_with_view(
     scene: &Scene,
     description: Option<&str>,
     view: Option<&SceneView>,
+) -> String {
+    to_toml_with_system(scene, description, view, None)
+}
+
+/// [`to_toml_with_view`] with the `[system]` table written too (a system scene round-trips).
+pub fn to_toml_with_system(
+    scene: &Scene,
+    description: Option<&str>,
+    view: Option<&SceneView>,
+    system: Option<&SystemSpec>,
 ) -> String {
     let mut out = String::new();
     let quote = |s: &str| Value::String(s.to_string()).to_string();
@@ -105,6 +118,10 @@ pub fn to_toml_with_view(
     if let Some(view) = view {
         out.push('\n');
         out.push_str(&view.solver_table());
+    }
+    if let Some(system) = system {
+        out.push('\n');
+        out.push_str(&system_table(system));
     }
     out
 }
