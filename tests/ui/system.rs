@@ -23,7 +23,7 @@ const DIAGRAM_VALUES: usize = 4;
 fn app_on(name: &str, width: u16, height: u16) -> App {
     let registry = Registry::builtin().unwrap();
     let scene = registry.scene(name).unwrap();
-    let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+    let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme::Dark);
     assert_eq!(app.preset.as_deref(), Some(name));
     // A small diagram: the tests run unoptimised, and every value is a run of both stops.
     app.views.system.settings.values = Some(DIAGRAM_VALUES);
