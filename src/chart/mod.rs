@@ -163,45 +163,110 @@ pub struct Chart {
     pub readout: Option<Readout>,
 }
 
-/// The data cursor's reading, in a long and a short form per curve, so that the renderer can fit
-/// it into its row without cutting a number.
+/// The data cursor's reading: where it stands and each curve's values there, with the curve's
+/// names from the longest to the shortest, so that the renderer can fit it without cutting a
+/// number or naming a curve by its glyph.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Readout {
     /// Where the cursor stands, e.g. `t = 59 µs`.
     pub at: String,
-    /// Per curve: the long reading (`proposed F 291.7 N`) and the short one (the curve's glyph
-    /// and its values in the axis's unit, `* 291.7`).
-    pub curves: Vec<(String, String)>,
+    pub curves: Vec<ReadoutCurve>,
+}
+
+/// One curve's reading at the data cursor.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReadoutCurve {
+    /// The curve's names, longest first (`Hunt–Crossley`, `hunt-crossley`, `H–C`); never empty.
+    pub names: Vec<String>,
+    pub ink: Ink,
+    /// Its values where the cursor stands, in the axis's unit, the most digits first:
+    /// `171.8 N`, or `171.8 / 150 N` where the curve passes twice (loading and unloading).
+    pub values: Vec<String>,
+}
+
+impl ReadoutCurve {
+    /// The name and the values of form `form`: the names shorten first, then the values; past
+    /// the last form, the shortest.
+    fn parts(&self, form: usize) -> (&str, &str) {
+        let names = self.names.len().max(1);
+        let name = self
+            .names
+            .get(form.min(names - 1))
+            .map_or("", String::as_str);
+        let values = form.saturating_sub(names - 1);
+        let value = self
+            .values
+            .get(values.min(self.values.len().saturating_sub(1)))
+            .map_or("", String::as_str);
+        (name, value)
+    }
+
+    /// Forms from the longest to the shortest.
+    fn forms(&self) -> usize {
+        self.names.len().max(1) + self.values.len().max(1) - 1
+    }
+
+    /// `name values` in form `form`: the names shorten first, then the values.
+    pub fn text(&self, form: usize) -> String {
+        let (name, value) = self.parts(form);
+        format!("{name} {value}")
+    }
+
+    /// Characters of the name in [`ReadoutCurve::text`].
+    pub fn name_len(&self, form: usize) -> usize {
+        self.parts(form).0.chars().count()
+    }
 }
 
 impl Readout {
-    /// The most explicit form that fits in `width` columns: every curve long; else every curve
-    /// short; else as many short readings as fit, then `+N` for the curves left out.
-    pub fn fit(&self, width: usize) -> String {
-        let join = |parts: Vec<&str>| {
-            std::iter::once(self.at.as_str())
-                .chain(parts)
+    /// Forms tried, longest first (names, then values, shorten).
+    pub fn forms(&self) -> usize {
+        self.curves
+            .iter()
+            .map(ReadoutCurve::forms)
+            .max()
+            .unwrap_or(1)
+    }
+
+    /// The reading on one line of `width` columns, every curve named alike in the longest form
+    /// that fits (`t = 59 µs · proposed 171.8 N · H–C 181.2 N`), and its name form; `None` when
+    /// not even the shortest names fit.
+    pub fn line(&self, width: usize) -> Option<(String, usize)> {
+        (0..self.forms()).find_map(|form| {
+            let text = std::iter::once(self.at.clone())
+                .chain(self.curves.iter().map(|c| c.text(form)))
                 .collect::<Vec<_>>()
-                .join(" · ")
+                .join(" · ");
+            (text.chars().count() <= width).then_some((text, form))
+        })
+    }
+
+    /// The reading as rows of a box `width` columns wide: where the cursor stands, then one row
+    /// per curve, named alike in the longest form with which every row fits; a row that still
+    /// does not fit ends in `…`. The name form is returned with the rows.
+    pub fn rows(&self, width: usize) -> (Vec<String>, usize) {
+        let fits = |form: usize| {
+            self.curves
+                .iter()
+                .all(|c| c.text(form).chars().count() <= width)
         };
-        let long = join(self.curves.iter().map(|c| c.0.as_str()).collect());
-        if long.chars().count() <= width {
-            return long;
-        }
-        let short = join(self.curves.iter().map(|c| c.1.as_str()).collect());
-        if short.chars().count() <= width {
-            return short;
-        }
-        for shown in (0..self.curves.len()).rev() {
-            let more = format!("+{}", self.curves.len() - shown);
-            let mut parts: Vec<&str> = self.curves[..shown].iter().map(|c| c.1.as_str()).collect();
-            parts.push(&more);
-            let text = join(parts);
+        let form = (0..self.forms())
+            .find(|&f| fits(f))
+            .unwrap_or(self.forms() - 1);
+        let cut = |text: String| {
             if text.chars().count() <= width {
-                return text;
+                text
+            } else {
+                let mut kept: String = text.chars().take(width.saturating_sub(1)).collect();
+                kept.push('…');
+                kept
             }
-        }
-        self.at.clone()
+        };
+        let rows = std::iter::once(self.at.clone())
+            .chain(self.curves.iter().map(|c| c.text(form)))
+            .map(cut)
+            .collect();
+        (rows, form)
     }
 }
 
@@ -230,29 +295,62 @@ pub const REFERENCE_GLYPH: char = '=';
 mod tests {
     use super::*;
 
+    fn curve(names: [&str; 3], values: &str) -> ReadoutCurve {
+        ReadoutCurve {
+            names: names.iter().map(|n| n.to_string()).collect(),
+            ink: Ink::Foreground,
+            values: vec![values.into()],
+        }
+    }
+
+    /// On one line while it fits, the curves named alike in the longest form that fits; else in
+    /// rows, each named, with its values whole: never a glyph for a name, never `+N`.
     #[test]
-    fn a_readout_shortens_whole_readings_and_never_cuts_one() {
+    fn a_readout_names_every_curve_and_shows_every_value() {
         let readout = Readout {
             at: "t = 59 µs".into(),
             curves: vec![
-                ("proposed F 171.8 N".into(), "*171.8".into()),
-                ("H–C F 181.2 N".into(), "x181.2".into()),
-                ("L–N F 201.6 N".into(), "#201.6".into()),
+                curve(["proposed", "proposed", "prop"], "171.8 N"),
+                curve(["Hunt–Crossley", "hunt-crossley", "H–C"], "181.2 N"),
+                curve(
+                    ["Lankarani–Nikravesh", "lankarani-nikravesh", "L–N"],
+                    "201.6 N",
+                ),
             ],
         };
-        let long = "t = 59 µs · proposed F 171.8 N · H–C F 181.2 N · L–N F 201.6 N";
-        assert_eq!(readout.fit(80), long);
-        assert_eq!(readout.fit(long.chars().count()), long);
-        let short = "t = 59 µs · *171.8 · x181.2 · #201.6";
-        assert_eq!(readout.fit(long.chars().count() - 1), short);
-        assert_eq!(readout.fit(short.chars().count()), short);
+        let long =
+            "t = 59 µs · proposed 171.8 N · Hunt–Crossley 181.2 N · Lankarani–Nikravesh 201.6 N";
+        assert_eq!(readout.line(100), Some((long.to_string(), 0)));
+        let short = "t = 59 µs · prop 171.8 N · H–C 181.2 N · L–N 201.6 N";
         assert_eq!(
-            readout.fit(short.chars().count() - 1),
-            "t = 59 µs · *171.8 · x181.2 · +1"
+            readout.line(short.chars().count()),
+            Some((short.to_string(), 2))
         );
-        assert_eq!(readout.fit(23), "t = 59 µs · *171.8 · +2");
-        assert_eq!(readout.fit(22), "t = 59 µs · +3");
-        assert_eq!(readout.fit(5), "t = 59 µs");
+        assert_eq!(readout.line(short.chars().count() - 1), None);
+        let (rows, form) = readout.rows(30);
+        assert_eq!(form, 0);
+        assert_eq!(
+            rows,
+            [
+                "t = 59 µs",
+                "proposed 171.8 N",
+                "Hunt–Crossley 181.2 N",
+                "Lankarani–Nikravesh 201.6 N"
+            ]
+        );
+        let (rows, form) = readout.rows(12);
+        assert_eq!((rows[2].as_str(), form), ("H–C 181.2 N", 2));
+        // Too narrow for any name and value: cut with `…`, never silently.
+        let (rows, _) = readout.rows(8);
+        assert_eq!(rows[1], "prop 17…");
+        // Fewer digits before a cut.
+        let mut two = readout.clone();
+        two.curves[0].values = vec![
+            "0.08134 / -0.07435 m/s".into(),
+            "0.0813 / -0.0744 m/s".into(),
+        ];
+        let (rows, form) = two.rows(25);
+        assert_eq!((rows[1].as_str(), form), ("prop 0.0813 / -0.0744 m/s", 3));
     }
 
     #[test]

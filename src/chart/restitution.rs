@@ -4,7 +4,7 @@
 
 use crate::chart::ticks::{NiceAxis, log_axis, nice_axis};
 use crate::chart::{Chart, Ink, Rule, Series, model_glyph};
-use crate::format::units::{DIMENSIONLESS, METRE_PER_SECOND};
+use crate::format::units::{DIMENSIONLESS, METRE_PER_SECOND, engineering};
 use crate::model::ForceModel;
 use crate::model::pressure::YieldOnset;
 use crate::model::study::runner::RestitutionData;
@@ -99,7 +99,12 @@ pub fn velocity_chart(
     }
     let unit = format!("{}{}", x.prefix.symbol, METRE_PER_SECOND.symbol);
     Chart {
-        title: "e_out against v₀, damping coefficient held (α for Hunt–Crossley)".to_string(),
+        // The damping set from e at the scene's v₀ and held (view 4's sweep re-derives it at each
+        // v₀ instead, where Hunt–Crossley's e_out is flat).
+        title: format!(
+            "e_out against v₀ · damping set at v₀ = {} and held (α for Hunt–Crossley)",
+            engineering(data.v0, METRE_PER_SECOND, 3)
+        ),
         series: series(&data.velocity, focused, &x, &y),
         x: x.chart_axis(format!("v₀ [{unit}]")),
         y: y.chart_axis("e_out".to_string()),

@@ -322,8 +322,10 @@ pub fn chart(
     }
     let symbol = key_symbol(spec.key);
     Chart {
+        // Each point is a scene of its own: every law's damping is set from e by its rule there
+        // (view 5 holds it instead, and its e_out against v₀ falls where this one is flat).
         title: format!(
-            "{} against {} · {} points, {}",
+            "{} against {} · damping from e at each {symbol} · {} points, {}",
             output.symbol(),
             symbol,
             spec.points,

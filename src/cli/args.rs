@@ -258,12 +258,20 @@ pub struct SweepArgs {
 pub struct TranslateArgs {
     #[command(flatten)]
     pub source: SceneSelection,
-    /// The engine: drake, simbody, chrono, liggghts, lammps, lammps-tsuji, yade, adams, mujoco.
+    /// The engine: drake, drake-sap, simbody, chrono, liggghts, lammps, lammps-tsuji, yade, adams,
+    /// mujoco.
     #[arg(long, value_name = "ENGINE")]
     pub engine: String,
     /// Output format.
     #[arg(long, value_enum, default_value_t = TranslateFormat::Text)]
     pub format: TranslateFormat,
+    /// Also write the engine's runnable script to FILE (run it as the output says).
+    #[arg(long, value_name = "FILE")]
+    pub script: Option<std::path::PathBuf>,
+    /// Relative tolerance the printed time step keeps on e, F_max and the contact time (default
+    /// 0.01).
+    #[arg(long, value_name = "T", default_value_t = crate::model::engine::run::DEFAULT_TOLERANCE)]
+    pub tolerance: f64,
 }
 
 /// How `translate` prints its result.

@@ -74,14 +74,21 @@ fn scene_section(scene: &Scene) -> String {
         vec![
             "impact".to_string(),
             format!(
-                "v0 = {}, e = {}, x_pl = {}",
+                "v0 = {}, e = {}{}, x_pl = {}{}",
                 compact(i.v0, "m/s"),
                 exact_number(i.restitution),
-                compact(i.plastic_indentation, "m")
+                assumed(scene.assumed.restitution),
+                compact(i.plastic_indentation, "m"),
+                assumed(scene.assumed.plastic_indentation)
             ),
         ],
     ];
     format!("Scene: {}\n{}", scene.name, columns(&rows, "  "))
+}
+
+/// Said after a value the scene's user did not give (a preset's stand-in).
+fn assumed(is: bool) -> &'static str {
+    if is { " (assumed)" } else { "" }
 }
 
 fn row(label: &str, value: String, note: &str) -> Vec<String> {

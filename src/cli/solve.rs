@@ -240,8 +240,8 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
     Ok(SolveReport {
         recommendation: RecommendationRow {
             model: advice.model,
+            why: recommendation::why(&advice, &scene),
             fits: advice.fits,
-            why: recommendation::why(&advice.reason),
         },
         scene,
         quasistatic,

@@ -1,12 +1,13 @@
 //! Text shared by the command line and the explorer: numbers in engineering notation
 //! ([`engineering`], [`significant`], [`scientific`], [`round_trip`]), the trajectory CSV
-//! ([`csv`]), an engine translation ([`translation`]) and the model's recommendation
+//! ([`csv`]) and the sweep CSV ([`sweep_csv`]), an engine translation ([`translation`]) and the model's recommendation
 //! ([`recommendation`]). Neither `cli` nor `ui` keeps its own copy.
 
 pub mod csv;
 mod number;
 pub mod recommendation;
 mod shortest_exp;
+pub mod sweep_csv;
 pub mod translation;
 pub mod units;
 pub mod verdict;

@@ -1,7 +1,13 @@
 //! The model's recommendation ([`Reason`]) in words: the gist for narrow panes and the one-line
 //! reason, for the explorer's regime pane and `solve`'s report alike.
 
-use crate::model::recommend::{HysteresisChoice, RESTITUTION_TOLERANCE, Reason};
+use crate::format::units::{METRE, NEWTON, PASCAL, engineering};
+use crate::model::body::{Body, Shape};
+use crate::model::pressure::Regime;
+use crate::model::recommend::{
+    HysteresisChoice, Outcome, RESTITUTION_TOLERANCE, Reason, Recommendation, Yielding,
+};
+use crate::model::scene::Scene;
 
 /// The gist of `reason`, for narrow screens.
 pub fn gist(reason: &Reason) -> &'static str {
@@ -9,7 +15,7 @@ pub fn gist(reason: &Reason) -> &'static str {
         Reason::Lossless => "nothing yields or is lost",
         Reason::NoYieldNoDent { .. } => "no yield, no dent",
         Reason::NoYieldLossesLikely => "no yield; losses likely",
-        Reason::FullyPlastic => "beyond Hertz: all extrapolate",
+        Reason::FullyPlastic => "fully plastic: yield from σ_y",
         Reason::DentKept => "yield begins, a dent is kept",
         Reason::LossWithoutDent => "loss without a dent",
         Reason::SmallLosses(_) => "small losses",
@@ -17,9 +23,19 @@ pub fn gist(reason: &Reason) -> &'static str {
     }
 }
 
-/// Why, in one line.
-pub fn why(reason: &Reason) -> String {
-    match reason {
+/// Why, in one line: the clauses of [`why_clauses`] joined.
+pub fn why(advice: &Recommendation, scene: &Scene) -> String {
+    why_clauses(advice, scene).join("; ")
+}
+
+/// Why, clause by clause, the most needed first: the case of the guidance with the numbers that
+/// decided it and the body that yields; which inputs were assumed rather than given; what the
+/// recommended law (and, once the contact yields, Thornton's) realises on the scene.
+pub fn why_clauses(advice: &Recommendation, scene: &Scene) -> Vec<String> {
+    let e = advice.restitution;
+    let x_pl = advice.plastic_indentation;
+    let who = yielding_body(advice, scene);
+    let mut clauses: Vec<String> = vec![match &advice.reason {
         Reason::Lossless => "p₀ < 1.1·σ_y and e = 1: nothing yields and nothing is lost, elastic \
                              Hertz (eq 1) is the whole story"
             .into(),
@@ -32,28 +48,147 @@ pub fn why(reason: &Reason) -> String {
                                         v₀ > 10⁻⁵·√(E/ρ): expect losses, which the dissipative \
                                         models (eqs 15, 19, 20) carry"
             .into(),
-        Reason::FullyPlastic => "p₀ ≥ 2.8·σ_y: fully plastic, beyond Hertz theory: every model \
-                                 extrapolates; the proposed model (eq 18), with its permanent \
-                                 indentation, least"
-            .into(),
-        Reason::DentKept => "p₀ ≥ 1.1·σ_y: yield begins and the given x_pl > 0 says the surface \
-                             keeps a dent: the proposed model (eq 18, §4.2) leaves it and exits \
-                             near v₀e"
-            .into(),
-        Reason::LossWithoutDent => "p₀ ≥ 1.1·σ_y, but v₀ ≤ 10⁻⁵·√(E/ρ) and x_pl = 0: energy is \
-                                    lost without a dent, as dry friction (eq 15, §4.1) models it"
-            .into(),
+        Reason::FullyPlastic => format!(
+            "p₀ ≥ 2.8·σ_y of {who}: fully plastic, beyond Hertz theory, and no dent given; \
+             Thornton's elastic–plastic law models the yield from σ_y"
+        ),
+        Reason::DentKept => format!(
+            "p₀ ≥ {}·σ_y of {who}: {}; the given x_pl = {} keeps a dent, which the proposed \
+             model (eq 18, §4.2) leaves",
+            onset_factor(advice),
+            regime_words(advice),
+            length(x_pl)
+        ),
+        Reason::LossWithoutDent => format!(
+            "p₀ ≥ 1.1·σ_y of {who}: yield begins, but v₀ ≤ 10⁻⁵·√(E/ρ) and no dent given: \
+             energy is lost without a dent, as dry friction (eq 15, §4.1) models it"
+        ),
         Reason::SmallLosses(choice) => format!(
-            "p₀ ≥ 1.1·σ_y with e close to 1 and x_pl = 0: small losses, which hysteresis \
-             damping was derived for; {}",
+            "p₀ ≥ {}·σ_y of {who}: {}, with e close to 1 and no dent given: small losses, \
+             which hysteresis damping was derived for; {}",
+            onset_factor(advice),
+            regime_words(advice),
             hysteresis_clause(choice)
         ),
         Reason::LargeLosses(choice) => format!(
-            "p₀ ≥ 1.1·σ_y and v₀ > 10⁻⁵·√(E/ρ) with e far from 1: {}; for the dent this regime \
-             leaves, give x_pl > 0 (the proposed model, eq 18)",
+            "p₀ ≥ {}·σ_y of {who}: {}, v₀ > 10⁻⁵·√(E/ρ) with e far from 1 and no dent \
+             given: {}; for the dent this regime leaves, give x_pl > 0 (the proposed model, eq 18)",
+            onset_factor(advice),
+            regime_words(advice),
             hysteresis_clause(choice)
         ),
+    }];
+    if advice.assumed.plastic_indentation && x_pl > 0.0 && advice.regime != Regime::Elastic {
+        clauses.push(format!(
+            "x_pl = {} was not given (a stand-in): nothing here rests on it; give \
+             impact.plastic_indentation for the dent",
+            length(x_pl)
+        ));
     }
+    if advice.assumed.restitution && e < 1.0 {
+        clauses.push(format!(
+            "e = {} was not given (a stand-in): what rests on e rests on it",
+            short(e)
+        ));
+    }
+    if let Some(outcome) = advice.outcome {
+        clauses.extend(outcome_clause(advice, &outcome));
+    }
+    if let Some(thornton) = advice.thornton {
+        clauses.push(thornton_clause(advice, &thornton));
+    }
+    clauses
+}
+
+/// What the recommended law realises, where the reason does not already say it.
+fn outcome_clause(advice: &Recommendation, outcome: &Outcome) -> Option<String> {
+    let e = advice.restitution;
+    let name = outcome.model.label();
+    match advice.reason {
+        Reason::DentKept if outcome.realises(e) => Some(format!(
+            "{name} realises e = {} for e = {} and leaves x_res = {}",
+            short(outcome.e_out),
+            short(e),
+            length(outcome.x_residual)
+        )),
+        Reason::DentKept => Some(format!(
+            "{name} realises e = {} for e = {} ({:+.0} %, not within {} %): to realise e, \
+             calibrate b (C, solve --calibrate) or give the x_pl measured with this e",
+            short(outcome.e_out),
+            short(e),
+            (outcome.e_out / e - 1.0) * 100.0,
+            RESTITUTION_TOLERANCE * 100.0
+        )),
+        Reason::LossWithoutDent => Some(format!(
+            "{name} realises e = {} for e = {}",
+            short(outcome.e_out),
+            short(e)
+        )),
+        _ => None,
+    }
+}
+
+/// Thornton's outcome beside elastic Hertz's peak, and against the scene's e.
+fn thornton_clause(advice: &Recommendation, thornton: &Outcome) -> String {
+    let e = advice.restitution;
+    let mut clause = format!(
+        "{} (yield from σ_y, not from e) gives F_max = {} and e = {} (elastic Hertz: F_max = {})",
+        thornton.model.label(),
+        force(thornton.f_max),
+        short(thornton.e_out),
+        force(advice.hertz_f_max)
+    );
+    if !thornton.realises(e) {
+        clause.push_str(&format!(
+            ", not the scene's e = {}: to impose e, calibrate its v_y (C, solve --calibrate)",
+            short(e)
+        ));
+    }
+    clause
+}
+
+/// The yield-onset factor of the regime: 2.8 fully plastic, else 1.1.
+fn onset_factor(advice: &Recommendation) -> &'static str {
+    match advice.regime {
+        Regime::FullyPlastic => "2.8",
+        _ => "1.1",
+    }
+}
+
+fn regime_words(advice: &Recommendation) -> &'static str {
+    match advice.regime {
+        Regime::FullyPlastic => "fully plastic, beyond Hertz theory",
+        _ => "yield begins",
+    }
+}
+
+/// The body that yields (the softer), named with its material and σ_y: "body 2, the
+/// aluminium-alloy plate (σ_y = 340 MPa)", or both.
+fn yielding_body(advice: &Recommendation, scene: &Scene) -> String {
+    let stress = engineering(advice.yield_stress, PASCAL, 3);
+    let body = |n: u8, body: &Body| {
+        let shape = match body.shape {
+            Shape::Plane => "plate".to_string(),
+            other => other.name().to_string(),
+        };
+        format!(
+            "body {n}, the {} {shape} (σ_y = {stress})",
+            body.material.name
+        )
+    };
+    match advice.yielding {
+        Yielding::Body1 => body(1, &scene.body1),
+        Yielding::Body2 => body(2, &scene.body2),
+        Yielding::Both => format!("both bodies (σ_y {stress})"),
+    }
+}
+
+fn length(x: f64) -> String {
+    engineering(x, METRE, 3)
+}
+
+fn force(f: f64) -> String {
+    engineering(f, NEWTON, 3)
 }
 
 /// The clause naming the hysteresis law chosen and the e it realises, or the calibration.
@@ -104,7 +239,7 @@ mod tests {
             ..fig5_scene()
         };
         let q = scene.quasistatic().unwrap();
-        why(&recommend(&scene, &q).reason)
+        why(&recommend(&scene, &q), &scene)
     }
 
     #[test]
@@ -119,10 +254,18 @@ mod tests {
         // Hunt–Crossley's own rule realises 0.9524 for e = 0.95, within 2 %.
         assert!(
             why_at(0.2, 0.95, 0.0)
-                .ends_with("; Hunt–Crossley (eq 19) realises e = 0.952 for e = 0.95 (within 2 %)"),
+                .contains("; Hunt–Crossley (eq 19) realises e = 0.952 for e = 0.95 (within 2 %); "),
             "{}",
             why_at(0.2, 0.95, 0.0)
         );
+        // Once the contact yields, Thornton's law is solved beside, and the body that yields named.
+        assert!(
+            why_at(0.2, 0.95, 0.0)
+                .contains("of both bodies (σ_y 780 MPa): yield begins, with e close to 1"),
+            "{}",
+            why_at(0.2, 0.95, 0.0)
+        );
+        assert!(why_at(0.2, 0.95, 0.0).contains("Thornton 1997 (yield from σ_y, not from e)"));
         assert!(why_at(0.2, 0.3, 0.0).contains("give x_pl > 0"));
         // No rule realises 0.5: Hunt–Crossley calibrated, χ = 1.4328.
         assert!(
@@ -133,6 +276,13 @@ mod tests {
             why_at(0.2, 0.5, 0.0)
         );
         assert!(why_at(1.0, 0.6, 2.3e-6).contains("beyond Hertz"));
+        // Fully plastic without a dent: Thornton, never the proposed model's dent.
+        let plastic = why_at(1.0, 0.6, 0.0);
+        assert!(
+            plastic.contains("Thornton's elastic–plastic law models the yield"),
+            "{plastic}"
+        );
+        assert!(!plastic.contains("indentation"), "{plastic}");
     }
 
     #[test]

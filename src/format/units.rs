@@ -33,6 +33,9 @@ pub struct Unit {
     pub si_per_unit: f64,
     /// Whether engineering prefixes are shown on output (not for kg/m³).
     pub prefixable: bool,
+    /// Other units of the same quantity accepted on input, with the SI value of one of them
+    /// (`km/h`, `g/cm³`).
+    pub others: &'static [(&'static str, f64)],
 }
 
 pub const DIMENSIONLESS: Unit = Unit {
@@ -40,42 +43,49 @@ pub const DIMENSIONLESS: Unit = Unit {
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: false,
+    others: &[],
 };
 pub const METRE: Unit = Unit {
     symbol: "m",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: true,
+    others: &[],
 };
 pub const SECOND: Unit = Unit {
     symbol: "s",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: true,
+    others: &[],
 };
 pub const GRAM: Unit = Unit {
     symbol: "g",
     aliases: &[],
     si_per_unit: 1e-3,
     prefixable: true,
+    others: &[],
 };
 pub const NEWTON: Unit = Unit {
     symbol: "N",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: true,
+    others: &[],
 };
 pub const PASCAL: Unit = Unit {
     symbol: "Pa",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: true,
+    others: &[("N/mm²", 1e6), ("N/mm2", 1e6)],
 };
 pub const JOULE: Unit = Unit {
     symbol: "J",
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: true,
+    others: &[],
 };
 /// Velocities read best in m/s at impact speeds, so they are shown without a prefix.
 pub const METRE_PER_SECOND: Unit = Unit {
@@ -83,12 +93,14 @@ pub const METRE_PER_SECOND: Unit = Unit {
     aliases: &[],
     si_per_unit: 1.0,
     prefixable: false,
+    others: &[("km/h", 1.0 / 3.6)],
 };
 pub const KG_PER_CUBIC_METRE: Unit = Unit {
     symbol: "kg/m³",
     aliases: &["kg/m3", "kg/m^3"],
     si_per_unit: 1.0,
     prefixable: false,
+    others: &[("g/cm³", 1e3), ("g/cm3", 1e3), ("g/cc", 1e3)],
 };
 
 /// Parses `text` as a quantity of `unit` and returns its SI value.
@@ -139,11 +151,15 @@ fn suffix_factor(suffix: &str, unit: Unit) -> Result<f64, String> {
         if suffix == symbol {
             return Ok(unit.si_per_unit);
         }
+        // Centi only on a unit (`cm`, `cm/s`): a bare `c` would be a surprise.
         if let Some(head) = suffix.strip_suffix(symbol)
-            && let Some(factor) = input_prefix(head)
+            && let Some(factor) = input_prefix(head).or((head == "c").then_some(1e-2))
         {
             return Ok(factor * unit.si_per_unit);
         }
+    }
+    if let Some(&(_, si)) = unit.others.iter().find(|(other, _)| *other == suffix) {
+        return Ok(si);
     }
     if let Some(factor) = input_prefix(suffix) {
         return Ok(factor);
@@ -154,10 +170,15 @@ fn suffix_factor(suffix: &str, unit: Unit) -> Result<f64, String> {
     let expected = if unit.symbol.is_empty() {
         "no unit".to_string()
     } else {
-        format!("{} or a bare number in SI", unit.symbol)
+        let others: Vec<&str> = unit.others.iter().map(|(o, _)| *o).collect();
+        let others = match others.first() {
+            Some(_) => format!(", {}", others.join(", ")),
+            None => String::new(),
+        };
+        format!("{}{others} or a bare number in SI", unit.symbol)
     };
     Err(format!(
-        "unknown unit '{suffix}' (expected {expected}, with an optional prefix f p n µ m k M G T)"
+        "unknown unit '{suffix}' (expected {expected}, with an optional prefix f p n µ m c k M G T)"
     ))
 }
 
@@ -353,6 +374,41 @@ mod tests {
         assert!(close(parse("7.8k", KG_PER_CUBIC_METRE).unwrap(), 7800.0));
         assert!(close(parse("60%", DIMENSIONLESS).unwrap(), 0.6));
         assert!(close(parse("1.5 fm", METRE).unwrap(), 1.5e-15));
+    }
+
+    /// Every common way to type a length, a speed, a density or a stress, as a user would.
+    #[test]
+    fn common_units_of_lengths_speeds_densities_and_stresses() {
+        for (text, si) in [
+            ("2 cm", 0.02),
+            ("2cm", 0.02),
+            ("20 mm", 0.02),
+            ("20000 µm", 0.02),
+            ("20000um", 0.02),
+            ("0.02 m", 0.02),
+            ("0.02", 0.02),
+        ] {
+            assert!(close(parse(text, METRE).unwrap(), si), "{text}");
+        }
+        for (text, si) in [
+            ("100 cm/s", 1.0),
+            ("3.6 km/h", 1.0),
+            ("1000 mm/s", 1.0),
+            ("1 m/s", 1.0),
+        ] {
+            assert!(close(parse(text, METRE_PER_SECOND).unwrap(), si), "{text}");
+        }
+        for text in ["7.8 g/cm³", "7.8 g/cm3", "7.8 g/cc", "7800 kg/m³"] {
+            assert!(
+                close(parse(text, KG_PER_CUBIC_METRE).unwrap(), 7800.0),
+                "{text}"
+            );
+        }
+        assert!(close(parse("620 N/mm²", PASCAL).unwrap(), 6.2e8));
+        // Centi only on a unit: a bare `c` is not a length.
+        assert!(parse("2 c", METRE).is_err());
+        let refused = parse("3 km/s/h", METRE_PER_SECOND).unwrap_err();
+        assert!(refused.contains("km/h"), "the others are named: {refused}");
         assert!(close(parse(" -1.5E-3 ", DIMENSIONLESS).unwrap(), -1.5e-3));
     }
 

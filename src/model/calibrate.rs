@@ -9,6 +9,7 @@
 
 use thiserror::Error;
 
+use super::error::ModelError;
 use super::exact::special::{unloading_root, y_minus_log1p};
 use super::force::table::Family;
 use super::force::thornton::Thornton;
@@ -148,19 +149,29 @@ pub fn hunt_crossley_chi(e: f64) -> Option<f64> {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn calibrate(model: ForceModel, params: &ImpactParams) -> Result<Calibrated, CalibrationError> {
+    calibrate_with(model, params, |d| model.law_with_damping(params, d))
+}
+
+/// [`calibrate`] with the law of `model`'s row built by `law_with` from the damping value, for a
+/// law whose other constants are not the row builder's own (an engine's printed stiffness or
+/// Adams' printed depth d, src/model/engine): the damping found is the one that realises e with
+/// those constants.
+pub fn calibrate_with(
+    model: ForceModel,
+    params: &ImpactParams,
+    law_with: impl Fn(f64) -> Result<AnyLaw, ModelError>,
+) -> Result<Calibrated, CalibrationError> {
     let target = params.restitution;
     let Some(param) = model.spec().damping else {
         return Err(CalibrationError::NoDamping(model));
     };
     let build = |d: f64| {
-        model
-            .law_with_damping(params, d)
-            .map_err(|e| CalibrationError::Solve {
-                model,
-                symbol: param.symbol,
-                damping: d,
-                source: ImpactError::InvalidInput(e),
-            })
+        law_with(d).map_err(|e| CalibrationError::Solve {
+            model,
+            symbol: param.symbol,
+            damping: d,
+            source: ImpactError::InvalidInput(e),
+        })
     };
     if model.spec().family == Family::HuntCrossley {
         let chi = hunt_crossley_chi(target).ok_or(CalibrationError::Unreachable {

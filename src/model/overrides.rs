@@ -106,8 +106,24 @@ pub fn apply(
     for o in overrides {
         apply_one(doc, o, materials)?;
         doc.mark_overridden(&o.key);
+        if let Some(key) = o.key.strip_prefix("impact.") {
+            given(doc.table_mut(), key);
+        }
     }
     Ok(())
+}
+
+/// Drops `key` from `[impact]`'s `assumed` list: a value set by `--set` is given, not assumed.
+fn given(root: &mut Table, key: &str) {
+    let Some(Value::Table(impact)) = root.get_mut("impact") else {
+        return;
+    };
+    if let Some(Value::Array(assumed)) = impact.get_mut("assumed") {
+        assumed.retain(|k| k.as_str() != Some(key));
+        if assumed.is_empty() {
+            impact.remove("assumed");
+        }
+    }
 }
 
 fn bad_value(key: &str, problem: ValueProblem) -> OverrideError {

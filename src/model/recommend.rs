@@ -1,21 +1,32 @@
 //! The simplest force model adequate for a scene, and why (the paper's §2, §4 and conclusion).
 //!
-//! The quasistatic estimate places v₀ against the yield-onset velocities (p₀ = 1.1·σ_y and 2.8·σ_y)
-//! and the wave criterion v₀ ≤ 10⁻⁵·√(E/ρ); the impact conditions say whether losses (e < 1) and a
-//! permanent indentation (x_pl > 0) are to be modelled. From these the paper's guidance follows:
-//! elastic Hertz while nothing yields; dry friction (§4.1) for very low speeds that lose energy
-//! without a dent; the proposed viscous model (§4.2) where a dent is expected; the Hunt–Crossley and
-//! Lankarani–Nikravesh hysteresis models where e is close to 1, the small losses they were derived
-//! for (at e = 0.6 both overshoot v₀e, Fig. 5). Where losses are to be modelled without a dent,
-//! the law of the Hunt–Crossley family whose χ(e) rule really realises e (within
-//! [`RESTITUTION_TOLERANCE`], by the exact relation of docs/physics.md §6.4) is preferred, the
-//! paper's two first; where none does, Hunt–Crossley calibrated.
-
+//! The quasistatic estimate places v₀ against the yield-onset velocities (p₀ = 1.1·σ_y and 2.8·σ_y
+//! of the softer body, the one that yields) and the wave criterion v₀ ≤ 10⁻⁵·√(E/ρ); the impact
+//! conditions say whether losses (e < 1) and a permanent indentation (x_pl > 0) are to be
+//! modelled. From these the paper's guidance follows: elastic Hertz while nothing yields; dry
+//! friction (§4.1) for very low speeds that lose energy without a dent; the proposed viscous model
+//! (§4.2) where a dent is given; the Hunt–Crossley and Lankarani–Nikravesh hysteresis models where
+//! e is close to 1, the small losses they were derived for (at e = 0.6 both overshoot v₀e, Fig. 5).
+//! Where losses are to be modelled without a dent, the law of the Hunt–Crossley family whose χ(e)
+//! rule really realises e (within [`RESTITUTION_TOLERANCE`], by the exact relation of
+//! docs/physics.md §6.4) is preferred, the paper's two first; where none does, Hunt–Crossley
+//! calibrated. Once the contact yields, Thornton's elastic–plastic law (docs/physics.md §6.6),
+//! which takes its yield from σ_y and not from e, is solved beside them; fully plastic without a
+//! given dent, it is the law recommended, the one that models the yield at all.
+//!
+//! A value the scene's user did not give ([`Assumed`]) is said to be assumed: an assumed x_pl is
+//! never the ground of a recommendation, and a choice resting on an assumed e says so. What the
+//! recommendation says a law realises is that law solved on the scene with the solver's default
+//! options, the numbers `solve`'s table shows.
 use crate::model::calibrate::{hunt_crossley_chi, hunt_crossley_restitution};
-use crate::model::force::ForceModel;
+use crate::model::force::{ForceModel, ImpactParams};
+use crate::model::impact::{SolveOptions, solve_impact};
 use crate::model::pressure::Regime;
 use crate::model::quasistatic::Quasistatic;
-use crate::model::scene::Scene;
+use crate::model::scene::{Assumed, Scene};
+
+/// Thornton's elastic–perfectly-plastic law (docs/physics.md §6.6).
+const THORNTON: ForceModel = ForceModel::with_id("thornton");
 
 /// Restitution from which losses count as small: the hysteresis models (eqs 19–20) assume them.
 pub const NEAR_ELASTIC_RESTITUTION: f64 = 0.9;
@@ -87,6 +98,67 @@ fn hysteresis_choice(e: f64) -> (HysteresisChoice, Vec<ForceModel>) {
     }
 }
 
+/// Which body yields first: the one of lower σ_y (docs/physics.md §6.6, the paper's §2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Yielding {
+    /// Body 1's σ_y is the lower.
+    Body1,
+    /// Body 2's σ_y is the lower.
+    Body2,
+    /// Both have the same σ_y.
+    Both,
+}
+
+impl Yielding {
+    /// The body of `scene` whose σ_y sets the yield onset.
+    pub fn of(scene: &Scene) -> Self {
+        let (s1, s2) = (
+            scene.body1.material.yield_stress,
+            scene.body2.material.yield_stress,
+        );
+        if s1 < s2 {
+            Yielding::Body1
+        } else if s2 < s1 {
+            Yielding::Body2
+        } else {
+            Yielding::Both
+        }
+    }
+}
+
+/// A law solved on the scene (default solver options): the numbers `solve`'s table shows for it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome {
+    /// The law.
+    pub model: ForceModel,
+    /// Realised restitution v_out/v₀.
+    pub e_out: f64,
+    /// Peak force, N.
+    pub f_max: f64,
+    /// Approach left when contact ends, m.
+    pub x_residual: f64,
+}
+
+impl Outcome {
+    /// `model` solved on `params` with the default options; `None` where the solve fails.
+    pub fn solve(model: ForceModel, params: &ImpactParams) -> Option<Outcome> {
+        let summary = solve_impact(model, params, &SolveOptions::default())
+            .ok()?
+            .summary;
+        Some(Outcome {
+            model,
+            e_out: summary.e_out,
+            f_max: summary.f_max,
+            x_residual: summary.x_residual,
+        })
+    }
+
+    /// Whether it realises `e` within [`RESTITUTION_TOLERANCE`].
+    pub fn realises(&self, e: f64) -> bool {
+        (self.e_out / e - 1.0).abs() <= RESTITUTION_TOLERANCE
+    }
+}
+
 /// Which case of the paper's guidance a scene falls in, with the numbers that decided it. The
 /// edges word it (`format::recommendation`); the model only decides.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -98,15 +170,18 @@ pub enum Reason {
     NoYieldNoDent { restitution: f64 },
     /// p₀ < 1.1·σ_y but v₀ > 10⁻⁵·√(E/ρ): losses are likely, carried by the dissipative models.
     NoYieldLossesLikely,
-    /// p₀ ≥ 2.8·σ_y: fully plastic, beyond Hertz theory; the proposed model extrapolates least.
+    /// p₀ ≥ 2.8·σ_y and no dent given: fully plastic, beyond Hertz theory; Thornton's law models
+    /// the yield from σ_y (its outcome is [`Recommendation::thornton`]).
     FullyPlastic,
-    /// p₀ ≥ 1.1·σ_y and x_pl > 0: the surface keeps a dent, the proposed model (eq 18) leaves it.
+    /// p₀ ≥ 1.1·σ_y and a given x_pl > 0: the surface keeps a dent, the proposed model (eq 18)
+    /// leaves it; [`Recommendation::outcome`] says whether it also realises e.
     DentKept,
-    /// p₀ ≥ 1.1·σ_y, v₀ ≤ 10⁻⁵·√(E/ρ) and x_pl = 0: loss without a dent, dry friction (eq 15).
+    /// p₀ ≥ 1.1·σ_y, v₀ ≤ 10⁻⁵·√(E/ρ), no dent given: loss without a dent, dry friction (eq 15).
     LossWithoutDent,
-    /// p₀ ≥ 1.1·σ_y, e ≥ [`NEAR_ELASTIC_RESTITUTION`], x_pl = 0: small losses, hysteresis damping.
+    /// p₀ ≥ 1.1·σ_y, e ≥ [`NEAR_ELASTIC_RESTITUTION`], no dent given: small losses, hysteresis
+    /// damping.
     SmallLosses(HysteresisChoice),
-    /// p₀ ≥ 1.1·σ_y, v₀ > 10⁻⁵·√(E/ρ), e far from 1, x_pl = 0: a law that realises e.
+    /// p₀ ≥ 1.1·σ_y, v₀ > 10⁻⁵·√(E/ρ), e far from 1, no dent given: a law that realises e.
     LargeLosses(HysteresisChoice),
 }
 
@@ -122,19 +197,44 @@ pub struct Recommendation {
     pub fits: Vec<ForceModel>,
     /// Why this model: the case of the guidance, with its numbers.
     pub reason: Reason,
+    /// The body whose σ_y sets the yield onset.
+    pub yielding: Yielding,
+    /// The σ_y of that body, Pa.
+    pub yield_stress: f64,
+    /// The recommended law solved on the scene (`None` if its solve failed).
+    pub outcome: Option<Outcome>,
+    /// Thornton's law solved on the scene once the contact yields (`None` below yield, or where
+    /// it does not apply).
+    pub thornton: Option<Outcome>,
+    /// Elastic Hertz's peak force (eq 6), N, for comparison with Thornton's.
+    pub hertz_f_max: f64,
+    /// The e and x_pl the recommendation was given, SI.
+    pub restitution: f64,
+    pub plastic_indentation: f64,
+    /// Which of them the user did not give.
+    pub assumed: Assumed,
 }
 
 /// The recommendation for `scene`, whose quasistatic estimate is `quasistatic`.
 pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
     let impact = &scene.impact;
     let (v0, e, x_pl) = (impact.v0, impact.restitution, impact.plastic_indentation);
+    let assumed = scene.assumed;
     let regime = quasistatic.regime(v0);
     let within_wave_limit = v0 <= quasistatic.onset.v_wave_limit;
     let lossless = e >= 1.0;
     let near_elastic = e >= NEAR_ELASTIC_RESTITUTION;
+    // An assumed x_pl is no ground for a dent (the proposed model would rest on it).
+    let dent_given = x_pl > 0.0 && !assumed.plastic_indentation;
     let hysteresis = [ForceModel::LankaraniNikravesh, ForceModel::HuntCrossley];
-    // Thornton's elastic–plastic law also leaves a dent, on spheres and cylinders (docs/physics.md §6.6).
-    let thornton = ForceModel::with_id("thornton");
+    let params = scene.impact_params(quasistatic);
+    // Thornton's elastic–plastic law takes its yield from σ_y (docs/physics.md §6.6): solved
+    // once the contact yields, as a check on the laws that take their loss from e.
+    let thornton = match regime {
+        Regime::Elastic => None,
+        Regime::YieldBegins | Regime::FullyPlastic => Outcome::solve(THORNTON, &params),
+    };
+    let thornton_fits: Vec<ForceModel> = thornton.iter().map(|t| t.model).collect();
     let (model, others, reason): (ForceModel, Vec<ForceModel>, Reason) = match regime {
         Regime::Elastic if lossless => (ForceModel::Quasistatic, Vec::new(), Reason::Lossless),
         Regime::Elastic if within_wave_limit => (
@@ -150,18 +250,21 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
                 .collect(),
             Reason::NoYieldLossesLikely,
         ),
-        Regime::FullyPlastic => (ForceModel::Proposed, Vec::new(), Reason::FullyPlastic),
-        Regime::YieldBegins if x_pl > 0.0 => (
+        _ if dent_given => (
             ForceModel::Proposed,
-            std::iter::once(thornton).chain(hysteresis).collect(),
+            thornton_fits.iter().copied().chain(hysteresis).collect(),
             Reason::DentKept,
         ),
+        Regime::FullyPlastic if thornton.is_some() => {
+            let (choice, _) = hysteresis_choice(e);
+            (THORNTON, vec![choice.model()], Reason::FullyPlastic)
+        }
         Regime::YieldBegins if within_wave_limit => (
             ForceModel::DryFriction,
-            hysteresis.to_vec(),
+            hysteresis.into_iter().chain(thornton_fits).collect(),
             Reason::LossWithoutDent,
         ),
-        Regime::YieldBegins => {
+        Regime::YieldBegins | Regime::FullyPlastic => {
             let (choice, others) = hysteresis_choice(e);
             let reason = if near_elastic {
                 Reason::SmallLosses(choice)
@@ -170,19 +273,48 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
             };
             (
                 choice.model(),
-                others.into_iter().chain([ForceModel::Proposed]).collect(),
+                // Not the proposed model: without a given x_pl its b is 0, elastic Hertz.
+                others.into_iter().chain(thornton_fits).collect(),
                 reason,
             )
         }
     };
-    let fits = std::iter::once(model).chain(others).collect();
+    let mut fits: Vec<ForceModel> = std::iter::once(model).chain(others).collect();
+    let mut seen = Vec::new();
+    fits.retain(|m| {
+        let new = !seen.contains(m);
+        seen.push(*m);
+        new
+    });
+    let outcome = match thornton {
+        Some(t) if t.model == model => Some(t),
+        _ => Outcome::solve(model, &params),
+    };
+    let yielding = Yielding::of(scene);
     Recommendation {
         regime,
         within_wave_limit,
         model,
         fits,
         reason,
+        yielding,
+        yield_stress: quasistatic_yield_stress(scene),
+        outcome,
+        thornton,
+        hertz_f_max: quasistatic.f_max,
+        restitution: e,
+        plastic_indentation: x_pl,
+        assumed,
     }
+}
+
+/// The lower σ_y of the two bodies, Pa: the one the onset velocities use.
+fn quasistatic_yield_stress(scene: &Scene) -> f64 {
+    scene
+        .body1
+        .material
+        .yield_stress
+        .min(scene.body2.material.yield_stress)
 }
 
 #[cfg(test)]
@@ -280,7 +412,8 @@ mod tests {
             "{:?}",
             lossy.reason
         );
-        assert!(lossy.fits.contains(&ForceModel::Proposed));
+        // Without a given x_pl the proposed model's b is 0: not a fit.
+        assert!(!lossy.fits.contains(&ForceModel::Proposed));
         // Where no rule is faithful (at 0.5 the nearest, Gonthier's and Hu–Guo's, give 0.488),
         // Hunt–Crossley calibrated.
         assert!(faithful_hysteresis_laws(0.5).is_empty());
@@ -299,10 +432,62 @@ mod tests {
 
     #[test]
     fn fully_plastic_impacts_are_beyond_hertz() {
-        let fast = at(1.0, 0.6, 2.3e-6);
-        assert_eq!(fast.regime, Regime::FullyPlastic);
-        assert_eq!(fast.fits, [ForceModel::Proposed]);
+        // A given dent: the proposed model, Thornton's law checked beside it.
+        let dent = at(1.0, 0.6, 2.3e-6);
+        assert_eq!(dent.regime, Regime::FullyPlastic);
+        assert_eq!(dent.reason, Reason::DentKept);
+        assert_eq!(dent.model, ForceModel::Proposed);
+        assert_eq!(dent.fits[1], THORNTON);
+        // No dent: Thornton's elastic–plastic law, which takes its yield from σ_y; its outcome is
+        // the law solved (docs/physics.md §6.6: e ≈ 1.185·(v_y/v₀)^{1/4} for large v₀).
+        let fast = at(1.0, 0.6, 0.0);
         assert_eq!(fast.reason, Reason::FullyPlastic);
+        assert_eq!(fast.model, THORNTON);
+        assert!(!fast.fits.contains(&ForceModel::Proposed));
+        let thornton = fast.thornton.unwrap();
+        assert_eq!(fast.outcome, Some(thornton));
+        let q = 0.032 / 1.0_f64;
+        assert!(
+            (thornton.e_out / (1.185 * q.powf(0.25)) - 1.0).abs() < 0.05,
+            "{thornton:?}"
+        );
+        assert!(thornton.f_max < fast.hertz_f_max);
+        assert_eq!(fast.yielding, Yielding::Both);
+    }
+
+    #[test]
+    fn an_assumed_dent_is_no_ground_for_the_proposed_model() {
+        let scene = Scene {
+            assumed: Assumed {
+                restitution: true,
+                plastic_indentation: true,
+            },
+            ..steel_scene(0.3, 0.6, 2.3e-6)
+        };
+        let advice = recommend(&scene, &scene.quasistatic().unwrap());
+        assert_ne!(advice.model, ForceModel::Proposed);
+        assert!(
+            matches!(advice.reason, Reason::LargeLosses(_)),
+            "{:?}",
+            advice.reason
+        );
+        assert!(advice.assumed.restitution && advice.assumed.plastic_indentation);
+        // The same scene with the dent given keeps it.
+        assert_eq!(at(0.3, 0.6, 2.3e-6).model, ForceModel::Proposed);
+    }
+
+    #[test]
+    fn the_softer_body_is_the_one_that_yields() {
+        let mut scene = steel_scene(0.3, 0.6, 0.0);
+        scene.body2.material.yield_stress = 3.4e8;
+        assert_eq!(Yielding::of(&scene), Yielding::Body2);
+        let advice = recommend(&scene, &scene.quasistatic().unwrap());
+        assert_eq!(
+            (advice.yielding, advice.yield_stress),
+            (Yielding::Body2, 3.4e8)
+        );
+        scene.body1.material.yield_stress = 1e8;
+        assert_eq!(Yielding::of(&scene), Yielding::Body1);
     }
 
     #[test]

@@ -38,6 +38,46 @@ impl ImpactConditions {
     }
 }
 
+/// Impact values a scene carries that its user did not give: a preset's stand-ins (the table
+/// presets borrow Fig. 5's e and x_pl), the `assumed` list of a scene file's `[impact]`. They are
+/// shown as assumed, and the recommendation never rests on them without saying so; giving the
+/// value (`--set`, an edit) clears the mark.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Assumed {
+    /// e was not given.
+    pub restitution: bool,
+    /// x_pl was not given.
+    pub plastic_indentation: bool,
+}
+
+impl Assumed {
+    /// The `[impact]` keys of the `assumed` list, in schema order.
+    pub const KEYS: [&'static str; 2] = ["restitution", "plastic_indentation"];
+
+    /// Whether nothing is assumed.
+    pub fn is_empty(&self) -> bool {
+        !self.restitution && !self.plastic_indentation
+    }
+
+    /// The assumed keys of [`Assumed::KEYS`].
+    pub fn keys(&self) -> Vec<&'static str> {
+        Self::KEYS
+            .into_iter()
+            .zip([self.restitution, self.plastic_indentation])
+            .filter_map(|(key, assumed)| assumed.then_some(key))
+            .collect()
+    }
+
+    /// Marks `key` (an `[impact]` key) assumed or given; other keys are never assumed.
+    pub fn set(&mut self, key: &str, assumed: bool) {
+        match key {
+            "restitution" => self.restitution = assumed,
+            "plastic_indentation" => self.plastic_indentation = assumed,
+            _ => {}
+        }
+    }
+}
+
 /// A scene with materials resolved and every value in SI units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
@@ -49,6 +89,8 @@ pub struct Scene {
     pub body2: Body,
     /// v₀, e and x_pl.
     pub impact: ImpactConditions,
+    /// Which of e and x_pl the user did not give.
+    pub assumed: Assumed,
 }
 
 impl Scene {
@@ -147,7 +189,7 @@ impl Serialize for Scene {
         map.serialize_entry("name", &self.name)?;
         map.serialize_entry("body1", &BodyRecord(&self.body1))?;
         map.serialize_entry("body2", &BodyRecord(&self.body2))?;
-        map.serialize_entry("impact", &ImpactRecord(&self.impact))?;
+        map.serialize_entry("impact", &ImpactRecord(&self.impact, &self.assumed))?;
         map.end()
     }
 }
@@ -176,15 +218,19 @@ impl Serialize for BodyRecord<'_> {
     }
 }
 
-/// The `[impact]` table.
-struct ImpactRecord<'a>(&'a ImpactConditions);
+/// The `[impact]` table, with the list of assumed keys when there are any.
+struct ImpactRecord<'a>(&'a ImpactConditions, &'a Assumed);
 
 impl Serialize for ImpactRecord<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(Some(3))?;
-        map.serialize_entry("v0", &self.0.v0)?;
-        map.serialize_entry("restitution", &self.0.restitution)?;
-        map.serialize_entry("plastic_indentation", &self.0.plastic_indentation)?;
+        let (impact, assumed) = (self.0, self.1);
+        let mut map = serializer.serialize_map(None)?;
+        map.serialize_entry("v0", &impact.v0)?;
+        map.serialize_entry("restitution", &impact.restitution)?;
+        map.serialize_entry("plastic_indentation", &impact.plastic_indentation)?;
+        if !assumed.is_empty() {
+            map.serialize_entry("assumed", &assumed.keys())?;
+        }
         map.end()
     }
 }
@@ -230,6 +276,7 @@ pub(crate) mod tests {
                 restitution: 0.6,
                 plastic_indentation: 2.3e-6,
             },
+            assumed: Assumed::default(),
         }
     }
 

@@ -106,6 +106,11 @@ impl SceneKey {
                 if let Some(condition) = self.impact_condition(&mut scene.impact) {
                     *condition = value;
                 }
+                // A value set is given, no longer the preset's stand-in.
+                let path = self.path();
+                if let Some(key) = path.strip_prefix("impact.") {
+                    scene.assumed.set(key, false);
+                }
             }
             SceneKey::Body(index, field) => {
                 let body = body_mut(scene, index);

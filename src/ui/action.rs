@@ -59,13 +59,21 @@ pub enum Action {
     Help,
     /// Opens the engine panel: the scene's contact parameters for a simulation engine.
     Engines,
+    /// `y` in the engine panel: copies its script to the terminal's clipboard (OSC 52).
+    Copy,
     Presets,
     Save,
     Export,
     /// Writes the charts of the view on screen to an SVG figure.
     Figure,
-    /// Moves the explorer's data cursor along the charts' x axes (forward: right).
-    MoveCursor(bool),
+    /// Moves the explorer's data cursor along the charts' x axes: forward (right) or back, one
+    /// step (`,` `.`) or ten (`<` `>`).
+    MoveCursor {
+        forward: bool,
+        fast: bool,
+    },
+    /// `P`: the data cursor to the focused model's peak on the first chart.
+    CursorToPeak,
     /// Applies the material selected in the picker to a body.
     ApplyMaterialTo(BodyIndex),
     /// The terminal has this many columns and rows: redraw (and size sweeps to it).

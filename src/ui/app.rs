@@ -1,15 +1,19 @@
 //! The explorer's state; its transitions are in [`update`](super::update). No terminal here.
 
+use std::cell::Cell;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use tui_input::Input;
+use tui_input::{Input, InputRequest};
 
 use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
+use crate::model::presets::kebab_case;
+use crate::model::recommend::{Recommendation, recommend};
 use crate::model::scene_file::SceneView;
 use crate::model::scene_key::{BodyIndex, SceneKey};
+use crate::model::scene_title::{edits, retitled};
 use crate::model::study::runner::{StudyJob, StudySpec};
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
@@ -46,13 +50,52 @@ pub struct Editor {
     pub input: Input,
     /// Why the last commit was refused (the text did not parse).
     pub error: Option<String>,
+    /// The whole text is selected, as when the editor opens on a value: the first typed character
+    /// (or a paste) replaces it and Backspace, Delete or `Ctrl-U` clear it; a cursor key or
+    /// `Ctrl-W` keeps the text to edit it.
+    pub selected: bool,
+}
+
+impl Editor {
+    /// Applies a line-editing request, replacing the selected text as [`Editor::selected`] says.
+    pub fn handle(&mut self, request: InputRequest) {
+        if std::mem::take(&mut self.selected) {
+            match request {
+                InputRequest::InsertChar(_) => self.input = Input::default(),
+                InputRequest::DeletePrevChar
+                | InputRequest::DeleteNextChar
+                | InputRequest::DeleteLine => {
+                    self.input = Input::default();
+                    return;
+                }
+                _ => {}
+            }
+        }
+        self.input.handle(request);
+    }
+
+    /// Types the first line of `text` at the cursor (over the selected text).
+    pub fn paste(&mut self, text: &str) {
+        for c in text.lines().next().unwrap_or_default().chars() {
+            self.handle(InputRequest::InsertChar(c));
+        }
+    }
 }
 
 /// What a prompt asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PromptKind {
     Save,
-    Export(ForceModel),
+    Export(Export),
+}
+
+/// What `e` writes to a CSV file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Export {
+    /// A model's trajectory (`t,x,v,F`), from the explorer and the other views.
+    Trajectory(ForceModel),
+    /// The sweep of view 4, as `sweep --format csv` writes it.
+    Sweep,
 }
 
 /// A one-line question at the bottom of the screen (a file name or a path).
@@ -61,6 +104,8 @@ pub struct Prompt {
     pub kind: PromptKind,
     pub input: Input,
     pub error: Option<String>,
+    /// The explorer quits once this is done (`q` then `s`: save and quit).
+    pub then_quit: bool,
 }
 
 /// What a yes/no question at the bottom of the screen would do on `y`.
@@ -68,10 +113,11 @@ pub struct Prompt {
 pub enum Confirm {
     /// Quit with unsaved changes.
     Quit,
-    /// Save a user preset that hides the built-in of this name.
-    ShadowBuiltin(String),
-    /// Export the model's trajectory over an existing file.
-    Overwrite { path: PathBuf, model: ForceModel },
+    /// Save a user preset that hides the built-in of this name (then quit, if the save was asked
+    /// for by the quit question).
+    ShadowBuiltin { name: String, then_quit: bool },
+    /// Export over an existing file.
+    Overwrite { path: PathBuf, export: Export },
 }
 
 /// What has the keyboard.
@@ -85,6 +131,53 @@ pub enum Mode {
     Picker(Picker),
     Prompt(Prompt),
     Confirm(Confirm),
+}
+
+/// The first row each scrolled list shows, kept from one frame to the next: a list scrolls only
+/// as far as needed to keep its cursor in view, so that a click (which moves the cursor to a row
+/// in view) never scrolls what the pointer is on. Drawing and hit-testing compute the same
+/// offset from it ([`Scroll::keep_in_view`]) and store it back.
+#[derive(Debug)]
+pub struct Scroll {
+    /// The model checklist.
+    pub models: Cell<usize>,
+    /// The focused model when the checklist was last drawn: a new focus (`[` `]`, a check) is
+    /// scrolled into view, an old one is not (a click on a field scrolls nothing).
+    pub models_focus: Cell<Option<ForceModel>>,
+    /// The explorer's form, when it is one scrolled list (compact screens); [`Scroll::UNSET`]
+    /// until first drawn, when it centres the cursor.
+    pub form: Cell<usize>,
+}
+
+impl Default for Scroll {
+    fn default() -> Scroll {
+        Scroll {
+            models: Cell::new(0),
+            models_focus: Cell::new(None),
+            form: Cell::new(Scroll::UNSET),
+        }
+    }
+}
+
+impl Scroll {
+    /// A list not drawn yet.
+    pub const UNSET: usize = usize::MAX;
+
+    /// The first row of `total` shown `height` at a time, starting from `first` and moved as
+    /// little as keeps row `anchor` in view.
+    pub fn keep_in_view(first: usize, anchor: usize, total: usize, height: usize) -> usize {
+        if height == 0 {
+            return 0;
+        }
+        let first = if anchor < first {
+            anchor
+        } else if anchor >= first + height {
+            anchor + 1 - height
+        } else {
+            first
+        };
+        first.min(total.saturating_sub(height))
+    }
 }
 
 /// Lives in its own module so that layouts and charts need not import the app state.
@@ -106,6 +199,8 @@ pub struct Valid {
     /// Where the scene leaves the theory's range (a contact not small against R, a cylinder fit
     /// that departs from eqs 13–14), computed once per edit.
     pub warnings: Vec<ModelWarning>,
+    /// The recommendation (it solves the laws it speaks of), computed once per edit.
+    pub advice: Recommendation,
 }
 
 /// Models checked when the explorer opens on a bare scene: the paper's Fig. 5 three plus elastic
@@ -156,11 +251,15 @@ pub struct App {
     pub views: ViewStates,
     /// Terminal size (columns, rows), for sizing sweeps to their chart; (0, 0) until known.
     pub screen: (u16, u16),
+    /// The first rows the scrolled lists show, as last drawn.
+    pub scroll: Scroll,
     pub marker: MarkerStyle,
     pub theme: Theme,
     pub message: Option<Message>,
     /// Wall time of the last complete recompute (estimate and solves).
     pub last_recompute: Option<Duration>,
+    /// Text for the terminal's clipboard, sent (OSC 52) by the event loop before the next frame.
+    pub clipboard: Option<String>,
     pub(super) recompute_started: Option<Instant>,
     outbox: Vec<Job>,
     study_outbox: Vec<StudyJob>,
@@ -218,10 +317,12 @@ impl App {
             studies: Studies::default(),
             views: ViewStates::default(),
             screen: (0, 0),
+            scroll: Scroll::default(),
             marker,
             theme,
             message: None,
             last_recompute: None,
+            clipboard: None,
             recompute_started: None,
             outbox: Vec::new(),
             study_outbox: Vec::new(),
@@ -309,6 +410,24 @@ impl App {
             .collect()
     }
 
+    /// The scene's name and description as shown, exported and saved: those loaded while the
+    /// draft is as loaded, else named by its bodies with what was edited (a preset's "…on steel
+    /// plate" is not the name of a scene whose plate became aluminium).
+    pub fn title(&self) -> (String, Option<String>) {
+        retitled(&self.saved, self.description.as_deref(), &self.draft.scene)
+    }
+
+    /// The file-name stem of exports: the preset's name while unedited, else the shown name in
+    /// kebab case.
+    pub fn file_stem(&self) -> String {
+        let edited = !edits(&self.saved, &self.draft.scene).is_empty();
+        match &self.preset {
+            _ if edited => kebab_case(&self.title().0),
+            Some(preset) => preset.clone(),
+            None => self.draft.scene.name.clone(),
+        }
+    }
+
     /// Whether the scene differs from the one last loaded or saved.
     pub fn is_dirty(&self) -> bool {
         self.draft.scene != self.saved
@@ -335,23 +454,59 @@ impl App {
         }
     }
 
-    /// Opens a line editor on `target` holding `text`.
+    /// Opens a line editor on `target` holding `text`, selected: typing replaces it.
     pub(crate) fn open_editor(&mut self, target: EditTarget, text: String) {
         self.mode = Mode::Editing(Editor {
             target,
             input: Input::new(text),
             error: None,
+            selected: true,
         });
     }
 
-    /// Moves the focus to the next (`Up`) or previous (`Down`) model of [`ForceModel::ALL`].
+    /// Opens a line editor on `target` holding text the user gave (a paste): typing goes on
+    /// after it.
+    pub(crate) fn open_editor_typed(&mut self, target: EditTarget, text: String) {
+        self.open_editor(target, text);
+        if let Mode::Editing(editor) = &mut self.mode {
+            editor.selected = false;
+        }
+    }
+
+    /// Moves the focus to the next (`Up`) or previous (`Down`) checked model, in the order of
+    /// [`ForceModel::ALL`], wrapping around; the focus is always a checked model while any is.
     pub(crate) fn step_focus(&mut self, direction: Nudge) {
-        let n = ForceModel::ALL.len();
+        let checked = self.checked_models();
+        if checked.is_empty() {
+            self.say(
+                "no model checked: Space checks the model under the cursor",
+                true,
+            );
+            return;
+        }
         let i = model_index(self.focused);
-        self.focused = ForceModel::ALL[match direction {
-            Nudge::Up => (i + 1) % n,
-            Nudge::Down => (i + n - 1) % n,
-        }];
+        let next = match direction {
+            Nudge::Up => checked
+                .iter()
+                .find(|m| model_index(**m) > i)
+                .or(checked.first()),
+            Nudge::Down => checked
+                .iter()
+                .rev()
+                .find(|m| model_index(**m) < i)
+                .or(checked.last()),
+        };
+        if let Some(&model) = next {
+            self.focused = model;
+        }
+    }
+
+    /// The cursor has landed on `model`: it takes the focus if checked (views 2–3 and the export
+    /// follow the focus, and an unchecked model has nothing to show).
+    pub(crate) fn cursor_on(&mut self, model: ForceModel) {
+        if self.is_checked(model) {
+            self.focused = model;
+        }
     }
 
     /// The cursor stops, in order: the visible fields, then the models.
@@ -416,6 +571,8 @@ impl App {
     /// Re-evaluates the estimate of the draft and requests the solves whose inputs changed.
     pub(crate) fn recompute(&mut self) {
         let start = Instant::now();
+        // Named before it is copied: the valid scene's name and materials are those shown.
+        super::edited::name_edited_materials(self);
         match self.draft.scene.quasistatic() {
             Ok(quasistatic) => {
                 self.scene_error = None;
@@ -426,11 +583,16 @@ impl App {
                     .pair()
                     .map(|pair| scene_warnings(&pair, &quasistatic))
                     .unwrap_or_default();
+                let advice = recommend(&self.draft.scene, &quasistatic);
+                // Named as shown: the engine panel and the studies read the valid scene's name.
+                let mut scene = self.draft.scene.clone();
+                scene.name = self.title().0;
                 self.valid = Some(Valid {
-                    scene: self.draft.scene.clone(),
+                    scene,
                     quasistatic,
                     params,
                     warnings,
+                    advice,
                 });
                 if !self.request_solves(start) && !self.solutions.any_pending() {
                     // Only the estimate was recomputed.
@@ -490,7 +652,7 @@ impl App {
         };
         self.cursor = rows[j];
         if let Cursor::Model(model) = self.cursor {
-            self.focused = model;
+            self.cursor_on(model);
         }
     }
 
@@ -517,17 +679,21 @@ impl App {
         };
         self.cursor = rows[target];
         if let Cursor::Model(model) = self.cursor {
-            self.focused = model;
+            self.cursor_on(model);
         }
     }
 
+    /// Checks `model` (it takes the focus) or unchecks it (the focus, if it was there, goes to
+    /// the next checked model).
     pub(crate) fn toggle(&mut self, model: ForceModel) {
         let i = model_index(model);
         self.checked[i] = !self.checked[i];
-        self.focused = model;
         if self.checked[i] {
+            self.focused = model;
             // A cached result needs no solve, and then there is no recompute time to report.
             self.request_solves(Instant::now());
+        } else if self.focused == model {
+            self.step_focus(Nudge::Up);
         }
     }
 

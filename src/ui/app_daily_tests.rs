@@ -49,7 +49,7 @@ fn mouse(app: &mut App, kind: MouseEventKind, column: u16, row: u16) {
 }
 
 /// The screen as text, one line per row.
-fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
+pub(super) fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
     terminal.draw(|frame| render::draw(frame, app)).unwrap();
     let buffer = terminal.backend().buffer();
@@ -59,7 +59,7 @@ fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
 }
 
 /// The explorer on the default preset, with a user folder of its own.
-fn preset_app(label: &str) -> (App, std::path::PathBuf) {
+pub(super) fn preset_app(label: &str) -> (App, std::path::PathBuf) {
     let dir = temp_path(label);
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene(DEFAULT_SCENE).unwrap();
@@ -215,7 +215,10 @@ fn saving_never_hides_a_built_in_without_asking_and_keeps_the_description() {
     enter_text(&mut a, DEFAULT_SCENE);
     assert_eq!(
         a.mode_confirm(),
-        Some(Confirm::ShadowBuiltin(DEFAULT_SCENE.into())),
+        Some(Confirm::ShadowBuiltin {
+            name: DEFAULT_SCENE.into(),
+            then_quit: false
+        }),
         "a built-in's name asks first"
     );
     key(&mut a, KeyCode::Char('n'));
@@ -259,9 +262,13 @@ fn an_edited_material_is_named_so_and_saved_under_the_new_name() {
         lines.contains("Body 1 · sphere · steel (edited)"),
         "{lines}"
     );
-    // The status line no longer names the preset it came from.
+    // The status line no longer names the preset it came from: the scene is named by its bodies.
     assert!(
-        lines.lines().last().unwrap().contains("unsaved scene*"),
+        lines
+            .lines()
+            .last()
+            .unwrap()
+            .contains("Steel (edited) sphere R = 10 mm on steel plate*"),
         "{lines}"
     );
     key(&mut a, KeyCode::Char('s'));
@@ -281,6 +288,52 @@ fn an_edited_material_is_named_so_and_saved_under_the_new_name() {
     // Back to the preset's numbers, back to its name.
     key(&mut a, KeyCode::Right);
     assert_eq!(a.draft.scene.body1.material.name, "steel (edited)");
+}
+
+/// Fig. 5's name follows an edit of its plate everywhere a name is shown or written: the status
+/// line, the engine panel, the export's file name, the figure's, and a saved scene's description.
+#[test]
+fn an_edited_scene_is_not_named_after_the_preset_anywhere() {
+    let (mut a, dir) = preset_app("renamed");
+    assert!(a.title().0.starts_with("Fig. 5"));
+    a.cursor = Cursor::Field(Field::Number(SceneKey::Body(
+        BodyIndex::Two,
+        BodyField::YoungsModulus,
+    )));
+    key(&mut a, KeyCode::Left);
+    let name = "Steel sphere R = 10 mm on steel (edited) plate";
+    assert_eq!(a.title().0, name);
+    let status = screen(&a, 160, 48).last().unwrap().clone();
+    assert!(status.contains(&format!("{name}*")), "{status}");
+    key(&mut a, KeyCode::Char('t'));
+    match &a.mode {
+        Mode::Engine(panel) => assert!(panel.lines[0].ends_with(name), "{:?}", panel.lines),
+        other => panic!("{other:?}"),
+    }
+    key(&mut a, KeyCode::Esc);
+    let stem = a.file_stem();
+    assert!(!stem.contains("fig5"), "{stem}");
+    assert!(stem.contains("edited-plate"), "{stem}");
+    // Saved, its description says what was edited instead of Fig. 5's "at v0 = 0.3 m/s…".
+    key(&mut a, KeyCode::Char('s'));
+    enter_text(&mut a, "edited-plate");
+    let text = std::fs::read_to_string(dir.join("scenes/edited-plate.toml")).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let description = text.lines().nth(1).unwrap();
+    assert!(
+        description.starts_with("description = 'edited from \"Fig. 5: steel sphere R = 10 mm")
+            && description.ends_with(
+                ": body2.material = steel (edited), body2.material.youngs_modulus = 190000000000'"
+            ),
+        "{text}"
+    );
+    // An impact edit alone: the bodies' name, no longer "Fig. 5".
+    let (mut b, dir) = preset_app("renamed-v0");
+    std::fs::remove_dir_all(&dir).ok();
+    b.cursor = Cursor::Field(V0);
+    key(&mut b, KeyCode::Right);
+    assert_eq!(b.title().0, "Steel sphere R = 10 mm on steel plate");
+    assert_eq!(b.valid.as_ref().unwrap().scene.name, b.title().0);
 }
 
 #[test]
@@ -510,4 +563,39 @@ impl App {
             _ => None,
         }
     }
+}
+
+/// A table preset's e and x_pl are Fig. 5's stand-ins: the form says "assumed" beside them, an
+/// edit makes the value given, a reset makes it assumed again.
+#[test]
+fn a_preset_s_stand_ins_are_shown_as_assumed_until_edited() {
+    let registry = Registry::builtin().unwrap();
+    let scene = registry.scene("steel-sphere-r10-plate").unwrap();
+    let mut a = App::new(
+        scene,
+        registry,
+        MarkerStyle::Braille,
+        Theme { color: false },
+    );
+    let assumed_rows = |a: &App| {
+        screen(a, 160, 48)
+            .iter()
+            .filter(|l| l.contains(" assumed"))
+            .count()
+    };
+    assert_eq!(assumed_rows(&a), 2);
+    let why = crate::format::recommendation::why(&a.valid.as_ref().unwrap().advice, &a.draft.scene);
+    assert!(why.contains("e = 0.6 was not given"), "{why}");
+    a.cursor = Cursor::Field(Field::Number(SceneKey::Restitution));
+    key(&mut a, KeyCode::Left);
+    assert!(!a.draft.scene.assumed.restitution);
+    assert_eq!(assumed_rows(&a), 1);
+    let why = crate::format::recommendation::why(&a.valid.as_ref().unwrap().advice, &a.draft.scene);
+    assert!(
+        !why.contains("was not given (a stand-in): what rests on e"),
+        "{why}"
+    );
+    update(&mut a, Action::ResetField);
+    assert!(a.draft.scene.assumed.restitution);
+    assert_eq!(assumed_rows(&a), 2);
 }

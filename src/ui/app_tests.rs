@@ -7,7 +7,7 @@ use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
 use crate::model::{ForceModel, ModelError};
 
 use super::action::Action;
-use super::app::{App, ChartKind, Cursor, Mode, PromptKind};
+use super::app::{App, ChartKind, Cursor, Export, Mode, PromptKind};
 use super::field::Field;
 use super::keymap::action_for_event;
 use super::picker::EntryKind;
@@ -399,7 +399,10 @@ fn export_writes_the_focused_trajectory_as_csv() {
     key(&mut a, KeyCode::Char('e'));
     match &a.mode {
         Mode::Prompt(p) => {
-            assert_eq!(p.kind, PromptKind::Export(ForceModel::Proposed));
+            assert_eq!(
+                p.kind,
+                PromptKind::Export(Export::Trajectory(ForceModel::Proposed))
+            );
             assert!(p.input.value().ends_with("-proposed.csv"));
         }
         other => panic!("{other:?}"),

@@ -7,15 +7,19 @@ use crate::model::impact::{ImpactSolution, Sample};
 
 /// Steps of the cursor along the axis: per mille of its length.
 pub const FULL: u16 = 1000;
-/// One press of `<` or `>`.
+/// One press of `,` or `.`.
 pub const STEP: u16 = 10;
+/// One press of `<` or `>`: ten steps.
+pub const FAST_STEP: u16 = 10 * STEP;
 
-/// The cursor moved by one step (or placed mid-axis when hidden), within the axis.
-pub fn moved(at: Option<u16>, forward: bool) -> u16 {
+/// The cursor moved by one step, or ten when `fast` (or placed mid-axis when hidden), within
+/// the axis.
+pub fn moved(at: Option<u16>, forward: bool, fast: bool) -> u16 {
+    let step = if fast { FAST_STEP } else { STEP };
     match at {
         None => FULL / 2,
-        Some(p) if forward => (p + STEP).min(FULL),
-        Some(p) => p.saturating_sub(STEP),
+        Some(p) if forward => (p + step).min(FULL),
+        Some(p) => p.saturating_sub(step),
     }
 }
 
@@ -108,9 +112,12 @@ mod tests {
 
     #[test]
     fn the_cursor_steps_within_the_axis() {
-        assert_eq!(moved(None, true), 500);
-        assert_eq!(moved(Some(995), true), 1000);
-        assert_eq!(moved(Some(5), false), 0);
-        assert_eq!(moved(Some(500), false), 490);
+        assert_eq!(moved(None, true, false), 500);
+        assert_eq!(moved(Some(995), true, false), 1000);
+        assert_eq!(moved(Some(5), false, false), 0);
+        assert_eq!(moved(Some(500), false, false), 490);
+        assert_eq!(moved(Some(500), true, true), 600, "ten steps at once");
+        assert_eq!(moved(Some(950), true, true), 1000);
+        assert_eq!(moved(Some(50), false, true), 0);
     }
 }

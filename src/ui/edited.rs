@@ -53,6 +53,13 @@ pub fn reset_field(app: &mut App, field: Field) {
             Some(value) => {
                 // The key exists in both scenes (same shape), so setting it cannot fail.
                 let _ = key.set(&mut draft.scene, value);
+                // Back to the loaded value, back to its standing: a stand-in stays assumed.
+                if let Some(name) = key.path().strip_prefix("impact.") {
+                    draft
+                        .scene
+                        .assumed
+                        .set(name, saved.assumed.keys().contains(&name));
+                }
             }
             None => {
                 app.say(

@@ -1,12 +1,16 @@
 //! Export of a model's trajectory as CSV: [`crate::format::csv`], the rows `solve --format csv`
-//! prints (header `t,x,v,F`, SI units, full precision, no non-finite sample).
+//! prints (header `t,x,v,F`, SI units, full precision, no non-finite sample); and of view 4's
+//! sweep, as `sweep --format csv` prints it ([`crate::format::sweep_csv`]).
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
 use crate::format::csv::trajectory_csv;
+use crate::format::sweep_csv::sweep_csv;
 use crate::model::ForceModel;
 use crate::model::impact::ImpactSolution;
+use crate::model::scene_key::SceneKey;
+use crate::model::study::runner::SweepData;
 
 /// Samples written per export (the true extrema are inserted by the trajectory).
 pub const EXPORT_SAMPLES: usize = 1000;
@@ -26,6 +30,25 @@ pub fn default_path(scene_name: &str, model: ForceModel) -> PathBuf {
     let stem = stem.trim_matches('-');
     let stem = if stem.is_empty() { "scene" } else { stem };
     PathBuf::from(format!("{stem}-{}.csv", model.name()))
+}
+
+/// The default file name for the sweep of view 4: `<scene>-sweep-<key>.csv`
+/// (`fig5-…-sweep-impact-v0.csv`).
+pub fn default_sweep_path(scene_name: &str, key: SceneKey) -> PathBuf {
+    let stem = default_path(scene_name, ForceModel::Proposed);
+    let stem = stem.to_string_lossy();
+    let scene = stem.trim_end_matches(&format!("-{}.csv", ForceModel::Proposed.name()));
+    PathBuf::from(format!(
+        "{scene}-sweep-{}.csv",
+        key.path().replace('.', "-")
+    ))
+}
+
+/// Writes the sweep to `path` as `sweep --format csv` prints it; the number of rows.
+pub fn write_sweep(path: &Path, data: &SweepData) -> Result<usize, String> {
+    let text = sweep_csv(&data.spec.key.path(), &data.spec.models, &data.rows);
+    fs::write(path, &text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(data.rows.len())
 }
 
 /// Writes the trajectory of `solution` to `path` and returns the number of rows; the message

@@ -22,8 +22,9 @@ pub fn write_view(app: &App) -> Result<String, String> {
         return Err("nothing drawn yet to write: try again when the charts are done".into());
     }
     // The export's file-friendly scene stem, as `e` names its CSV.
-    let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
-    let csv = default_path(stem, app.focused).display().to_string();
+    let csv = default_path(&app.file_stem(), app.focused)
+        .display()
+        .to_string();
     let scene = csv.trim_end_matches(&format!("-{}.csv", app.focused.name()));
     let path = PathBuf::from(format!("{scene}-{}.svg", view.id()));
     figure::write(&charts, &path, SIZE).map_err(|e| e.to_string())?;

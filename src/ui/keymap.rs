@@ -10,6 +10,7 @@ use crate::model::scene_key::BodyIndex;
 use super::action::{Action, Jump};
 use super::app::{Confirm, Mode};
 use super::field::Nudge;
+use super::picker::{EntryKind, Picker};
 use super::tab::Tab;
 
 /// The key bindings, as the help screen lists them: (keys, what they do), the views and their
@@ -80,10 +81,7 @@ const SHARED: &[(&str, &str)] = &[
     ("↑ ↓ k j Tab S-Tab", "move between fields and models"),
     ("Home End g G", "first / last row"),
     ("PgUp PgDn", "previous / next section"),
-    (
-        "Enter",
-        "edit (Enter commits, Esc cancels) · toggle a model",
-    ),
+    ("Enter", "edit (typing replaces the value) · check a model"),
     (
         "← → h l - + =",
         "nudge the 2nd digit, up to the bound; cycle choices",
@@ -93,23 +91,19 @@ const SHARED: &[(&str, &str)] = &[
         "check / uncheck the model · focus previous / next",
     ),
     (
-        "u r",
-        "undo (100 levels) · reset the field to the loaded scene",
-    ),
-    (
-        "c / C",
-        "next chart (when not all fit) / calibrate to realise e",
+        "u r c C",
+        "undo · reset field · next chart · calibrate to realise e",
     ),
     (
         "p",
-        "presets: type to filter; Enter loads (1 2: to body 1 2)",
+        "presets: type to filter; Enter loads; on a material 1 2",
     ),
     ("s e", "save the scene (name or path.toml) · export as CSV"),
-    ("m t", "mouse on / off · engine parameters (← → engine)"),
+    ("f m t", "figure <scene>-<view>.svg · mouse on/off · engine"),
     ("paste", "opens the field under the cursor with the text"),
     (
-        "f < > , .",
-        "this view's charts to <scene>-<view>.svg · data cursor",
+        ", . < > P",
+        "data cursor: step, 10 steps, to the focused peak",
     ),
 ];
 
@@ -118,13 +112,14 @@ const CLOSING: &[(&str, &str)] = &[
     ("? Esc", "this help · close, cancel, clear the message"),
     (
         "q Ctrl-C",
-        "quit (unsaved: asks, y quits); Ctrl-C twice: at once",
+        "quit (unsaved: asks; s saves and quits); Ctrl-C twice: now",
     ),
 ];
 
 /// How numbers are typed, and the display options, for the help screen.
 pub const INPUT_HINTS: &[&str] = &[
-    "numbers: 200G, 2e11, 200 GPa, 10 mm, 0.3 m/s, 2.3 µm (or um), 33 g, 60%",
+    "editing: Enter commits, Esc cancels, Ctrl-U clears, Ctrl-W deletes a word",
+    "numbers: 200G, 200 GPa, 1 cm, 10 mm, 2.3 µm (um), 0.3 m/s, 3.6 km/h, 60%",
     "a bare number is in SI units (Pa, m, m/s, kg); mass `auto` = ρ × volume",
     "--marker braille|dot|block for fonts without braille; NO_COLOR=1: no colour",
 ];
@@ -168,6 +163,12 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
             KeyCode::Right | KeyCode::Char('l') => Action::Nudge(Nudge::Up),
             KeyCode::Up | KeyCode::Char('k') => Action::Up,
             KeyCode::Down | KeyCode::Char('j') => Action::Down,
+            KeyCode::Home | KeyCode::Char('g') => Action::Jump(Jump::First),
+            KeyCode::End | KeyCode::Char('G') => Action::Jump(Jump::Last),
+            KeyCode::PageUp => Action::Jump(Jump::PreviousSection),
+            KeyCode::PageDown | KeyCode::Char(' ') => Action::Jump(Jump::NextSection),
+            KeyCode::Char('w') => Action::Export,
+            KeyCode::Char('y') => Action::Copy,
             KeyCode::Esc | KeyCode::Char('q') | KeyCode::Char('t') => Action::Cancel,
             _ => return None,
         }),
@@ -177,19 +178,24 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
             }
             _ => return None,
         }),
-        Mode::Picker(picker) => picker_key(picker.filter.is_empty(), event, key),
+        Mode::Picker(picker) => picker_key(picker, event, key),
         Mode::Confirm(confirm) => Some(match (confirm, key.code) {
             (_, KeyCode::Char('y' | 'Y')) => Action::Yes,
-            (Confirm::Quit, KeyCode::Char('q')) => Action::Quit,
-            (Confirm::Quit, KeyCode::Char('s')) => Action::Save,
+            // `q` again is one of the "other keys": it stays, as the question says.
+            (Confirm::Quit, KeyCode::Char('s' | 'S')) => Action::Save,
             _ => Action::Cancel,
         }),
     }
 }
 
-/// In the picker, letters and digits type into the filter; while it is empty `q` and `p` close
-/// the picker and `1` `2` apply a material to body 1 or 2.
-fn picker_key(filter_empty: bool, event: &Event, key: KeyEvent) -> Option<Action> {
+/// In the picker, letters and digits type into the filter; on a material, filtered or not, `1`
+/// `2` apply it to body 1 or 2 (a scene has no body to pick: there they filter, as in `r10`);
+/// while the filter is empty `q` and `p` close the picker.
+fn picker_key(picker: &Picker, event: &Event, key: KeyEvent) -> Option<Action> {
+    let on_material = picker
+        .selected()
+        .is_some_and(|entry| entry.kind == EntryKind::Material);
+    let filter_empty = picker.filter.is_empty();
     Some(match key.code {
         KeyCode::Up | KeyCode::BackTab => Action::Up,
         KeyCode::Down | KeyCode::Tab => Action::Down,
@@ -197,8 +203,8 @@ fn picker_key(filter_empty: bool, event: &Event, key: KeyEvent) -> Option<Action
         KeyCode::End | KeyCode::PageDown => Action::Jump(Jump::Last),
         KeyCode::Enter => Action::Enter,
         KeyCode::Esc => Action::Cancel,
-        KeyCode::Char('1') if filter_empty => Action::ApplyMaterialTo(BodyIndex::One),
-        KeyCode::Char('2') if filter_empty => Action::ApplyMaterialTo(BodyIndex::Two),
+        KeyCode::Char('1') if on_material => Action::ApplyMaterialTo(BodyIndex::One),
+        KeyCode::Char('2') if on_material => Action::ApplyMaterialTo(BodyIndex::Two),
         KeyCode::Char('q' | 'p') if filter_empty => Action::Cancel,
         _ => return to_input_request(event).map(Action::Input),
     })
@@ -235,8 +241,23 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('f') => Action::Figure,
         KeyCode::Char('v') => Action::CycleView(Nudge::Up),
         KeyCode::Char('V') => Action::CycleView(Nudge::Down),
-        KeyCode::Char('<') | KeyCode::Char(',') => Action::MoveCursor(false),
-        KeyCode::Char('>') | KeyCode::Char('.') => Action::MoveCursor(true),
+        KeyCode::Char(',') => Action::MoveCursor {
+            forward: false,
+            fast: false,
+        },
+        KeyCode::Char('.') => Action::MoveCursor {
+            forward: true,
+            fast: false,
+        },
+        KeyCode::Char('<') => Action::MoveCursor {
+            forward: false,
+            fast: true,
+        },
+        KeyCode::Char('>') => Action::MoveCursor {
+            forward: true,
+            fast: true,
+        },
+        KeyCode::Char('P') => Action::CursorToPeak,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

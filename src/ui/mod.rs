@@ -16,6 +16,8 @@ mod app_daily_tests;
 mod app_tab_tests;
 #[cfg(test)]
 mod app_tests;
+#[cfg(test)]
+mod app_trap_tests;
 pub mod data_cursor;
 mod edited;
 pub mod export;
@@ -41,6 +43,7 @@ pub mod worker;
 
 /// The engine panel's state (`t`: a simulation engine's parameters for the scene).
 pub mod engine_panel;
+pub mod osc52;
 
 pub use style::MarkerStyle;
 
@@ -49,6 +52,7 @@ use color_eyre::eyre::WrapErr;
 use crate::model::Scene;
 use crate::model::presets::Registry;
 use crate::model::scene_file::SceneView;
+use crate::model::scene_title::retitled;
 
 use app::App;
 use style::Theme;
@@ -68,6 +72,11 @@ pub fn run(
         .wrap_err("cannot load the presets")?;
     // A scene file's description is kept on save, as a preset's is.
     let description = registry.scene_description(source).ok().flatten();
+    // Overrides given on the command line: the description says what they edited.
+    let description = match registry.scene(source) {
+        Ok(original) => retitled(&original, description.as_deref(), &scene).1,
+        Err(_) => description,
+    };
     let mut app = App::open(scene, view, registry, marker, Theme::from_env());
     if app.description.is_none() {
         app.description = description;

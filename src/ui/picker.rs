@@ -83,17 +83,28 @@ impl Picker {
         self.visible().get(self.selected).copied()
     }
 
-    /// Types into the filter (characters, backspace, clearing); the selection goes to the top.
+    /// Types into the filter (characters, backspace, clearing); the selection goes to the entry
+    /// named exactly as the filter (any case) if there is one, else to the top, so that Enter
+    /// loads the scene whose name was typed rather than the first that contains it.
     pub fn edit_filter(&mut self, request: InputRequest) {
         match request {
             InputRequest::InsertChar(c) => self.filter.push(c),
             InputRequest::DeletePrevChar => {
                 self.filter.pop();
             }
+            InputRequest::DeletePrevWord => {
+                let kept = self.filter.trim_end().rfind(' ').map_or(0, |i| i + 1);
+                self.filter.truncate(kept);
+            }
             InputRequest::DeleteLine | InputRequest::DeleteTillEnd => self.filter.clear(),
             _ => return,
         }
-        self.selected = 0;
+        let typed = self.filter.trim().to_lowercase();
+        self.selected = self
+            .visible()
+            .iter()
+            .position(|e| e.name.to_lowercase() == typed)
+            .unwrap_or(0);
     }
 
     /// The first or the last visible row.
@@ -187,5 +198,31 @@ mod tests {
         assert_eq!(picker.filter, "alumi");
         picker.jump(true);
         assert_eq!(picker.selected().map(|e| e.kind), Some(EntryKind::Material));
+    }
+
+    /// A typed name selects its own entry, not the first entry that contains it: three scenes
+    /// contain `steel-sphere-r10-plate`, and `fig4-…` comes first.
+    #[test]
+    fn an_exact_name_is_selected_over_the_first_match() {
+        let registry = Registry::builtin().unwrap();
+        for name in ["steel-sphere-r10-plate", "STEEL", "Steel-Sphere-R10-Plate"] {
+            let mut picker = Picker::new(&registry);
+            for c in name.chars() {
+                picker.edit_filter(InputRequest::InsertChar(c));
+            }
+            assert!(picker.visible().len() > 1, "{name}: more than one match");
+            assert_eq!(
+                picker.selected().map(|e| e.name.to_lowercase()),
+                Some(name.to_lowercase()),
+            );
+        }
+        // A partial name selects the first match; Ctrl-W drops the last word.
+        let mut picker = Picker::new(&registry);
+        for c in "fig plate".chars() {
+            picker.edit_filter(InputRequest::InsertChar(c));
+        }
+        assert_eq!(picker.selected, 0);
+        picker.edit_filter(InputRequest::DeletePrevWord);
+        assert_eq!(picker.filter, "fig ");
     }
 }

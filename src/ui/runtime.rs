@@ -156,6 +156,11 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
                 return Err(eyre!("the study thread stopped"));
             }
         }
+        if let Some(text) = app.clipboard.take() {
+            let mut out = std::io::stdout();
+            out.write_all(super::osc52::sequence(&text).as_bytes())?;
+            out.flush()?;
+        }
         if app.mouse != mouse {
             mouse = app.mouse;
             if mouse {

@@ -4,14 +4,14 @@ use std::path::{Path, PathBuf};
 
 use tui_input::{Input, InputRequest};
 
+use crate::model::Scene;
 use crate::model::presets::{Origin, Registry, SaveTarget, is_kebab_case, kebab_case};
 use crate::model::scene_file::SceneView;
 use crate::model::scene_key::BodyIndex;
 use crate::model::study::runner::StudyOutcome;
-use crate::model::{ForceModel, Scene};
 
 use super::action::{Action, Jump};
-use super::app::{App, Confirm, Cursor, Editor, Mode, Prompt, PromptKind};
+use super::app::{App, Confirm, Cursor, Editor, Export, Mode, Prompt, PromptKind};
 use super::edited;
 use super::export;
 use super::field::Nudge;
@@ -47,9 +47,7 @@ fn resize(app: &mut App, width: u16, height: u16) {
 
 fn transition(app: &mut App, action: Action) {
     match action {
-        Action::Quit if matches!(app.mode, Mode::Normal | Mode::Confirm(Confirm::Quit)) => {
-            quit_or_ask(app, matches!(app.mode, Mode::Confirm(Confirm::Quit)))
-        }
+        Action::Quit if matches!(app.mode, Mode::Normal) => quit_or_ask(app, false),
         Action::Interrupt => quit_or_ask(app, matches!(app.mode, Mode::Confirm(Confirm::Quit))),
         Action::Resize(width, height) => resize(app, width, height),
         Action::Solved(report) => solved(app, report),
@@ -75,10 +73,26 @@ fn transition(app: &mut App, action: Action) {
                         app.mode = Mode::Help;
                     }
                 }
-                Mode::Engine(panel) => {
-                    let scene = app.valid.as_ref().map(|v| &v.scene);
-                    if let Some(panel) = panel.update(action, scene) {
-                        app.mode = Mode::Engine(panel);
+                Mode::Engine(mut panel) => {
+                    match action {
+                        Action::Export => {
+                            if let Err(reason) = panel.write_to(Path::new(".")) {
+                                panel.note = Some(reason);
+                            }
+                            app.mode = Mode::Engine(panel);
+                        }
+                        Action::Copy => {
+                            app.clipboard = panel.copied();
+                            app.mode = Mode::Engine(panel);
+                        }
+                        action => {
+                            let scene = app.valid.as_ref().map(|v| &v.scene);
+                            // The panel's text rows: the screen less its margins and borders.
+                            let page = app.screen.1.saturating_sub(4);
+                            if let Some(panel) = panel.update(action, scene, page) {
+                                app.mode = Mode::Engine(panel);
+                            }
+                        }
                     }
                 }
                 Mode::Picker(picker) => picking(app, picker, action),
@@ -101,20 +115,24 @@ fn quit_or_ask(app: &mut App, again: bool) {
 fn confirming(app: &mut App, confirm: Confirm, action: Action) {
     match (confirm, action) {
         (Confirm::Quit, Action::Yes) => app.quit = true,
-        (Confirm::Quit, Action::Save) => normal(app, Action::Save),
-        (Confirm::ShadowBuiltin(name), Action::Yes) => match save_preset(app, &name) {
-            Ok(news) => app.say(
-                format!("{news} (it hides the built-in; delete the file to get it back)"),
-                false,
-            ),
-            Err(reason) => app.say(reason, true),
-        },
-        (Confirm::Overwrite { path, model }, Action::Yes) => {
-            match export_model(app, model, &path) {
-                Ok(news) => app.say(news, false),
+        // Save, then quit: the save prompt says so, and Esc there stays.
+        (Confirm::Quit, Action::Save) => open_save_prompt(app, true),
+        (Confirm::ShadowBuiltin { name, then_quit }, Action::Yes) => {
+            match save_preset(app, &name) {
+                Ok(news) => {
+                    app.say(
+                        format!("{news} (it hides the built-in; delete the file to get it back)"),
+                        false,
+                    );
+                    app.quit = then_quit;
+                }
                 Err(reason) => app.say(reason, true),
             }
         }
+        (Confirm::Overwrite { path, export }, Action::Yes) => match export_to(app, export, &path) {
+            Ok(news) => app.say(news, false),
+            Err(reason) => app.say(reason, true),
+        },
         // Anything else is a no: the question closes and nothing happens.
         _ => app.say("not done", false),
     }
@@ -175,14 +193,7 @@ fn normal(app: &mut App, action: Action) {
             }
             app.mode = Mode::Picker(picker);
         }
-        Action::Save => {
-            let suggestion = save_suggestion(app);
-            app.mode = Mode::Prompt(Prompt {
-                kind: PromptKind::Save,
-                input: Input::new(suggestion),
-                error: None,
-            });
-        }
+        Action::Save => open_save_prompt(app, false),
         Action::Figure => match figure_export::write_view(app) {
             Ok(news) => app.say(news, false),
             Err(reason) => app.say(reason, true),
@@ -195,12 +206,12 @@ fn normal(app: &mut App, action: Action) {
                     true,
                 );
             } else if app.solutions.solution(model).is_some() {
-                let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
-                let path = export::default_path(stem, model);
+                let path = export::default_path(&app.file_stem(), model);
                 app.mode = Mode::Prompt(Prompt {
-                    kind: PromptKind::Export(model),
+                    kind: PromptKind::Export(Export::Trajectory(model)),
                     input: Input::new(path.display().to_string()),
                     error: None,
+                    then_quit: false,
                 });
             } else {
                 app.say(
@@ -224,10 +235,12 @@ fn normal(app: &mut App, action: Action) {
         | Action::ResetField
         | Action::Enter
         | Action::CycleChart
-        | Action::MoveCursor(_)
+        | Action::MoveCursor { .. }
+        | Action::CursorToPeak
         | Action::Cancel
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)
+        | Action::Copy
         | Action::Quit
         | Action::Interrupt
         | Action::Yes
@@ -239,6 +252,17 @@ fn normal(app: &mut App, action: Action) {
         | Action::Solved(_)
         | Action::Studied(_) => {}
     }
+}
+
+/// The save prompt, with the name `s` proposes; `then_quit`: the explorer quits once saved.
+fn open_save_prompt(app: &mut App, then_quit: bool) {
+    let suggestion = save_suggestion(app);
+    app.mode = Mode::Prompt(Prompt {
+        kind: PromptKind::Save,
+        input: Input::new(suggestion),
+        error: None,
+        then_quit,
+    });
 }
 
 fn undo(app: &mut App) {
@@ -278,11 +302,11 @@ fn save_suggestion(app: &App) -> String {
 fn editing(app: &mut App, mut editor: Editor, action: Action) {
     match action {
         Action::Input(request) => {
-            editor.input.handle(request);
+            editor.handle(request);
             app.mode = Mode::Editing(editor);
         }
         Action::Paste(text) => {
-            insert(&mut editor.input, &text);
+            editor.paste(&text);
             app.mode = Mode::Editing(editor);
         }
         Action::Enter => {
@@ -384,11 +408,14 @@ fn prompting(app: &mut App, mut prompt: Prompt, action: Action) {
         Action::Enter => {
             let text = prompt.input.value().trim().to_string();
             let outcome = match prompt.kind {
-                PromptKind::Save => save(app, &text),
-                PromptKind::Export(model) => export_asking(app, model, &text),
+                PromptKind::Save => save(app, &text, prompt.then_quit),
+                PromptKind::Export(export) => export_asking(app, export, &text),
             };
             match outcome {
-                Ok(Some(news)) => app.say(news, false),
+                Ok(Some(news)) => {
+                    app.say(news, false);
+                    app.quit = prompt.then_quit;
+                }
                 // A question took over the bottom line.
                 Ok(None) => {}
                 Err(reason) => {
@@ -412,7 +439,7 @@ fn expand_home(text: &str) -> PathBuf {
 
 /// Saves the draft as a user preset (a kebab-case name) or to a path (with `/` or `.toml`);
 /// a built-in's name asks first (`Ok(None)`).
-fn save(app: &mut App, text: &str) -> Result<Option<String>, String> {
+fn save(app: &mut App, text: &str, then_quit: bool) -> Result<Option<String>, String> {
     if text.is_empty() {
         return Err("type a preset name or a path ending in .toml".into());
     }
@@ -424,7 +451,10 @@ fn save(app: &mut App, text: &str) -> Result<Option<String>, String> {
         return write_scene(app, &stem, SaveTarget::Path(&path)).map(Some);
     }
     if app.registry.is_builtin_scene(text) && !is_user_preset(app, text) {
-        app.mode = Mode::Confirm(Confirm::ShadowBuiltin(text.to_string()));
+        app.mode = Mode::Confirm(Confirm::ShadowBuiltin {
+            name: text.to_string(),
+            then_quit,
+        });
         return Ok(None);
     }
     save_preset(app, text).map(Some)
@@ -441,10 +471,13 @@ fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<Stri
     let scene = scene_to_save(app, name);
     let view = app.scene_view();
     let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
+    // An edited scene's description says what was edited, not the preset's "…on steel plate".
+    let description = app.title().1;
     let written = app
         .registry
-        .save_scene_with_view(&scene, app.description.as_deref(), &view, target)
+        .save_scene_with_view(&scene, description.as_deref(), &view, target)
         .map_err(|e| e.to_string())?;
+    app.description = description;
     saved(app, scene, view, preset);
     Ok(format!("saved {}", absolute(&written)))
 }
@@ -489,27 +522,42 @@ fn absolute(path: &Path) -> String {
 }
 
 /// Exports, asking first when the file exists (`Ok(None)`).
-fn export_asking(app: &mut App, model: ForceModel, text: &str) -> Result<Option<String>, String> {
+fn export_asking(app: &mut App, export: Export, text: &str) -> Result<Option<String>, String> {
     if text.is_empty() {
         return Err("type a file name".into());
     }
     let path = expand_home(text);
     if path.exists() {
-        app.mode = Mode::Confirm(Confirm::Overwrite { path, model });
+        app.mode = Mode::Confirm(Confirm::Overwrite { path, export });
         return Ok(None);
     }
-    export_model(app, model, &path).map(Some)
+    export_to(app, export, &path).map(Some)
 }
 
-fn export_model(app: &App, model: ForceModel, path: &Path) -> Result<String, String> {
-    let solution = app
-        .solutions
-        .solution(model)
-        .ok_or_else(|| format!("no solution of {} to export", model.label()))?;
-    let rows = export::write(path, solution)?;
-    Ok(format!(
-        "exported {} ({rows} rows) to {}",
-        model.name(),
-        absolute(path)
-    ))
+fn export_to(app: &App, export: Export, path: &Path) -> Result<String, String> {
+    match export {
+        Export::Trajectory(model) => {
+            let solution = app
+                .solutions
+                .solution(model)
+                .ok_or_else(|| format!("no solution of {} to export", model.label()))?;
+            let rows = export::write(path, solution)?;
+            Ok(format!(
+                "exported {} ({rows} rows) to {}",
+                model.name(),
+                absolute(path)
+            ))
+        }
+        Export::Sweep => {
+            let Some(Ok(data)) = app.studies.sweep() else {
+                return Err("no sweep to export: wait for it to be done".into());
+            };
+            let rows = export::write_sweep(path, data)?;
+            Ok(format!(
+                "exported the sweep of {} ({rows} rows) to {}",
+                data.spec.key.path(),
+                absolute(path)
+            ))
+        }
+    }
 }

@@ -545,6 +545,7 @@ fn help_and_version_work() {
 fn translate_json_for_every_engine_realises_the_scene_restitution() {
     for engine in [
         "drake",
+        "drake-sap",
         "simbody",
         "chrono",
         "liggghts",
@@ -586,26 +587,116 @@ fn translate_json_for_every_engine_realises_the_scene_restitution() {
 }
 
 #[test]
-fn translate_text_ends_with_the_fragment() {
+fn translate_text_ends_with_the_script_and_writes_it() {
+    let dir = TempDir::new("translate-script");
+    let path = dir.path().join("impact.py");
     let out = ok(&[
         "translate",
         "--scene",
         "fig5-steel-sphere-r10-plate",
         "--engine",
         "drake",
+        "--script",
+        path.to_str().expect("utf-8 path"),
     ]);
     for heading in [
         "engine law",
+        "Warnings: what the engine's law cannot do here",
+        "yield begins",
         "Parameters",
-        "What the engine gives",
+        "What the engine's law gives",
+        "Time step and what the engine gives",
+        "python3 impact.py discrete: step",
         "e_out against v₀",
+        "Versions",
+        "run in Drake 1.51.1",
+        "Script (python; save as impact.py",
     ] {
         assert!(out.contains(heading), "{heading}: {out}");
     }
+    let script = fs::read_to_string(&path).expect("--script wrote the file");
+    assert!(script.contains("contact_model=\"point\""), "{script}");
     assert!(
-        out.trim_end().ends_with("</collision>"),
-        "the SDF fragment comes last: {out}"
+        out.trim_end().ends_with(script.trim_end()),
+        "the script comes last, as written: {out}"
     );
+    assert!(
+        script
+            .trim_end()
+            .ends_with("contact_time {contact_time:.12g}\")")
+    );
+}
+
+#[test]
+fn translate_json_carries_the_run_and_the_regime() {
+    let v = json(&[
+        "translate",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--engine",
+        "lammps-tsuji",
+        "--tolerance",
+        "0.001",
+    ]);
+    assert_eq!(v["warnings"][0]["kind"], "yield-begins", "{v}");
+    let claim = &v["run"]["claim"];
+    assert_eq!(claim["kind"], "stepped");
+    assert_eq!(number(claim, "tolerance"), 0.001);
+    let e = number(&claim["at_step"], "e_out");
+    assert!((e / 0.6 - 1.0).abs() <= 0.001, "{claim}");
+    let script = v["run"]["script"]["text"].as_str().unwrap_or_default();
+    // Both releases' inputs: the one run, and the √2 one commented out.
+    assert!(script.contains("variable e_in equal"), "{script}");
+    assert!(script.contains("# variable e_in equal"), "{script}");
+    assert!(script.contains("units si") && script.contains("comm_modify vel yes"));
+    let elastic = json(&[
+        "translate",
+        "--scene",
+        "steel-sphere-r10-plate",
+        "--set",
+        "impact.v0=0.01",
+        "--engine",
+        "mujoco",
+    ]);
+    assert_eq!(elastic["warnings"].as_array().map(Vec::len), Some(0));
+    let err = user_error(&[
+        "translate",
+        "--scene",
+        "fig5-steel-sphere-r10-plate",
+        "--engine",
+        "mujoco",
+        "--tolerance",
+        "2",
+    ]);
+    assert!(err.contains("--tolerance"), "{err}");
+    let err = user_error(&[
+        "translate",
+        "--scene",
+        "steel-cylinder-r20-l100-plate",
+        "--engine",
+        "mujoco",
+        "--script",
+        "never-written.py",
+    ]);
+    assert!(
+        err.contains("--script") && err.contains("cylinder"),
+        "{err}"
+    );
+}
+
+#[test]
+fn chrono_and_adams_say_they_are_not_run_in_the_engine() {
+    for engine in ["chrono", "adams"] {
+        let out = ok(&[
+            "translate",
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--engine",
+            engine,
+        ]);
+        assert!(out.contains("not run in the engine"), "{engine}: {out}");
+        assert!(out.contains("only the continuous limit"), "{engine}: {out}");
+    }
 }
 
 #[test]
@@ -696,4 +787,21 @@ fn solve_json_warns_where_the_cylinder_fit_departs_from_eqs_13_14() {
     assert!(departure > 1.0 && departure < 10.0, "{departure} %");
     let table_2 = json(&["solve", "--scene", "steel-cylinders-r20-l100"]);
     assert_eq!(table_2["warnings"].as_array().map(Vec::len), Some(0));
+}
+
+/// After `--set body2.material=…` no header says "…on steel plate": solve's, translate's and a
+/// plotted figure's title name the scene by its bodies.
+#[test]
+fn headers_follow_an_edited_plate() {
+    let set = ["--set", "body2.material=aluminium-alloy"];
+    let name = "Steel sphere R = 10 mm on aluminium-alloy plate";
+    let scene = ["--scene", "fig5-steel-sphere-r10-plate"];
+    let solve = ok(&[&["solve"][..], &scene, &set, &["--model", "proposed"]].concat());
+    assert!(solve.starts_with(&format!("Scene: {name}\n")), "{solve}");
+    let translate = ok(&[&["translate"][..], &scene, &set, &["--engine", "drake"]].concat());
+    assert!(
+        translate.lines().next().unwrap().ends_with(name),
+        "{translate}"
+    );
+    assert!(!translate.contains("steel plate"), "{translate}");
 }

@@ -4,4 +4,5 @@ mod commands;
 mod laws;
 mod plot;
 mod readme;
+mod recommendation;
 mod studies;

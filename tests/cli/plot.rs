@@ -223,3 +223,26 @@ fn bad_files_and_sizes_are_user_errors() {
         assert!(String::from_utf8_lossy(&output.stderr).starts_with("error: "));
     }
 }
+
+/// A figure of an edited scene is titled by its bodies, not by the preset's "…on steel plate".
+#[test]
+fn an_edited_scene_s_figure_is_titled_by_its_bodies() {
+    let svg = plot(
+        &[
+            "--scene",
+            "fig5-steel-sphere-r10-plate",
+            "--set",
+            "body2.material=aluminium-alloy",
+            "--chart",
+            "fx",
+            "--model",
+            "proposed",
+        ],
+        "edited.svg",
+    );
+    assert!(
+        svg.contains("Steel sphere R = 10 mm on aluminium-alloy plate"),
+        "{svg}"
+    );
+    assert!(!svg.contains("steel plate"));
+}

@@ -7,6 +7,7 @@ mod ode_common;
 mod bodies_props;
 mod calibration;
 mod dry_friction_cutoff;
+mod engine_runs;
 mod engines;
 mod engines_vs_laws;
 mod impact_crosscheck;

@@ -720,6 +720,7 @@ mod round_trip {
                 body1,
                 body2,
                 impact: ImpactConditions { v0, restitution: e, plastic_indentation: x_pl },
+                assumed: Default::default(),
             };
             let text = scene_file::to_toml(&scene, Some("round trip"));
             let doc = scene_file::Document::parse("written.toml", &text).unwrap();
@@ -735,4 +736,76 @@ mod round_trip {
             }
         }
     }
+}
+
+/// The table presets borrow Fig. 5's e and x_pl: they say so (`assumed`), a `--set` of either
+/// makes it given, and a scene written back keeps what is still assumed.
+#[test]
+fn borrowed_values_are_assumed_until_given() {
+    let registry = builtin();
+    for info in registry.scenes() {
+        let scene = registry.scene(&info.name).unwrap();
+        let figure = info.name.starts_with("fig");
+        assert_eq!(scene.assumed.restitution, !figure, "{}", info.name);
+        assert_eq!(scene.assumed.plastic_indentation, !figure, "{}", info.name);
+    }
+    let set =
+        |pairs: &[&str]| -> Vec<Override> { pairs.iter().map(|s| s.parse().unwrap()).collect() };
+    let given_e = registry
+        .scene_with("steel-sphere-r10-plate", &set(&["impact.restitution=0.7"]))
+        .unwrap();
+    assert!(!given_e.assumed.restitution);
+    assert!(given_e.assumed.plastic_indentation);
+    // Written back and read again: the assumed list survives, the given e is given.
+    let text = scene_file::to_toml(&given_e, None);
+    assert!(
+        text.contains("assumed = [\"plastic_indentation\"]"),
+        "{text}"
+    );
+    let read = parse_scene("written.toml", &text, registry.material_catalog()).unwrap();
+    assert_eq!(read.assumed, given_e.assumed);
+    // A key that is not e or x_pl is refused by name and line.
+    let bad = text.replace("[\"plastic_indentation\"]", "[\"v0\"]");
+    let err = parse_scene("bad.toml", &bad, registry.material_catalog()).unwrap_err();
+    assert!(
+        err.to_string().contains(
+            "`impact.assumed` must be a list of \"restitution\" and \"plastic_indentation\""
+        ),
+        "{err}"
+    );
+}
+
+/// An edited scene is not "…on steel plate": `--set` of a body renames it by its bodies, and a
+/// `--set name=…` wins.
+#[test]
+fn an_edited_scene_is_named_by_its_bodies() {
+    let registry = builtin();
+    let set =
+        |pairs: &[&str]| -> Vec<Override> { pairs.iter().map(|s| s.parse().unwrap()).collect() };
+    let edited = registry
+        .scene_with(DEFAULT_SCENE, &set(&["body2.material=aluminium-alloy"]))
+        .unwrap();
+    assert_eq!(
+        edited.name,
+        "Steel sphere R = 10 mm on aluminium-alloy plate"
+    );
+    let impact_only = registry
+        .scene_with(DEFAULT_SCENE, &set(&["impact.v0=1"]))
+        .unwrap();
+    assert_eq!(impact_only.name, "Steel sphere R = 10 mm on steel plate");
+    let named = registry
+        .scene_with(
+            DEFAULT_SCENE,
+            &set(&["body2.material=aluminium-alloy", "name=my impact"]),
+        )
+        .unwrap();
+    assert_eq!(named.name, "my impact");
+    // Without overrides the preset's own name.
+    assert!(
+        registry
+            .scene(DEFAULT_SCENE)
+            .unwrap()
+            .name
+            .starts_with("Fig. 5")
+    );
 }

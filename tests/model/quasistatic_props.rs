@@ -73,6 +73,7 @@ fn sphere_scene() -> impl Strategy<Value = Scene> {
                 restitution: 0.6,
                 plastic_indentation: 0.0,
             },
+            assumed: Default::default(),
         })
 }
 
@@ -269,6 +270,7 @@ fn cylinder_scene() -> impl Strategy<Value = Scene> {
                 restitution: 0.6,
                 plastic_indentation: 0.0,
             },
+            assumed: Default::default(),
         })
 }
 
@@ -322,6 +324,7 @@ fn moderate_steel_cylinders_always_evaluate() {
                             restitution: 0.6,
                             plastic_indentation: 0.0,
                         },
+                        assumed: Default::default(),
                     };
                     let q = scene.quasistatic().unwrap_or_else(|e| {
                         panic!("R = {radius}, L = {length}, v0 = {v0}, plane {on_plane}: {e}")

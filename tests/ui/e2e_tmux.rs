@@ -262,9 +262,17 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
         s.contains("F(x) force–approach") && results_row(s, "proposed").contains(&x_after)
     });
 
-    // Unsaved changes: q asks, y quits.
+    // Unsaved changes: q asks; q again is "another key" and stays, the edit kept; y quits.
     tmux.keys(&["q"]);
-    tmux.wait_for("the question", |s| s.contains("Unsaved changes: y quits"));
+    tmux.wait_for("the question", |s| {
+        s.contains("Unsaved changes: y quit without saving · s save and quit · other keys stay")
+    });
+    tmux.keys(&["q"]);
+    tmux.wait_for("the explorer still, edited", |s| {
+        !s.contains("Unsaved changes") && s.contains("v₀     0.05 m/s")
+    });
+    tmux.keys(&["q"]);
+    tmux.wait_for("the question again", |s| s.contains("Unsaved changes"));
     tmux.keys(&["y"]);
     let restored = tmux.wait_for("the shell after the explorer", |s| s.contains("exited-0"));
     assert!(

@@ -93,7 +93,7 @@ fn app_on(tab: Tab) -> App {
     app
 }
 
-fn press(app: &mut App, code: KeyCode) {
+pub fn press(app: &mut App, code: KeyCode) {
     let event = Event::Key(KeyEvent::new(code, KeyModifiers::NONE));
     if let Some(action) = hertz_tui::ui::keymap::action_for_event(&app.mode, &event) {
         update(app, action);
@@ -772,10 +772,16 @@ fn engine_panel_shows_the_translation_and_cycles_engines() {
     assert!(screen.contains(&second), "{second}:\n{screen}");
     press(&mut app, KeyCode::Down);
     let scrolled = text(render(&app, 120, 40).backend().buffer());
-    assert!(
-        !scrolled.contains("Simbody / OpenSim (HuntCrossleyForce) —"),
-        "{scrolled}"
-    );
+    let heading = format!("{} —", engines[1].name);
+    assert!(!scrolled.contains(&heading), "{scrolled}");
+    // End shows the script's last line, the RESULT print, at the panel's bottom.
+    update(&mut app, hertz_tui::ui::action::Action::Resize(120, 40));
+    press(&mut app, KeyCode::End);
+    let end = text(render(&app, 120, 40).backend().buffer());
+    assert!(end.contains("print(f\"RESULT e_out"), "{end}");
+    press(&mut app, KeyCode::Home);
+    let home = text(render(&app, 120, 40).backend().buffer());
+    assert!(home.contains(&heading), "{home}");
     press(&mut app, KeyCode::Esc);
     let screen = text(render(&app, 120, 40).backend().buffer());
     assert!(!screen.contains(&second), "closed:\n{screen}");
@@ -815,7 +821,7 @@ fn a_failed_solve_says_why_in_the_results_and_on_the_chart() {
 #[test]
 fn the_data_cursor_reads_each_curve_at_its_place() {
     let mut app = app();
-    press(&mut app, KeyCode::Char('>'));
+    press(&mut app, KeyCode::Char('.'));
     let screen = text(render(&app, 160, 48).backend().buffer());
     let line = screen
         .lines()
@@ -835,7 +841,7 @@ fn the_data_cursor_reads_each_curve_at_its_place() {
             "{model:?} F({t}) = {expected} in {line}"
         );
     }
-    press(&mut app, KeyCode::Char('<'));
+    press(&mut app, KeyCode::Char(','));
     assert_eq!(app.views.explorer.data_cursor, Some(490));
     press(&mut app, KeyCode::Esc);
     assert_eq!(app.views.explorer.data_cursor, None);
@@ -939,17 +945,17 @@ fn a_click_on_a_chart_places_the_data_cursor_there() {
     );
 }
 
-/// The data cursor's readout never cuts a number: at every size each drawn model's reading on
-/// F(t) is whole, long (`proposed F 171.8 N`) or short (its glyph and the value in the axis's N),
-/// or counted in a closing `+N`, and each value is the model's force at that time.
+/// The data cursor's readout never cuts a number and names every curve: at every size each drawn
+/// model's reading on F(t) is on screen as its name (label, id or abbreviation) and its whole
+/// value, the model's force at that time (to 4 digits, or 3 where the chart is narrow).
 #[test]
 fn the_data_cursor_readout_fits_whole_readings_at_every_size() {
-    use hertz_tui::format::units::{NEWTON, engineering, sig};
+    use hertz_tui::format::units::{NEWTON, engineering};
     for (w, h) in [(80, 24), (120, 40), (160, 48), (200, 24)] {
         let mut app = app();
         update(&mut app, Action::Resize(w, h));
         for _ in 0..10 {
-            press(&mut app, KeyCode::Char('>'));
+            press(&mut app, KeyCode::Char('.'));
         }
         let mut screen = text(render(&app, w, h).backend().buffer());
         for _ in 0..3 {
@@ -963,42 +969,21 @@ fn the_data_cursor_readout_fits_whole_readings_at_every_size() {
             .lines()
             .find(|l| l.contains("t = "))
             .unwrap_or_else(|| panic!("{w}×{h}: no F(t) readout:\n{screen}"));
-        // Up to the pane's edge or the x title, two blanks after the reading.
-        let readout = line[line.find("t = ").unwrap()..]
-            .split('│')
-            .next()
-            .unwrap()
-            .split("  ")
-            .next()
-            .unwrap()
-            .trim_end();
-        let parts: Vec<&str> = readout.split(" · ").collect();
-        let t: f64 = parts[0][4..].split(' ').next().unwrap().parse().unwrap();
+        let after = &line[line.find("t = ").unwrap() + 4..];
+        let t: f64 = after.split(' ').next().unwrap().parse().unwrap();
         let t = t * 1e-6;
         let drawn = app.checked_models();
         assert!(drawn.len() >= 3, "{drawn:?}");
-        let more: usize = parts
-            .last()
-            .and_then(|p| p.strip_prefix('+'))
-            .map_or(0, |n| n.parse().unwrap());
-        let mut read = 0;
         for &model in &drawn {
             let f = app.solutions.solution(model).unwrap().trajectory.at(t).f;
-            let long = format!("F {}", engineering(f, NEWTON, 4));
-            let short = format!("{}{}", model_glyph(model), sig(f, 4));
-            if parts[1..]
-                .iter()
-                .any(|p| *p == short || (p.ends_with(&long) && p.contains(' ')))
-            {
-                read += 1;
-            }
+            let read = [4, 3].into_iter().any(|digits| {
+                let value = engineering(f, NEWTON, digits);
+                [model.label(), model.name(), model.short()]
+                    .iter()
+                    .any(|name| screen.contains(&format!("{name} {value}")))
+            });
+            assert!(read, "{w}×{h}: {} F({t}) whole:\n{screen}", model.name());
         }
-        assert_eq!(
-            read + more,
-            drawn.len(),
-            "{w}×{h}: every model read whole or counted: {readout}"
-        );
-        assert!(read >= 1, "{w}×{h}: {readout}");
     }
 }
 
@@ -1055,4 +1040,70 @@ fn narrow_study_headers_shorten_instead_of_cutting() {
         value.starts_with("e_out realized restitution ") || value.starts_with("e_out  "),
         "the output whole or its symbol alone: {output}"
     );
+}
+
+/// The y values of `model`'s line in `chart`, in drawing order.
+fn model_ys(chart: &hertz_tui::chart::Chart, model: ForceModel) -> Vec<f64> {
+    chart
+        .series
+        .iter()
+        .find(|s| s.name == model.name())
+        .unwrap_or_else(|| panic!("{model} in {}", chart.title))
+        .runs
+        .concat()
+        .into_iter()
+        .map(|p| p.1)
+        .collect()
+}
+
+/// Views 4 and 5 both chart e_out against v₀, with opposite trends for the same law: the sweep
+/// sets each law's damping from e at every v₀ (Hunt–Crossley's χ = 3(1 − e)/2 keeps its e_out
+/// flat, docs/physics.md §6.4), view 5 sets it at the scene's v₀ and holds it (e_out falls as v₀
+/// grows). Each title says which.
+#[test]
+fn the_two_e_out_against_v0_charts_say_how_they_set_the_damping() {
+    let sweep = app_on(Tab::named("sweep").unwrap());
+    let screen = text(render(&sweep, 160, 48).backend().buffer());
+    assert!(screen.contains("damping from e at each v₀"), "{screen}");
+    let charts = sweep.tab.view().charts(&sweep);
+    let flat = model_ys(&charts[0], ForceModel::HuntCrossley);
+    let spread = flat.iter().cloned().fold(f64::MIN, f64::max)
+        - flat.iter().cloned().fold(f64::MAX, f64::min);
+    assert!(spread < 1e-6, "re-derived at each v₀: {flat:?}");
+
+    let held = app_on(Tab::named("restitution").unwrap());
+    let screen = text(render(&held, 160, 48).backend().buffer());
+    assert!(
+        screen.contains("damping set at v₀ = 0.3 m/s and held"),
+        "{screen}"
+    );
+    let charts = held.tab.view().charts(&held);
+    let falling = model_ys(&charts[1], ForceModel::HuntCrossley);
+    assert!(
+        falling.first().unwrap() - falling.last().unwrap() > 0.3,
+        "held: {falling:?}"
+    );
+    // Both meet at the scene's own impact: its e_out at v₀ (0.712 for e = 0.6, eq 19).
+    assert!((flat[0] - 0.712).abs() < 5e-4, "{}", flat[0]);
+}
+
+/// With `C` the Models pane says "calibrated to e"; view 5 shows each law's own damping rule
+/// (its subject), and says so on every chart and on its table rather than implying they follow.
+#[test]
+fn view_5_says_its_charts_are_the_laws_own_rules_while_calibrated() {
+    let mut app = app_on(Tab::named("restitution").unwrap());
+    let before = text(render(&app, 160, 48).backend().buffer());
+    assert!(!before.contains("own rules: C not applied"), "{before}");
+    press(&mut app, KeyCode::Char('C'));
+    settle(&mut app);
+    let screen = text(render(&app, 160, 48).backend().buffer());
+    assert!(screen.contains("calibrated to e"), "{screen}");
+    assert_eq!(
+        screen.matches("own rules: C not applied").count(),
+        2,
+        "both charts: {screen}"
+    );
+    press(&mut app, KeyCode::Char('c'));
+    let table = text(render(&app, 160, 48).backend().buffer());
+    assert!(table.contains("own rules: C not applied"), "{table}");
 }

@@ -9,14 +9,15 @@
 //! - Combination: none — one expression per body pair; k is the pair's own.
 //! - End of contact: max(0, …) clamps the force, so contact ends where F falls to 0.
 //!
-//! No hertz-tui law has the STEP damping; it is solved here by hertz-tui's DOP853.
+//! As a hertz-tui law: the `adams-impact` row, calibrated with the printed d.
 
+use crate::model::force::adams_impact::{AdamsImpact, DEPTH_FRACTION};
+use crate::model::force::{AnyLaw, ForceModel};
 use crate::model::power_law::PowerLaw;
 
-use super::calibrate::solve_for_restitution;
-use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
-use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
+use super::solve::{calibrated_damping, realise};
+use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
@@ -26,16 +27,17 @@ pub const ENGINE: Engine = Engine {
     translate,
 };
 
-/// d as a fraction of the elastic x_max: damping reaches c_max within the first tenth of the
-/// compression, so most of the impact sees the constant c_max.
-const DEPTH_FRACTION: f64 = 0.1;
+/// The law-table row of IMPACT.
+const ROW: ForceModel = ForceModel::with_id("adams-impact");
 
-fn law(k: f64, n: f64, c_max: f64, depth: f64) -> ContactLaw {
-    ContactLaw {
-        elastic: PowerLaw { k, n },
-        damping: EngineDamping::Step { c_max, depth },
-        end: EndRule::Clamp,
-    }
+/// The IMPACT law with stiffness k, exponent n, c_max and d for an impact at `v0`.
+fn law(scene: &EngineScene, elastic: PowerLaw, c_max: f64, depth: f64, v0: f64) -> AnyLaw {
+    AnyLaw::AdamsImpact(AdamsImpact::new(
+        ROW,
+        &scene.params(elastic, v0),
+        c_max,
+        depth,
+    ))
 }
 
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
@@ -56,25 +58,24 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(scene.x_max)
         ),
     );
+    let elastic = PowerLaw {
+        k: stiffness.value,
+        n: exponent.value,
+    };
     // The tangent spring's critical damping at x_max sets the scale of c_max.
     let critical = 2.0 * (scene.mass * scene.elastic.tangent_stiffness(scene.x_max)).sqrt();
-    let e_of = |c: f64| {
-        contact::solve(
-            &law(stiffness.value, exponent.value, c, depth.value),
-            scene.mass,
-            scene.v0,
-        )
-        .map(|r| r.e_out)
-    };
-    let c_max = solve_for_restitution(ENGINE.id, scene.restitution, 0.0, 1e3 * critical, e_of)?;
+    let c_max = calibrated_damping(ENGINE.id, ROW, scene, elastic, 0.0..=1e3 * critical, |c| {
+        Ok(law(scene, elastic, c, depth.value, scene.v0))
+    })?;
     let c_max = Parameter::new(
         "cmax",
         c_max,
         "N·s/m",
-        "the maximum damping whose realised e at v₀ is the requested e, F ≥ 0 clamp included (Brent root on hertz-tui's solve)",
+        "the maximum damping whose realised e at v₀ is the requested e, F ≥ 0 clamp included (hertz-tui's calibration of adams-impact)",
     );
-    let law = law(stiffness.value, exponent.value, c_max.value, depth.value);
-    let (realised, e_of_v) = realise(&law, scene)?;
+    let (realised, e_of_v) = realise(scene, |v0| {
+        Ok(law(scene, elastic, c_max.value, depth.value, v0))
+    })?;
     let notes = vec![
         "The model must be in SI units (m, N, s); x is the distance between the markers, x₁ its value at first touch (e.g. the sphere's radius above a plane through its centre marker).".into(),
         "With a fixed c_max and d, e depends on v₀ (see e(v₀)).".into(),
@@ -101,9 +102,14 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             c_max.text(),
             depth.text()
         ),
-        hertz_tui_law:
-            "none: Hertz with a STEP-ramped viscous damper, solved by hertz-tui's DOP853".into(),
-        end_rule: law.end,
+        hertz_tui_law: format!(
+            "Hertz with a STEP-ramped viscous damper (adams-impact), c_max = {} N·s/m, d = {} m, {}",
+            c_max.text(),
+            depth.text(),
+            ROW.spec().contact.describe()
+        ),
+        model: ROW,
+        end_rule: ROW.spec().contact,
         approximation: None,
         parameters: vec![stiffness, exponent, c_max, depth],
         fragments,

@@ -11,7 +11,6 @@
 //!   where F falls to 0. (Chrono::Multicore computes SMC forces in its own routine, not read
 //!   here.)
 
-use super::contact::EndRule;
 use super::error::EngineError;
 use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
@@ -32,7 +31,7 @@ fn single_precision(x: f64) -> f64 {
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
     let family = Family {
         engine: &ENGINE,
-        end: EndRule::Clamp,
+        model: tsuji::CLAMPED,
         parameter: "SetRestitution",
         stored: single_precision,
     };

@@ -8,15 +8,16 @@
 //! - End of contact: both factors are clamped at 0 (F ≥ 0); the Hunt–Crossley factor 1 + d·ẋ
 //!   never reaches 0 during an impact (exact::hysteresis), so contact ends at x = 0.
 //!
-//! As a hertz-tui law: the Hunt–Crossley family with n = 1 and χ = d·v₀, solved exactly.
+//! As a hertz-tui law: the `hunt-crossley` row (the Hunt–Crossley family) with n = 1 and
+//! χ = d·v₀, solved exactly and calibrated by the family's exact relation.
 
 use crate::model::Shape;
+use crate::model::force::ForceModel;
 use crate::model::power_law::PowerLaw;
 
-use super::calibrate::hunt_crossley_chi;
-use super::contact::{ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
-use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, realise, shown};
+use super::solve::{calibrated_damping, realise};
+use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, shown};
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
@@ -40,7 +41,21 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(scene.t_contact)
         ),
     );
-    let chi = hunt_crossley_chi(scene.restitution);
+    let elastic = PowerLaw {
+        k: k.value / 2.0,
+        n: 1.0,
+    };
+    let law_at = |v0: f64, chi: f64| {
+        ForceModel::HuntCrossley.law_with_damping(&scene.params(elastic, v0), chi)
+    };
+    let chi = calibrated_damping(
+        ENGINE.id,
+        ForceModel::HuntCrossley,
+        scene,
+        elastic,
+        0.0..=f64::INFINITY,
+        |chi| law_at(scene.v0, chi),
+    )?;
     let d = Parameter::new(
         "hunt_crossley_dissipation",
         chi / scene.v0,
@@ -50,15 +65,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(chi)
         ),
     );
-    let law = ContactLaw {
-        elastic: PowerLaw {
-            k: k.value / 2.0,
-            n: 1.0,
-        },
-        damping: EngineDamping::HuntCrossley { alpha: d.value },
-        end: EndRule::Clamp,
-    };
-    let (realised, e_of_v) = realise(&law, scene)?;
+    let (realised, e_of_v) = realise(scene, |v0| Ok(law_at(v0, d.value * v0)?))?;
     let mut notes = vec![
         format!(
             "A linear spring cannot match Hertz in both force and time: with K from the contact time, F_max is {} N against Hertz's {} N.",
@@ -66,7 +73,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(scene.elastic.force(scene.x_max))
         ),
         "d is a constant, so e falls as v₀ rises (see e(v₀)); the rebound speed never exceeds 1/d.".into(),
-        "Numbers are for the continuous law (MultibodyPlant time_step = 0, or a step far below the contact time); Drake's discrete approximations (TAMSI, SAP, Similar, Lagged) step through it in time.".into(),
+        "Numbers are for the continuous law (MultibodyPlant time_step = 0). TAMSI, Similar and Lagged step through it (the step below); SAP ignores hunt_crossley_dissipation and comes out perfectly inelastic with these parameters: use --engine drake-sap for SAP.".into(),
     ];
     if d.value > UNPHYSICAL_DISSIPATION {
         notes.push(format!(
@@ -91,14 +98,15 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         source: ENGINE.source,
         law: format!(
             "fₙ = k·x·(1 + d·ẋ)₊ with k = {} N/m, d = {} s/m",
-            shown(law.elastic.k),
+            shown(elastic.k),
             d.text()
         ),
         hertz_tui_law: format!(
             "Hunt–Crossley family F = k·xⁿ·(1 + χ·ẋ/v₀), n = 1, χ = {}",
             shown(d.value * scene.v0)
         ),
-        end_rule: law.end,
+        model: ForceModel::HuntCrossley,
+        end_rule: ForceModel::HuntCrossley.spec().contact,
         approximation: None,
         parameters: vec![k, d],
         fragments,

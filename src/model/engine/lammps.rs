@@ -11,7 +11,6 @@
 
 use crate::model::Shape;
 
-use super::contact::EndRule;
 use super::error::EngineError;
 use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Translation, shown};
@@ -27,7 +26,7 @@ pub const ENGINE: Engine = Engine {
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
     let family = Family {
         engine: &ENGINE,
-        end: EndRule::Tension,
+        model: tsuji::TENSION,
         parameter: "e (hertz/material, damping coeff_restitution)",
         stored: |x| x,
     };

@@ -9,10 +9,9 @@
 
 use crate::model::numeric::roots::brent;
 
-use super::calibrate::solve_for_restitution;
-use super::contact::{self, EndRule};
 use super::error::EngineError;
-use super::{Engine, EngineScene, Parameter, Translation, lammps, realise, shown, tsuji};
+use super::solve::{realise, solve};
+use super::{Engine, EngineScene, Parameter, Translation, lammps, shown, tsuji};
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
@@ -34,24 +33,16 @@ fn scale(scene: &EngineScene) -> f64 {
 }
 
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
-    scene.require_point_contact(ENGINE.id)?;
-    let end = EndRule::Tension;
-    let e_of_alpha = |a: f64| {
-        contact::solve(
-            &tsuji::law_with(scene, a * scale(scene), end),
-            scene.mass,
-            scene.v0,
-        )
-        .map(|r| r.e_out)
-    };
+    let model = tsuji::TENSION;
     let (alpha_min, alpha_max) = (alpha(1.0), alpha(0.0));
-    let needed = solve_for_restitution(
+    let gamma = tsuji::calibrated_gamma(
         ENGINE.id,
-        scene.restitution,
-        alpha_min,
-        alpha_max,
-        e_of_alpha,
+        scene,
+        model,
+        alpha_min * scale(scene),
+        alpha_max * scale(scene),
     )?;
+    let needed = gamma / scale(scene);
     let e_in = brent(|e| alpha(e) - needed, 0.0, 1.0).ok_or(EngineError::Unreachable {
         engine: ENGINE.id,
         requested: scene.restitution,
@@ -62,13 +53,13 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         e_in,
         "",
         format!(
-            "the input e whose α(e) = {} realises the requested e at v₀ (Brent roots on hertz-tui's solve, then on the polynomial)",
+            "the input e whose α(e) = {} realises the requested e at v₀ (hertz-tui's calibration of hertz-viscous-tension, then a Brent root on the polynomial)",
             shown(needed)
         ),
     );
-    let law = tsuji::law_with(scene, alpha(parameter.value) * scale(scene), end);
-    let (realised, e_of_v) = realise(&law, scene)?;
-    let naive = e_of_alpha(alpha(scene.restitution))?;
+    let law_of_alpha = |a: f64, v0: f64| tsuji::law_with(scene, model, a * scale(scene), v0);
+    let (realised, e_of_v) = realise(scene, |v0| Ok(law_of_alpha(alpha(parameter.value), v0)?))?;
+    let naive = solve(&law_of_alpha(alpha(scene.restitution), scene.v0)?)?.e_out;
     let notes = vec![
         format!(
             "Given the requested e itself ({}), α(e) = {} realises {}: Tsuji's polynomial fits e of the linear spring–dashpot's α, not this law's.",
@@ -90,11 +81,12 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         ),
         hertz_tui_law: format!(
             "Hertz with Tsuji's viscous damping ({}), α = {}, {}",
-            tsuji::family_id(end),
+            tsuji::family_id(model),
             shown(alpha(parameter.value)),
-            end.describe()
+            model.spec().contact.describe()
         ),
-        end_rule: end,
+        model,
+        end_rule: model.spec().contact,
         approximation: None,
         fragments: lammps::lines(scene, &parameter.text(), "tsuji"),
         parameters: vec![parameter],

@@ -8,7 +8,6 @@
 //! - End of contact: `limitForce on` keeps the normal force from turning attractive (F ≥ 0);
 //!   with it off (the default) tension is allowed and contact ends at δ = 0.
 
-use super::contact::EndRule;
 use super::error::EngineError;
 use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
@@ -24,7 +23,7 @@ pub const ENGINE: Engine = Engine {
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
     let family = Family {
         engine: &ENGINE,
-        end: EndRule::Clamp,
+        model: tsuji::CLAMPED,
         parameter: "coefficientRestitution",
         stored: |x| x,
     };

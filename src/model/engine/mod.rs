@@ -2,9 +2,10 @@
 //!
 //! Each engine is one file holding its documented law (source named in its doc comment), the rule
 //! that maps the scene to its parameters, and its input fragment; [`ENGINES`] lists them. The
-//! engine's law is written as a [`contact::ContactLaw`] and solved by hertz-tui itself, so the
-//! translation states what the engine will really give: realised restitution at v₀ and over a
-//! range of v₀, peak force, contact time and the largest stable explicit step.
+//! engine's law is a law of hertz-tui's table ([`crate::model::force::LAWS`]; a row added where
+//! the table lacked one), solved and calibrated as every law is ([`solve`]), so the translation
+//! states what the engine will really give: realised restitution at v₀ and over a range of v₀,
+//! peak force, contact time and the largest stable explicit step.
 #![warn(missing_docs)]
 
 use serde::Serialize;
@@ -12,25 +13,30 @@ use serde::Serialize;
 use crate::format::round_trip;
 
 use super::error::ModelError;
+use super::force::{ContactRule, ForceModel};
 use super::power_law::PowerLaw;
 use super::{Body, Scene, Shape};
 
 pub mod adams;
-pub mod calibrate;
 pub mod chrono;
-pub mod contact;
 pub mod drake;
+pub mod drake_sap;
 pub mod error;
 pub mod lammps;
 pub mod lammps_tsuji;
 pub mod liggghts;
 pub mod mujoco;
+pub mod regime;
+pub mod run;
 pub mod simbody;
+pub mod solve;
 pub mod tsuji;
 pub mod yade;
 
-pub use contact::{ContactLaw, EndRule, EngineDamping, EngineImpact};
 pub use error::EngineError;
+pub use regime::RegimeWarning;
+pub use run::Run;
+pub use solve::{EngineImpact, realise};
 
 /// One engine: its `--engine` id, its name, and how it translates a scene.
 #[derive(Debug, Clone, Copy)]
@@ -46,8 +52,9 @@ pub struct Engine {
 }
 
 /// Every engine hertz-tui translates for; adding one is a file and a row here.
-pub const ENGINES: [Engine; 9] = [
+pub const ENGINES: [Engine; 10] = [
     drake::ENGINE,
+    drake_sap::ENGINE,
     simbody::ENGINE,
     chrono::ENGINE,
     liggghts::ENGINE,
@@ -98,6 +105,58 @@ pub fn find(id: &str) -> Result<&'static Engine, EngineError> {
 pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
     let engine = find(id)?;
     (engine.translate)(&EngineScene::new(scene)?)
+}
+
+/// A translation with what running it takes and gives: the script, its step and claim, the
+/// engine version it was run in, and the scene's regime warnings.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct EngineRun {
+    /// The translation.
+    #[serde(flatten)]
+    pub translation: Translation,
+    /// Where the scene leaves what the engine's law describes.
+    pub warnings: Vec<RegimeWarning>,
+    /// The script, its step and what it gives.
+    pub run: Run,
+}
+
+/// Translates `scene` for the engine `id` with a runnable script whose step keeps e, F_max and the
+/// contact time within `tolerance` (relative) of the engine's continuous law.
+///
+/// MuJoCo on the Fig. 5 scene: the printed step is a fraction of the contact time, not of
+/// MuJoCo's timeconst, and hertz-tui's model of MuJoCo's stepping realises the requested e = 0.6
+/// within 1 % there; the script sets it:
+///
+/// ```
+/// use hertz_tui::model::engine::run::{Claim, DEFAULT_TOLERANCE};
+/// use hertz_tui::model::engine::{shown, translate_run};
+/// use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
+///
+/// let scene = Registry::builtin()?.scene(DEFAULT_SCENE)?;
+/// let mujoco = translate_run("mujoco", &scene, DEFAULT_TOLERANCE)?;
+/// let Claim::Stepped(choice) = &mujoco.run.claim else { panic!("MuJoCo steps") };
+/// assert!(choice.steps_per_contact >= 10.0);
+/// assert!((choice.at_step.e_out / 0.6 - 1.0).abs() <= 0.01);
+/// let script = &mujoco.run.script.as_ref().unwrap().text;
+/// assert!(script.contains(&format!("timestep=\"{}\"", shown(choice.step))));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn translate_run(id: &str, scene: &Scene, tolerance: f64) -> Result<EngineRun, EngineError> {
+    if !(tolerance > 0.0 && tolerance < 1.0) {
+        return Err(EngineError::Tolerance(tolerance));
+    }
+    let engine = find(id)?;
+    let engine_scene = EngineScene::new(scene)?;
+    let mut translation = (engine.translate)(&engine_scene)?;
+    let run = run::run(&engine_scene, &translation, tolerance)?;
+    if !run.fragments.is_empty() {
+        translation.fragments = run.fragments.clone();
+    }
+    Ok(EngineRun {
+        translation,
+        warnings: regime::regime_warnings(scene)?,
+        run,
+    })
 }
 
 /// What every engine needs of a scene, SI units.
@@ -256,8 +315,10 @@ pub struct Translation {
     pub law: String,
     /// The same law among hertz-tui's.
     pub hertz_tui_law: String,
-    /// How the engine's contact ends.
-    pub end_rule: EndRule,
+    /// The row of hertz-tui's law table the engine's law is (`--model` id in JSON).
+    pub model: ForceModel,
+    /// How the engine's contact ends: the row's rule.
+    pub end_rule: ContactRule,
     /// Where the translation approximates the engine (`None`: the engine's law exactly).
     pub approximation: Option<String>,
     /// The engine's parameters, as it takes them.
@@ -278,22 +339,6 @@ pub struct Translation {
 
 /// The factors of v₀ at which [`Translation::e_of_v`] is evaluated: two decades around the scene.
 pub const VELOCITY_FACTORS: [f64; 7] = [0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0];
-
-/// What the engine's law gives: at v₀, and its restitution at [`VELOCITY_FACTORS`]·v₀.
-pub fn realise(
-    law: &ContactLaw,
-    scene: &EngineScene,
-) -> Result<(EngineImpact, Vec<VelocityPoint>), EngineError> {
-    let at_v0 = contact::solve(law, scene.mass, scene.v0)?;
-    let e_of_v = VELOCITY_FACTORS
-        .iter()
-        .map(|f| {
-            let v0 = f * scene.v0;
-            contact::solve(law, scene.mass, v0).map(|r| VelocityPoint { v0, e_out: r.e_out })
-        })
-        .collect::<Result<_, _>>()?;
-    Ok((at_v0, e_of_v))
-}
 
 /// How a body's geometry reads in prose ("sphere R = 0.01 m").
 pub fn describe(shape: &Shape) -> String {

@@ -19,12 +19,13 @@
 use std::f64::consts::PI;
 
 use crate::model::Shape;
+use crate::model::error::ModelError;
+use crate::model::force::{AnyLaw, ForceModel};
 use crate::model::power_law::PowerLaw;
 
-use super::calibrate::solve_for_restitution;
-use super::contact::{self, ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
-use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, realise, shown};
+use super::solve::{calibrated_damping, realise};
+use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, shown};
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
@@ -37,28 +38,39 @@ pub const ENGINE: Engine = Engine {
 /// A constant impedance: d_min = d_max = 0.95, MuJoCo's default d_max.
 const SOLIMP: &str = "0.95 0.95 0.001 0.5 2";
 
-/// MuJoCo's linear soft contact as a force on reduced mass m: K = m·ω₀², c = 2ζ·ω₀·m, clamped.
-fn law(mass: f64, omega: f64, zeta: f64) -> ContactLaw {
-    ContactLaw {
-        elastic: PowerLaw {
-            k: mass * omega * omega,
-            n: 1.0,
-        },
-        damping: EngineDamping::Viscous {
-            c: 2.0 * zeta * omega * mass,
-            p: 0.0,
-        },
-        end: EndRule::Clamp,
-    }
+/// The law-table row of MuJoCo's contact: the linear spring–dashpot with the f ≥ 0 clamp.
+const ROW: ForceModel = ForceModel::with_id("kelvin-voigt");
+
+/// The largest damping ratio tried: far beyond critical, where the clamp has long ended contact.
+const MAX_DAMPRATIO: f64 = 50.0;
+
+/// MuJoCo's linear soft contact as a force on reduced mass m, for an impact at `v0`:
+/// K = m·ω₀², c = 2ζ·ω₀·m, clamped at f ≥ 0.
+fn law(scene: &EngineScene, omega: f64, zeta: f64, v0: f64) -> Result<AnyLaw, ModelError> {
+    let elastic = PowerLaw {
+        k: scene.mass * omega * omega,
+        n: 1.0,
+    };
+    ROW.law_with_damping(&scene.params(elastic, v0), 2.0 * zeta * omega * scene.mass)
 }
 
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
     // ω₀ from the scene's elastic contact time, the same rule as every linear engine here.
     let omega = PI / scene.t_contact;
-    let e_of = |zeta: f64| {
-        contact::solve(&law(scene.mass, omega, zeta), scene.mass, scene.v0).map(|r| r.e_out)
+    let critical = 2.0 * omega * scene.mass;
+    let elastic = PowerLaw {
+        k: scene.mass * omega * omega,
+        n: 1.0,
     };
-    let zeta = solve_for_restitution(ENGINE.id, scene.restitution, 0.0, 50.0, e_of)?;
+    let c = calibrated_damping(
+        ENGINE.id,
+        ROW,
+        scene,
+        elastic,
+        0.0..=MAX_DAMPRATIO * critical,
+        |c| law(scene, omega, c / critical, scene.v0),
+    )?;
+    let zeta = c / critical;
     if zeta <= 0.0 {
         return Err(EngineError::Unreachable {
             engine: ENGINE.id,
@@ -70,7 +82,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         "dampratio",
         zeta,
         "",
-        "the damping ratio whose realised e at v₀ is the requested e with the f ≥ 0 clamp (Brent root on hertz-tui's solve)",
+        "the damping ratio whose realised e at v₀ is the requested e with the f ≥ 0 clamp (hertz-tui's calibration of kelvin-voigt)",
     );
     let timeconst = Parameter::new(
         "timeconst",
@@ -95,16 +107,15 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         "1/s",
         "direct form: B = 2/timeconst",
     );
-    let law = law(scene.mass, omega, dampratio.value);
-    let (realised, e_of_v) = realise(&law, scene)?;
+    let (realised, e_of_v) = realise(scene, |v0| Ok(law(scene, omega, dampratio.value, v0)?))?;
     let unclamped = (-PI * dampratio.value / (1.0 - dampratio.value.powi(2)).sqrt()).exp();
     let timestep = timeconst.value / 10.0;
     let mut notes = vec![
         "Assumed: one frictionless contact (condim 1), no gravity or other force during the impact (a₀ = 0), solimp with d_min = d_max (then the impedance cancels), continuous time.".into(),
         format!(
-            "MuJoCo replaces a timeconst below 2·timestep by 2·timestep (refsafe): keep timestep ≤ {} s; the fragment uses timeconst/10 = {} s, and the realised e is the continuous-time limit.",
-            shown(timeconst.value / 2.0),
-            shown(timestep)
+            "The numbers above are the continuous-time limit. The step must follow the contact time, not timeconst: at timeconst/10 = {} s a lightly damped contact gains energy. The step printed below is hertz-tui's model of MuJoCo's Euler stepping, and stays under timeconst/2 = {} s, below which MuJoCo would raise timeconst (refsafe).",
+            shown(timestep),
+            shown(timeconst.value / 2.0)
         ),
     ];
     if dampratio.value < 1.0 {
@@ -145,7 +156,8 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             dampratio.text()
         ),
         hertz_tui_law: "linear spring–dashpot (kelvin-voigt) with the F ≥ 0 clamp".into(),
-        end_rule: law.end,
+        model: ROW,
+        end_rule: ROW.spec().contact,
         approximation: Some(
             "MuJoCo's soft constraint read as a continuous-time linear spring–dashpot (constant impedance, no other forces)".into(),
         ),

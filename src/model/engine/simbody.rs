@@ -9,16 +9,17 @@
 //! - End of contact: 1 + (3/2)·c·ẋ never reaches 0 during an impact (exact::hysteresis), so
 //!   contact ends at x = 0 whether or not a tensile total is dropped.
 //!
-//! As a hertz-tui law: the Hunt–Crossley family with n = 3/2 and χ = (3/2)·c·v₀, solved exactly.
+//! As a hertz-tui law: the `hunt-crossley` row (the Hunt–Crossley family) with n = 3/2 and
+//! χ = (3/2)·c·v₀, solved exactly and calibrated by the family's exact relation.
 
 use std::f64::consts::SQRT_2;
 
+use crate::model::force::ForceModel;
 use crate::model::power_law::PowerLaw;
 
-use super::calibrate::hunt_crossley_chi;
-use super::contact::{ContactLaw, EndRule, EngineDamping};
 use super::error::EngineError;
-use super::{Engine, EngineScene, Fragment, Parameter, Translation, realise, shown};
+use super::solve::{calibrated_damping, realise};
+use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
 
 /// This engine's row of [`super::ENGINES`].
 pub const ENGINE: Engine = Engine {
@@ -42,7 +43,22 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(scene.e_star)
         ),
     );
-    let chi = hunt_crossley_chi(scene.restitution);
+    let e_combined = stiffness.value / SERIES_FACTOR;
+    let elastic = PowerLaw {
+        k: 4.0 / 3.0 * scene.r_star.sqrt() * e_combined,
+        n: 1.5,
+    };
+    let law_at = |v0: f64, chi: f64| {
+        ForceModel::HuntCrossley.law_with_damping(&scene.params(elastic, v0), chi)
+    };
+    let chi = calibrated_damping(
+        ENGINE.id,
+        ForceModel::HuntCrossley,
+        scene,
+        elastic,
+        0.0..=f64::INFINITY,
+        |chi| law_at(scene.v0, chi),
+    )?;
     let dissipation = Parameter::new(
         "dissipation",
         2.0 * chi / (3.0 * scene.v0),
@@ -52,18 +68,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(chi)
         ),
     );
-    let e_combined = stiffness.value / SERIES_FACTOR;
-    let law = ContactLaw {
-        elastic: PowerLaw {
-            k: 4.0 / 3.0 * scene.r_star.sqrt() * e_combined,
-            n: 1.5,
-        },
-        damping: EngineDamping::HuntCrossley {
-            alpha: 1.5 * dissipation.value,
-        },
-        end: EndRule::Tension,
-    };
-    let (realised, e_of_v) = realise(&law, scene)?;
+    let (realised, e_of_v) = realise(scene, |v0| Ok(law_at(v0, 1.5 * dissipation.value * v0)?))?;
     let [b1, b2] = scene.bodies();
     let documented =
         |m: &crate::model::Material| m.youngs_modulus / (1.0 - m.poisson_ratio.powi(2));
@@ -105,14 +110,15 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         source: ENGINE.source,
         law: format!(
             "f = k·x^(3/2)·(1 + 1.5·c·ẋ) with k = {} N/m^1.5, c = {} s/m",
-            shown(law.elastic.k),
+            shown(elastic.k),
             dissipation.text()
         ),
         hertz_tui_law: format!(
             "Hunt–Crossley family F = k·xⁿ·(1 + χ·ẋ/v₀), n = 3/2, χ = {}",
             shown(1.5 * dissipation.value * scene.v0)
         ),
-        end_rule: law.end,
+        model: ForceModel::HuntCrossley,
+        end_rule: ForceModel::HuntCrossley.spec().contact,
         approximation: None,
         parameters: vec![stiffness, dissipation],
         fragments,

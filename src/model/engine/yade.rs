@@ -10,7 +10,6 @@
 //! - End of contact: without adhesion the total normal force is set to 0 when the viscous part
 //!   would make it attractive (F ≥ 0 clamp).
 
-use super::contact::EndRule;
 use super::error::EngineError;
 use super::tsuji::{self, Family};
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
@@ -26,7 +25,7 @@ pub const ENGINE: Engine = Engine {
 fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
     let family = Family {
         engine: &ENGINE,
-        end: EndRule::Clamp,
+        model: tsuji::CLAMPED,
         parameter: "en",
         stored: |x| x,
     };

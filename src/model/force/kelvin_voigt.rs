@@ -55,8 +55,12 @@ impl KelvinVoigt {
         ))
     }
 
-    /// K = m·(π/t_c)², t_c of eq 7 (docs/physics.md §6.3), N/m.
+    /// K = m·(π/t_c)², t_c of eq 7 (docs/physics.md §6.3), N/m: k itself for a linear law
+    /// (t_c = π√(m/k)), without the rounding of t_c's beta function.
     pub fn stiffness_of(params: &ImpactParams) -> f64 {
+        if params.law.n == 1.0 {
+            return params.law.k;
+        }
         let t_c = params.law.contact_time(params.mass, params.v0);
         params.mass * (PI / t_c).powi(2)
     }

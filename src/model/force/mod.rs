@@ -10,6 +10,7 @@ use super::error::{ModelError, require_positive};
 use super::power_law::PowerLaw;
 use super::scene::ImpactConditions;
 
+pub mod adams_impact;
 pub mod any;
 pub mod contact;
 pub mod dry_friction;

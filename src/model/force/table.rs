@@ -51,7 +51,8 @@ pub struct DampingParam {
 
 /// How contact ends (besides the compressive-only cutoff that [`ContactRule::ApproachZero`] laws
 /// apply where they would turn tensile, see [`super::law`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum ContactRule {
     /// At x = 0; where the law would pull (F < 0) first, contact ends there.
     ApproachZero,
@@ -297,6 +298,25 @@ law_table! {
         style: LawStyle {
             glyph: 'v',
             hue: Hue::Green,
+        },
+        chi: None,
+    };
+    AdamsImpact = adams_impact::AdamsImpact::build,
+    LawSpec {
+        id: "adams-impact",
+        label: "Adams IMPACT F≥0",
+        short: "IMPACT",
+        source: "MSC Adams/Solver function reference, IMPACT; docs/physics.md §6.8",
+        family: Family::Viscous,
+        damping: Some(DampingParam {
+            symbol: "c_max",
+            key: "c_max",
+            unit: "N·s/m",
+        }),
+        contact: ContactRule::ForceZero,
+        style: LawStyle {
+            glyph: 'a',
+            hue: Hue::Yellow,
         },
         chi: None,
     };

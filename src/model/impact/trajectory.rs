@@ -391,17 +391,19 @@ impl Trajectory {
         let steep_end = self.extrema.x_residual == 0.0
             && slower_than_x(unloading, x_probe, -v_out, Phase::Unloading);
         let mut grown = if steep_start { fine } else { f64::INFINITY };
+        let f_step = FORCE_STEP * self.extrema.f_max.abs() * dx / self.extrema.x_max;
+        let breakpoint = self.law.loading_breakpoint();
         loop {
             while let Some(mark) = marks.next_if(|m| m.t < t) {
                 out.push(*mark);
             }
             // A sample that falls exactly on a mark is the mark.
-            let v = match marks.peek() {
-                Some(mark) if mark.t == t => mark.v,
+            let (x, v, f) = match marks.peek() {
+                Some(mark) if mark.t == t => (mark.x, mark.v, mark.f),
                 _ => {
                     let sample = self.sample_on(curves, t, &mut cursor);
                     out.push(sample);
-                    sample.v
+                    (sample.x, sample.v, sample.f)
                 }
             };
             if t >= t_end {
@@ -411,6 +413,18 @@ impl Trajectory {
             let mut step = (dx / (v.abs() + a * longest)).min(longest).min(grown);
             if steep_end {
                 step = step.min(((t_end - t) / 2.0).max(fine));
+            }
+            // Below a loading breakpoint the law's force may bend over a few dots (Adams' STEP
+            // ramps its damper in over [0, d]): there a step may move F by FORCE_STEP at most.
+            if breakpoint.is_some_and(|x_b| v > 0.0 && x < x_b) {
+                let mut probe = Cursor::default();
+                while step > shortest
+                    && (self.sample_on(curves, (t + step).min(t_end), &mut probe).f - f).abs()
+                        > f_step
+                {
+                    step /= 2.0;
+                    probe = Cursor::default();
+                }
             }
             let step = step.max(shortest);
             grown = 2.0 * step;
@@ -437,6 +451,12 @@ impl Trajectory {
         self.marks()
     }
 }
+
+/// The most a chart's samples let the force move between two below a law's loading breakpoint,
+/// as a fraction of F_max per fraction of x_max that they may move (a chart's dx/x_max, which
+/// shrinks on taller plots): half, so that a force ramped in over a few dots of x (Adams' STEP
+/// damper, docs/physics.md §6.8) is drawn as closely as one that rises with x.
+const FORCE_STEP: f64 = 0.5;
 
 /// Whether |F| grows slower than x near x = 0 (F ∝ xᵖ with p below about 0.85), from its values
 /// at `x` and 2`x`: false where F vanishes there or is not finite.

@@ -6,7 +6,7 @@ use super::dopri5::Dopri5;
 use super::events::EventTracker;
 use super::fixed_step::{FixedKind, FixedStep};
 use super::radau5::Radau5;
-use super::step_control::is_finite;
+use super::step_control::{is_finite, rhs};
 use super::{
     DenseOutput, Event, Integration, Method, OdeError, OdeSystem, Options, Segment, State, Stats,
     Stop,
@@ -174,7 +174,16 @@ fn run<S: Scheme>(
                     (landing.t, landing.y)
                 }
                 None => {
-                    dense.truncate_at(hit.t);
+                    let slope = rhs(sys, &mut stats, hit.t, &hit.y);
+                    let last = dense.segments().last().cloned();
+                    let refit = last.filter(|_| is_finite(&slope));
+                    match refit.and_then(|s| s.hermite_ending_at(hit.t, hit.y, slope)) {
+                        Some(refitted) => {
+                            dense.truncate_at(t);
+                            dense.push(refitted);
+                        }
+                        None => dense.truncate_at(hit.t),
+                    }
                     (hit.t, hit.y)
                 }
             };

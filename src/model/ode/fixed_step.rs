@@ -8,6 +8,7 @@
 //! Symplectic Euler and Verlet are splitting methods for ẋ = v, v̇ = a(t, x, v): they update x
 //! from v themselves and read only the acceleration component f(t, y)[1] of the system.
 
+use super::dense::monotone_slopes;
 use super::driver::{Scheme, Step};
 use super::step_control::{is_finite, rhs};
 use super::{OdeError, OdeSystem, Options, Segment, State, Stats};
@@ -132,13 +133,16 @@ impl Scheme for FixedStep {
         Ok(Step {
             t: t_new,
             y: y_new,
-            segment: Segment::Hermite {
-                t0: t,
-                h,
-                y0: *y,
-                y1: y_new,
-                f0,
-                f1: f_new,
+            segment: {
+                let (f0, f1) = monotone_slopes(h, (y, &y_new), (f0, f_new), false);
+                Segment::Hermite {
+                    t0: t,
+                    h,
+                    y0: *y,
+                    y1: y_new,
+                    f0,
+                    f1,
+                }
             },
         })
     }

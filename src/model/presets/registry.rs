@@ -9,6 +9,7 @@ use crate::model::material::Material;
 use crate::model::overrides::{self, Override};
 use crate::model::scene::Scene;
 use crate::model::scene_file::{self, Document, SceneView};
+use crate::model::scene_title::{bodies_name, retitled};
 use crate::model::system::SystemSpec;
 
 use super::builtin;
@@ -236,9 +237,22 @@ impl Registry {
         builtin::SCENES.iter().any(|(n, _)| *n == name)
     }
 
+    /// The scene of `doc` with `overrides` applied. An edited scene is renamed by what its bodies
+    /// are (unless `name` itself is set): a preset's "…on steel plate" no longer names it once
+    /// `--set body2.material=…` changed the plate.
     fn decode(&self, mut doc: Document, overrides: &[Override]) -> Result<Scene, PresetError> {
+        let original = (!overrides.is_empty())
+            .then(|| scene_file::decode_scene(&doc, &self.catalog).ok())
+            .flatten();
         overrides::apply(&mut doc, overrides, &self.catalog)?;
-        Ok(scene_file::decode_scene(&doc, &self.catalog)?)
+        let mut scene = scene_file::decode_scene(&doc, &self.catalog)?;
+        if !overrides.is_empty() && !overrides.iter().any(|o| o.key == "name") {
+            scene.name = match original {
+                Some(original) => retitled(&original, None, &scene).0,
+                None => bodies_name(&scene),
+            };
+        }
+        Ok(scene)
     }
 
     /// (origin for messages, TOML text) of a preset name or, failing that, a file path.

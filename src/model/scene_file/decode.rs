@@ -6,11 +6,11 @@ use toml::{Table, Value};
 
 use crate::model::body::{Body, Shape};
 use crate::model::material::Material;
-use crate::model::scene::{ImpactConditions, Scene};
+use crate::model::scene::{Assumed, ImpactConditions, Scene};
 
 use super::document::{Document, Problem, SceneFileError, ValueIssue, join};
 use super::schema::{
-    BODY_KEYS, IMPACT_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, shape_keys,
+    BODY_KEYS, IMPACT_TABLE_KEYS, MATERIAL_FILE_KEYS, MATERIAL_KEYS, SCENE_KEYS, shape_keys,
 };
 use super::view::SceneView;
 
@@ -151,6 +151,7 @@ impl Decoder<'_> {
         let body1 = self.body(root, "body1")?;
         let body2 = self.body(root, "body2")?;
         let impact = self.impact(root)?;
+        let assumed = self.assumed(root)?;
         // Refused here too, so that a bad view or system is located in the file whoever reads the
         // scene.
         self.view(root)?;
@@ -160,7 +161,33 @@ impl Decoder<'_> {
             body1,
             body2,
             impact,
+            assumed,
         })
+    }
+
+    /// The `assumed` list of `[impact]`: which of e and x_pl the scene's user did not give.
+    fn assumed(&self, root: &Table) -> Result<Assumed, SceneFileError> {
+        let path = "impact.assumed";
+        let mut assumed = Assumed::default();
+        let Some(value) = self.table(root, "", "impact")?.get("assumed") else {
+            return Ok(assumed);
+        };
+        let Value::Array(keys) = value else {
+            return Err(self.wrong_type(path, "a list of [impact] keys", value));
+        };
+        for key in keys {
+            match key.as_str() {
+                Some(key) if Assumed::KEYS.contains(&key) => assumed.set(key, true),
+                _ => {
+                    return Err(self.wrong_type(
+                        path,
+                        "a list of \"restitution\" and \"plastic_indentation\"",
+                        key,
+                    ));
+                }
+            }
+        }
+        Ok(assumed)
     }
 
     fn body(&self, root: &Table, key: &str) -> Result<Body, SceneFileError> {
@@ -271,7 +298,7 @@ impl Decoder<'_> {
 
     fn impact(&self, root: &Table) -> Result<ImpactConditions, SceneFileError> {
         let table = self.table(root, "", "impact")?;
-        self.check_keys("impact", table, IMPACT_KEYS)?;
+        self.check_keys("impact", table, IMPACT_TABLE_KEYS)?;
         Ok(ImpactConditions {
             v0: self.number(table, "impact", "v0", " (pre-impact velocity, m/s)")?,
             restitution: self.number(

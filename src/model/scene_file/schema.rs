@@ -30,8 +30,12 @@ pub(super) const MATERIAL_FILE_KEYS: &[&str] = &[
     "yield_stress",
     "density",
 ];
-/// Keys of `[impact]` (all required).
+/// The number keys of `[impact]` (all required).
 pub(super) const IMPACT_KEYS: &[&str] = &["v0", "restitution", "plastic_indentation"];
+/// Every key of `[impact]`: its numbers and the optional `assumed` list, which names the numbers
+/// the scene's user did not give ([`Assumed`](crate::model::scene::Assumed)).
+pub(super) const IMPACT_TABLE_KEYS: &[&str] =
+    &["v0", "restitution", "plastic_indentation", "assumed"];
 /// The shapes a body may have.
 pub(crate) const SHAPES: &[&str] = &["sphere", "cylinder", "plane"];
 

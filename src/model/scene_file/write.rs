@@ -108,6 +108,13 @@ pub fn to_toml_with_system(
         "plastic_indentation = {}  # x_pl in m, used by the proposed viscous model\n",
         toml_float(i.plastic_indentation)
     ));
+    if !scene.assumed.is_empty() {
+        let keys: Vec<String> = scene.assumed.keys().iter().map(|k| quote(k)).collect();
+        out.push_str(&format!(
+            "assumed = [{}]  # not given by the scene's user: stand-ins\n",
+            keys.join(", ")
+        ));
+    }
     if let Some(view) = view {
         out.push('\n');
         out.push_str(&view.solver_table());

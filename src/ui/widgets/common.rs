@@ -8,6 +8,8 @@ use ratatui::widgets::{Block, Borders};
 use crate::model::ForceModel;
 use crate::ui::style::{Role, Theme};
 
+use super::status::shortened;
+
 /// A pane's frame, ratatui's `Block`: full borders on roomy screens, a titled top rule on compact
 /// ones, in the theme's border and title styles.
 pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: bool) -> Block<'a> {
@@ -17,6 +19,13 @@ pub fn pane<'a>(title: impl Into<ratatui::text::Line<'a>>, theme: Theme, roomy: 
         .border_style(theme.style(Role::Muted))
         .title(title)
         .title_style(theme.style(Role::Title))
+}
+
+/// [`pane`] for `area`, its title cut to fit with `…` where it is too long (ratatui would cut it
+/// mid-word); on compact screens a rule cell is left before the next pane's title.
+pub fn titled<'a>(title: &str, area: Rect, theme: Theme, roomy: bool) -> Block<'a> {
+    let room = area.width.saturating_sub(if roomy { 2 } else { 1 });
+    pane(shortened(title, usize::from(room)), theme, roomy)
 }
 
 /// How a pane names models: the paper's label, the kebab id, or the abbreviation, longest first.

@@ -36,7 +36,10 @@ pub fn line(row: Row, theme: Theme) -> (Line<'static>, Option<Position>) {
     };
     let scroll = editor.input.visual_scroll(value_width.saturating_sub(1));
     let text: String = editor.input.value().chars().skip(scroll).collect();
-    let role = if editor.error.is_some() {
+    let role = if editor.selected {
+        // Shown selected: the first key typed replaces it.
+        Role::Cursor
+    } else if editor.error.is_some() {
         Role::Error
     } else {
         Role::Normal

@@ -339,12 +339,24 @@ fn axes(
     let title = theme.style(Role::Label).add_modifier(Modifier::BOLD);
     put(buf, inner.x, inner.y, &chart.y.title, title, inner);
     let x_title = width(&chart.x.title);
-    if let Some(readout) = &chart.readout {
-        // The cursor's reading takes the row above the plot after the y title.
+    let room = readout_room(inner, chart);
+    if let Some(readout) = &chart.readout
+        && let Some((text, form)) = readout.line(usize::from(room))
+    {
         let x = inner.x + width(&chart.y.title) + 2;
-        let room = inner.right().saturating_sub(x);
-        let text = readout.fit(usize::from(room));
+        // The cursor's reading takes the row above the plot after the y title where it fits on
+        // one line (else it is a box on the plot: `readout_box`), each curve's name in its ink.
         put(buf, x, inner.y, &text, theme.style(Role::Normal), inner);
+        let mut name_x = x + width(&readout.at) + 3;
+        for curve in &readout.curves {
+            let name: String = curve
+                .text(form)
+                .chars()
+                .take(curve.name_len(form))
+                .collect();
+            put(buf, name_x, inner.y, &name, theme.ink(curve.ink), inner);
+            name_x += width(&curve.text(form)) + 3;
+        }
         if f.x_title_below {
             let x = inner.right().saturating_sub(x_title);
             put(buf, x, axis_y + 2, &chart.x.title, title, inner);
@@ -365,9 +377,18 @@ fn axes(
     }
 }
 
-/// Labels of the rules beside their line on the plot's top row, notes under it.
-fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker: MarkerStyle) {
+/// Labels of the rules beside their line on the plot's top row, marks' labels beside their
+/// glyph (none that the data cursor's reading box, `hidden`, would cover in part), notes under it.
+fn labels(
+    buf: &mut Buffer,
+    chart: &Chart,
+    f: &ChartFrame,
+    (theme, marker): (Theme, MarkerStyle),
+    hidden: Option<Rect>,
+) {
     let plot = f.plot;
+    let covered =
+        |x: u16, y: u16, w: u16| hidden.is_some_and(|h| h.intersects(Rect::new(x, y, w.max(1), 1)));
     for rule in &chart.rules {
         let [_, end] = rule.ends(chart);
         let Some((col, row)) = cell_of(chart, plot, marker, end) else {
@@ -377,7 +398,9 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
         if rule.horizontal {
             // At the right end, on the rule's row.
             let x = plot.right().saturating_sub(w).max(plot.x);
-            put(buf, x, row, &rule.label, theme.ink(rule.ink), plot);
+            if !covered(x, row, w) {
+                put(buf, x, row, &rule.label, theme.ink(rule.ink), plot);
+            }
             continue;
         }
         let x = if col + 1 + w <= plot.right() {
@@ -387,7 +410,9 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
         } else {
             continue;
         };
-        put(buf, x, plot.y, &rule.label, theme.ink(rule.ink), plot);
+        if !covered(x, plot.y, w) {
+            put(buf, x, plot.y, &rule.label, theme.ink(rule.ink), plot);
+        }
     }
     for mark in &chart.marks {
         let (Some(label), Some((col, row))) = (&mark.label, cell_of(chart, plot, marker, mark.at))
@@ -400,7 +425,9 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
         } else {
             col.saturating_sub(w + 1)
         };
-        put(buf, x, row, label, theme.ink(mark.ink), plot);
+        if !covered(x, row, w) {
+            put(buf, x, row, label, theme.ink(mark.ink), plot);
+        }
     }
     // Notes wrapped to the plot's width from its second row, where they leave two thirds of the
     // plot to the curves; else one line naming what has no curve.
@@ -427,6 +454,107 @@ fn labels(buf: &mut Buffer, chart: &Chart, f: &ChartFrame, theme: Theme, marker:
     }
 }
 
+/// The data cursor's reading as a box on the plot: where, its rows, their name form, and the
+/// `+N more` row where the plot has fewer rows than curves.
+struct ReadoutBox {
+    rect: Rect,
+    rows: Vec<String>,
+    form: usize,
+    more: Option<String>,
+}
+
+/// Where the data cursor's reading goes when it does not fit the row above the plot: a box on the
+/// plot's top, on the side away from the cursor's rule, with a blank column either side; `None`
+/// where it fits that row (or there is no reading).
+fn readout_box(
+    chart: &Chart,
+    inner: Rect,
+    f: &ChartFrame,
+    marker: MarkerStyle,
+) -> Option<ReadoutBox> {
+    let readout = chart.readout.as_ref()?;
+    let plot = f.plot;
+    if readout
+        .line(usize::from(readout_room(inner, chart)))
+        .is_some()
+        || plot.height < 2
+    {
+        return None;
+    }
+    // At most half the plot's width, but room for the names' abbreviations and values.
+    let widest = |form: usize| {
+        (0..readout.curves.len())
+            .map(|i| readout.curves[i].text(form).chars().count())
+            .chain([readout.at.chars().count()])
+            .max()
+            .unwrap_or(0)
+    };
+    let want = (0..readout.forms())
+        .map(widest)
+        .find(|&w| w <= usize::from(plot.width / 2));
+    let text_width = want
+        .unwrap_or(usize::MAX)
+        .min(usize::from(plot.width.saturating_sub(2)));
+    let (mut rows, form) = readout.rows(text_width);
+    let height = usize::from(plot.height);
+    let mut more = None;
+    if rows.len() > height {
+        let left = rows.len() - (height - 1);
+        rows.truncate(height - 1);
+        more = Some(format!("+{left} more"));
+    }
+    // Away from the cursor's rule: on the right when the rule is in the left half.
+    let rule_col = chart
+        .rules
+        .iter()
+        .find(|r| !r.horizontal)
+        .and_then(|r| cell_of(chart, plot, marker, (r.at, chart.y.range[0])))
+        .map_or(plot.x, |(col, _)| col);
+    let w = (text_width as u16 + 2).min(plot.width);
+    let x = if rule_col < plot.x + plot.width / 2 {
+        plot.right().saturating_sub(w)
+    } else {
+        plot.x
+    };
+    let h = (rows.len() + usize::from(more.is_some())) as u16;
+    Some(ReadoutBox {
+        rect: Rect::new(x, plot.y, w, h).intersection(plot),
+        rows,
+        form,
+        more,
+    })
+}
+
+/// Draws the reading's box: each row over blanks, curve `i`'s name (row `i + 1`) in its ink.
+fn draw_readout_box(buf: &mut Buffer, chart: &Chart, boxed: &ReadoutBox, theme: Theme) {
+    let Some(readout) = &chart.readout else {
+        return;
+    };
+    let area = boxed.rect;
+    let blank = " ".repeat(usize::from(area.width));
+    let normal = theme.style(Role::Normal);
+    for (i, row) in boxed.rows.iter().enumerate() {
+        let y = area.y + i as u16;
+        put(buf, area.x, y, &blank, normal, area);
+        put(buf, area.x + 1, y, row, normal, area);
+        if let Some(curve) = i.checked_sub(1).and_then(|c| readout.curves.get(c)) {
+            let name: String = row.chars().take(curve.name_len(boxed.form)).collect();
+            put(buf, area.x + 1, y, &name, theme.ink(curve.ink), area);
+        }
+    }
+    if let Some(more) = &boxed.more {
+        let y = area.y + boxed.rows.len() as u16;
+        put(buf, area.x, y, &blank, normal, area);
+        put(buf, area.x + 1, y, more, theme.style(Role::Muted), area);
+    }
+}
+
+/// Columns left for the data cursor's reading on the row above the plot, after the y title.
+fn readout_room(inner: Rect, chart: &Chart) -> u16 {
+    let x = inner.x + width(&chart.y.title) + 2;
+    inner.right().saturating_sub(x)
+}
+
 /// Draws `chart` in `area` inside `pane`.
 pub fn render(
     frame: &mut Frame,
@@ -445,7 +573,17 @@ pub fn render(
     let buf = frame.buffer_mut();
     plot(buf, chart, f.plot, theme, marker);
     axes(buf, chart, inner, &f, theme, marker);
-    labels(buf, chart, &f, theme, marker);
+    let boxed = readout_box(chart, inner, &f, marker);
+    labels(
+        buf,
+        chart,
+        &f,
+        (theme, marker),
+        boxed.as_ref().map(|b| b.rect),
+    );
+    if let Some(boxed) = &boxed {
+        draw_readout_box(buf, chart, boxed, theme);
+    }
 }
 
 /// [`render`] with the legend along the pane's bottom edge on roomy screens (compact panes have

@@ -11,8 +11,7 @@ use ratatui::widgets::Paragraph;
 
 use crate::chart::model_glyph;
 use crate::model::ForceModel;
-use crate::model::recommend::recommend;
-use crate::ui::app::{App, Cursor};
+use crate::ui::app::{App, Cursor, Scroll};
 use crate::ui::style::{Role, Theme, sample};
 
 use super::common::{NameForm, pane, span};
@@ -43,27 +42,29 @@ pub fn row_count() -> u16 {
     rows().len() as u16
 }
 
-/// The first row shown: the top of the list, unless row `anchor` would then fall below the
-/// `height` rows shown, in which case it is the last row shown.
-pub fn scroll_offset(anchor: usize, total: usize, height: usize) -> usize {
-    if total <= height || anchor < height {
-        return 0;
-    }
-    (anchor + 1 - height).min(total - height)
-}
-
-/// The first row shown in a list `height` rows high: the model under the cursor (else the focused
-/// one) stays in view.
+/// The first row shown in a list `height` rows high: scrolled from where it was drawn last only
+/// as far as keeps the model under the cursor in view (or, the cursor elsewhere, a newly focused
+/// model), so that clicking a row in view, or a field, scrolls nothing; stored for the next frame.
 fn offset_for(app: &App, rows: &[Row], height: usize) -> usize {
+    let new_focus = app.scroll.models_focus.replace(Some(app.focused)) != Some(app.focused);
     let anchor_model = match app.cursor {
-        Cursor::Model(model) => model,
-        _ => app.focused,
+        Cursor::Model(model) => Some(model),
+        _ if new_focus => Some(app.focused),
+        _ => None,
     };
-    let anchor = rows
-        .iter()
-        .position(|r| matches!(r, Row::Model(m) if *m == anchor_model))
-        .unwrap_or_default();
-    scroll_offset(anchor, rows.len(), height)
+    let stored = app.scroll.models.get();
+    let offset = match anchor_model {
+        Some(anchor_model) => {
+            let anchor = rows
+                .iter()
+                .position(|r| matches!(r, Row::Model(m) if *m == anchor_model))
+                .unwrap_or_default();
+            Scroll::keep_in_view(stored, anchor, rows.len(), height)
+        }
+        None => stored.min(rows.len().saturating_sub(height)),
+    };
+    app.scroll.models.set(offset);
+    offset
 }
 
 /// What a click at `position` of the checklist drawn in `area` hits: a model (not a family
@@ -92,7 +93,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let fits: Vec<ForceModel> = app
         .valid
         .as_ref()
-        .map(|v| recommend(&v.scene, &v.quasistatic).fits)
+        .map(|v| v.advice.fits.clone())
         .unwrap_or_default();
     let rows = rows();
     // The title keeps a rule cell before the next pane's title at 80 columns.
@@ -174,16 +175,23 @@ mod tests {
         let total = rows().len();
         assert!(total > ForceModel::ALL.len(), "family headings are rows");
         for height in 1..total + 2 {
-            for anchor in 0..total {
-                let offset = scroll_offset(anchor, total, height);
-                assert!(
-                    offset <= anchor && anchor < offset + height,
-                    "{anchor} {height}"
-                );
-                assert!(
-                    offset + height.min(total) <= total,
-                    "no blank rows below the list"
-                );
+            for first in 0..total {
+                for anchor in 0..total {
+                    let offset = Scroll::keep_in_view(first, anchor, total, height);
+                    assert!(
+                        offset <= anchor && anchor < offset + height,
+                        "{anchor} {height}"
+                    );
+                    assert!(
+                        offset + height.min(total) <= total,
+                        "no blank rows below the list"
+                    );
+                    // A row already in view scrolls nothing.
+                    let clamped = first.min(total.saturating_sub(height));
+                    if (clamped..clamped + height).contains(&anchor) {
+                        assert_eq!(offset, clamped, "{first} {anchor} {height}");
+                    }
+                }
             }
         }
     }

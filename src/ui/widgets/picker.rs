@@ -54,16 +54,26 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, picker: &Picker) {
     }
     let height = (items.len() as u16 + 2).min(area.height.saturating_sub(2));
     let popup = centered(area, popup_width, height);
+    let on_material = picker
+        .selected()
+        .is_some_and(|e| e.kind == EntryKind::Material);
+    let keys = if on_material {
+        "Enter: to the body under the cursor · 1 2: to body 1 2"
+    } else {
+        "Enter loads"
+    };
     let title = if picker.filter.is_empty() {
-        "Presets · type to filter · Enter loads a scene / applies a material to the body under the cursor · 1 2 pick the body".to_string()
+        format!("Presets · type to filter · {keys}")
     } else {
         format!(
-            "Presets · filter: {}▏ · {} of {}",
+            "Presets · filter: {}▏ · {} of {} · {keys}",
             picker.filter,
             visible.len(),
             picker.entries.len()
         )
     };
+    // Within the borders, with `…` where it is cut.
+    let title = shortened(&title, usize::from(popup_width.saturating_sub(2)));
     let list = List::new(items)
         .block(pane(title, theme, true))
         .highlight_style(theme.style(Role::Cursor));

@@ -5,14 +5,20 @@ use ratatui::layout::{Position, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph};
 
-use crate::ui::app::{App, Confirm, Prompt, PromptKind};
+use crate::ui::app::{App, Confirm, Export, Prompt, PromptKind};
 use crate::ui::style::Role;
 
 pub fn render(frame: &mut Frame, status: Rect, app: &App, prompt: &Prompt) {
     let theme = app.theme;
     let question = match prompt.kind {
+        PromptKind::Save if prompt.then_quit => {
+            " Save, then quit, as (preset name or path.toml): ".to_string()
+        }
         PromptKind::Save => " Save as (preset name, or a path ending in .toml): ".to_string(),
-        PromptKind::Export(model) => format!(" Export {} trajectory (CSV) to: ", model.name()),
+        PromptKind::Export(Export::Trajectory(model)) => {
+            format!(" Export {} trajectory (CSV) to: ", model.name())
+        }
+        PromptKind::Export(Export::Sweep) => " Export the sweep (CSV) to: ".to_string(),
     };
     let question_width = question.chars().count() as u16;
     let room = status.width.saturating_sub(question_width + 1);
@@ -50,9 +56,10 @@ pub fn render(frame: &mut Frame, status: Rect, app: &App, prompt: &Prompt) {
 pub fn render_question(frame: &mut Frame, status: Rect, app: &App, confirm: &Confirm) {
     let question = match confirm {
         Confirm::Quit => {
-            " Unsaved changes: y quits without saving · s saves · any other key stays ".to_string()
+            " Unsaved changes: y quit without saving · s save and quit · other keys stay "
+                .to_string()
         }
-        Confirm::ShadowBuiltin(name) => format!(
+        Confirm::ShadowBuiltin { name, .. } => format!(
             " `{name}` is a built-in preset: y saves a user preset that hides it · any other key: no "
         ),
         Confirm::Overwrite { path, .. } => format!(

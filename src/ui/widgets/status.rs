@@ -120,14 +120,10 @@ fn path_end(path: &str, budget: usize) -> String {
 
 pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     let theme = app.theme;
-    // After an edit the scene is no longer the preset it came from: its name would mislead.
-    let name = if app.is_dirty() {
-        "unsaved scene"
-    } else {
-        &app.draft.scene.name
-    };
+    // After an edit the scene is no longer the preset it came from: named by its bodies.
+    let (name, _) = app.title();
     let mut left = vec![Span::styled(
-        format!(" {}", shortened(name, usize::from(area.width / 3))),
+        format!(" {}", shortened(&name, usize::from(area.width / 3))),
         theme.style(Role::Title),
     )];
     if app.is_dirty() {

@@ -7,7 +7,7 @@ use ratatui::layout::{Position, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Wrap};
 
-use crate::chart::{Chart, Ink, Mark, Readout, Rule, model_glyph};
+use crate::chart::{Chart, Ink, Mark, Readout, ReadoutCurve, Rule, model_glyph};
 use crate::model::ForceModel;
 use crate::model::impact::Sample;
 use crate::ui::app::{App, ChartKind};
@@ -15,7 +15,7 @@ use crate::ui::data_cursor::{self, FULL};
 use crate::chart::sample::{Look, Series, plot};
 use crate::ui::style::{Role, Theme};
 use crate::format::units::{self, METRE, METRE_PER_SECOND, NEWTON, SECOND};
-use crate::ui::widgets::common::{model_name, pane, span};
+use crate::ui::widgets::common::{model_name, pane, span, titled};
 use crate::ui::widgets::graph;
 
 use super::results::reason_first;
@@ -93,10 +93,10 @@ fn cursor(
     x: f64,
     (x_scale, y_scale): (f64, f64),
 ) {
-    let (x_unit, y_name, y_unit) = match kind {
-        ChartKind::ForceDisplacement => (METRE, "F", NEWTON),
-        ChartKind::ForceTime => (SECOND, "F", NEWTON),
-        ChartKind::VelocityDisplacement => (METRE, "v", METRE_PER_SECOND),
+    let (x_unit, y_unit) = match kind {
+        ChartKind::ForceDisplacement => (METRE, NEWTON),
+        ChartKind::ForceTime => (SECOND, NEWTON),
+        ChartKind::VelocityDisplacement => (METRE, METRE_PER_SECOND),
     };
     let x_si = x * x_scale;
     let x_name = if kind == ChartKind::ForceTime {
@@ -124,19 +124,18 @@ fn cursor(
                 label: None,
             });
         }
-        let values: Vec<String> = readings
-            .iter()
-            .map(|r| units::engineering(value(r), y_unit, 4))
-            .collect();
-        let bare: Vec<String> = readings
-            .iter()
-            .map(|r| units::sig(value(r) / y_scale, 4))
-            .collect();
-        if !values.is_empty() {
-            curves.push((
-                format!("{} {y_name} {}", model_name(m, 9), values.join(" / ")),
-                format!("{}{}", model_glyph(m), bare.join("/")),
-            ));
+        if !readings.is_empty() {
+            curves.push(ReadoutCurve {
+                names: [m.label(), m.name(), m.short()]
+                    .into_iter()
+                    .map(str::to_string)
+                    .collect(),
+                ink: Ink::Model(m),
+                values: [4, 3]
+                    .into_iter()
+                    .map(|digits| joined(readings.iter().map(value), y_unit, digits))
+                    .collect(),
+            });
         }
     }
     chart.rules.push(Rule {
@@ -146,6 +145,17 @@ fn cursor(
         label: String::new(),
     });
     chart.readout = Some(Readout { at, curves });
+}
+
+/// Values of one unit to `digits` significant digits joined by ` / ` with the unit once, in the
+/// prefix of the largest: `254.9 / 94.12 N`, `0.2176 / -0.166 m/s`.
+fn joined(values: impl Iterator<Item = f64> + Clone, unit: units::Unit, digits: usize) -> String {
+    let largest = values.clone().map(f64::abs).fold(0.0, f64::max);
+    let prefix = units::engineering_prefix(largest, unit);
+    let numbers: Vec<String> = values
+        .map(|v| units::sig(v / (prefix.factor * unit.si_per_unit), digits))
+        .collect();
+    format!("{} {}{}", numbers.join(" / "), prefix.symbol, unit.symbol)
 }
 
 /// Draws the chart of `kind`; `hint` where some charts do not fit, so the title says which key
@@ -166,7 +176,7 @@ pub fn render(
     if hint {
         title.push_str(" · c: next chart");
     }
-    let block = pane(title, theme, roomy);
+    let block = titled(&title, area, theme, roomy);
     let inner = block.inner(area);
     if drawn_models(app).is_empty() {
         let failed = failures(app);
@@ -222,4 +232,34 @@ pub fn cursor_at(
     }
     let share = f64::from(position.x - plot.x) / f64::from(plot.width - 1);
     Some((share * f64::from(FULL)).round() as u16)
+}
+
+/// The data cursor's place (per mille of the x axis) at the focused model's peak on the chart
+/// `kind` as drawn on screen: F_max on F(x) and F(t), x_max on v(x), where the chart marks it.
+pub fn peak_at(app: &App, kind: ChartKind) -> Option<u16> {
+    let (width, height) = app.screen;
+    let on_screen = super::layout::layout(Rect::new(0, 0, width, height), kind, |w| {
+        super::form::resting_height(app, w)
+    })
+    .and_then(|areas| {
+        let roomy = areas.roomy;
+        areas
+            .charts
+            .into_iter()
+            .find(|(k, _)| *k == kind)
+            .map(|(_, rect)| pane("", Theme { color: false }, roomy).inner(rect))
+    });
+    // Off screen (no size known yet): the chart at a common size.
+    let (columns, rows) = on_screen.map_or((60, 20), |inner| {
+        (inner.width.saturating_sub(7), inner.height.saturating_sub(4))
+    });
+    let chart = describe(app, kind, columns, rows);
+    let peak = chart
+        .marks
+        .iter()
+        .find(|m| m.ink == Ink::Model(app.focused) && m.label.is_some())?;
+    let share = chart.x.fraction(peak.at.0);
+    share
+        .is_finite()
+        .then(|| (share.clamp(0.0, 1.0) * f64::from(FULL)).round() as u16)
 }

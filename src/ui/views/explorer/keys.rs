@@ -7,6 +7,8 @@ use crate::ui::data_cursor;
 use crate::ui::edited;
 use crate::ui::field::Field;
 
+use super::chart;
+
 pub fn handle(app: &mut App, action: Action) -> Option<Action> {
     match action {
         Action::Up => app.move_cursor(false),
@@ -28,10 +30,17 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
             Cursor::Model(model) => app.toggle(model),
         },
         Action::CycleChart => app.views.explorer.chart = app.views.explorer.chart.next(),
-        Action::MoveCursor(forward) => {
+        Action::MoveCursor { forward, fast } => {
             let at = &mut app.views.explorer.data_cursor;
-            *at = Some(data_cursor::moved(*at, forward));
+            *at = Some(data_cursor::moved(*at, forward, fast));
         }
+        Action::CursorToPeak => match chart::peak_at(app, app.views.explorer.chart) {
+            Some(at) => app.views.explorer.data_cursor = Some(at),
+            None => app.say(
+                format!("no curve of {} to find its peak on", app.focused.label()),
+                true,
+            ),
+        },
         // Esc hides the data cursor.
         Action::Cancel => app.views.explorer.data_cursor = None,
         // A paste outside an editor opens the field under the cursor with the pasted text (its
@@ -40,7 +49,7 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
             let line = text.lines().next().unwrap_or_default().trim().to_string();
             match app.cursor {
                 Cursor::Field(field) if !line.is_empty() => {
-                    app.open_editor(EditTarget::Field(field), line);
+                    app.open_editor_typed(EditTarget::Field(field), line);
                 }
                 _ => return Some(Action::Paste(text)),
             }

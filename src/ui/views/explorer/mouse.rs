@@ -52,7 +52,7 @@ pub fn click(app: &mut App, position: Position) {
             if on_box {
                 app.toggle(model);
             } else {
-                app.focused = model;
+                app.cursor_on(model);
             }
         }
         Some(Target::Chart(at)) => app.views.explorer.data_cursor = Some(at),

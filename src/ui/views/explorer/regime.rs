@@ -8,7 +8,6 @@ use ratatui::widgets::Paragraph;
 
 use crate::model::pressure::Regime;
 use crate::format::recommendation;
-use crate::model::recommend::recommend;
 use crate::model::warnings::impact_warnings;
 use crate::ui::app::App;
 use crate::ui::style::Role;
@@ -60,7 +59,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     };
     let onset = &valid.quasistatic.onset;
     let v0 = valid.scene.impact.v0;
-    let advice = recommend(&valid.scene, &valid.quasistatic);
+    let advice = &valid.advice;
     let regime_role = match advice.regime {
         Regime::Elastic => Role::Good,
         Regime::YieldBegins => Role::Warning,
@@ -150,12 +149,22 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
                 .map(|l| Line::from(Span::styled(l, theme.style(Role::Warning)))),
         );
     }
-    let room = max_lines.saturating_sub(lines.len());
-    let why = wrap(&format!("why: {}", recommendation::why(&advice.reason)), width);
-    // The reason whole, or not at all; then the other convention if a line is left.
-    if why.len() <= room {
+    // The reason clause by clause, the most needed first, each whole or not at all; then the
+    // other convention if a line is left.
+    let clauses = recommendation::why_clauses(advice, &valid.scene);
+    for (i, clause) in clauses.iter().enumerate() {
+        let text = if i == 0 {
+            format!("why: {clause}")
+        } else {
+            format!("     {clause}")
+        };
+        let wrapped = wrap(&text, width);
+        if lines.len() + wrapped.len() > max_lines {
+            break;
+        }
         lines.extend(
-            why.into_iter()
+            wrapped
+                .into_iter()
                 .map(|l| Line::from(Span::styled(l, theme.style(Role::Muted)))),
         );
     }

@@ -342,7 +342,12 @@ fn model_row(
         }
         // The reason is laid over the row after the table is drawn.
         Some(Err(_)) => vec![name_cell],
-        None => vec![name_cell, span("computing…", theme.style(Role::Muted))],
+        // In the first number's column, with `…` where it is narrower than the word.
+        None => {
+            let width = widths.first().map_or(usize::MAX, |&w| usize::from(w));
+            let text = fit_reason("computing…", width);
+            vec![name_cell, span(text, theme.style(Role::Muted))]
+        }
     }
 }
 

@@ -31,12 +31,6 @@ impl View for Restitution {
         "restitution"
     }
 
-    /// e, the coefficient of restitution the view is about: "restitution" would push the help's
-    /// line of views past 80 columns.
-    fn short_title(&self) -> &'static str {
-        "e"
-    }
-
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen, app);
     }

@@ -15,10 +15,14 @@ use crate::ui::app::App;
 use crate::ui::layout::{ScreenLayout, left_width};
 use crate::model::study::runner::{RestitutionData, StudyKind};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{model_name, pane, span};
+use crate::ui::widgets::common::{model_name, pane, span, titled};
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
 use crate::chart::restitution as plot;
+
+/// Said by every chart and table of the view while `C` is on: they show each law's own damping
+/// rule, which is what they are about, and not the calibration the Models pane announces.
+pub const UNCALIBRATED: &str = " · own rules: C not applied";
 
 pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {
     let [left, right] = Layout::horizontal([
@@ -71,6 +75,9 @@ fn realised_chart(
     let budget = budget(area.width.saturating_sub(9), area.height.saturating_sub(6));
     let chart = plot::realised_chart(data, app.focused, budget);
     let mut title = format!("{} · = identity (e_out = e)", chart.title);
+    if app.calibrate {
+        title.push_str(UNCALIBRATED);
+    }
     if computing {
         title.push_str(" · computing…");
     }
@@ -81,17 +88,26 @@ fn velocity_chart(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionDa
     let budget = budget(area.width.saturating_sub(9), area.height.saturating_sub(6));
     let onset = app.valid.as_ref().map(|v| v.quasistatic.onset);
     let chart = plot::velocity_chart(data, app.focused, onset, budget);
-    draw(frame, area, app, roomy, chart.title.clone(), &chart);
+    let mut title = chart.title.clone();
+    if app.calibrate {
+        title.push_str(UNCALIBRATED);
+    }
+    draw(frame, area, app, roomy, title, &chart);
 }
 
 fn draw(frame: &mut Frame, area: Rect, app: &App, roomy: bool, title: String, chart: &Chart) {
-    let block = pane(title, app.theme, roomy);
+    let block = titled(&title, area, app.theme, roomy);
     graph::render_with_legend(frame, area, block, chart, (app.marker, app.theme), roomy);
 }
 
 fn table(frame: &mut Frame, area: Rect, app: &App, data: &RestitutionData, roomy: bool) {
     let theme = app.theme;
-    let block = pane("realised e for the requested e (c: charts)", theme, roomy);
+    let title = if app.calibrate {
+        format!("realised e for the requested e (c: charts){UNCALIBRATED}")
+    } else {
+        "realised e for the requested e (c: charts)".to_string()
+    };
+    let block = titled(&title, area, theme, roomy);
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let name_width = 20;

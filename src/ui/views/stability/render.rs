@@ -18,7 +18,7 @@ use crate::model::study::runner::{MeasuredBound, MethodRun, StabilityData, Study
 use crate::ui::style::{Role, Theme, sample};
 use crate::format::units::{self, sig};
 use crate::ui::views;
-use crate::ui::widgets::common::{pane, span, wrap};
+use crate::ui::widgets::common::{pane, span, titled};
 use crate::ui::widgets::editable;
 use crate::ui::widgets::graph::{self, budget};
 use crate::chart::stability::{self as plot, Curve};
@@ -27,7 +27,7 @@ use crate::chart::stability::{self as plot, Curve};
 fn name_cell(curve: Curve, text: &str, theme: Theme, narrow: bool) -> Cell<'static> {
     let (ink, glyph) = match curve {
         Curve::Reference => (Ink::Foreground, REFERENCE_GLYPH),
-        Curve::Method(m) => (Ink::Method(m), method_glyph(m)),
+        Curve::Method(m) | Curve::Steps(m) => (Ink::Method(m), method_glyph(m)),
     };
     let style = theme.ink(ink);
     let lead = if narrow {
@@ -61,7 +61,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     if views::is_studying(app) {
         title.push_str(" · computing…");
     }
-    let block = pane(title, theme, roomy);
+    let block = titled(&title, head, theme, roomy);
     let inner = block.inner(head);
     frame.render_widget(block, head);
     header(frame, inner, app, data.as_deref());
@@ -308,13 +308,6 @@ fn chart(
     let columns = area.width.saturating_sub(9);
     let budget = budget(columns, area.height.saturating_sub(6));
     let chart = plot::chart(data, kind, columns, budget);
-    let mut title = chart.title.clone();
-    if area.width < 60 {
-        title = wrap(&title, usize::from(area.width.saturating_sub(2)))
-            .into_iter()
-            .next()
-            .unwrap_or_default();
-    }
-    let block = pane(title, theme, roomy);
+    let block = titled(&chart.title, area, theme, roomy);
     graph::render_with_legend(frame, area, block, &chart, (app.marker, theme), roomy);
 }

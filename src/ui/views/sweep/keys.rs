@@ -1,9 +1,13 @@
 //! The sweep form's keys: ↑↓ move between its rows, ←→ change the row, Enter types it (or steps a
 //! row that has choices rather than a value).
 
+use tui_input::Input;
+
 use crate::ui::action::Action;
-use crate::ui::app::App;
+use crate::ui::app::{App, Export, Mode, Prompt, PromptKind};
+use crate::ui::export;
 use crate::ui::field::Nudge;
+use crate::ui::views;
 
 use super::settings::SweepField;
 
@@ -21,9 +25,28 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
                 nudge(app, field, Nudge::Up);
             }
         }
+        Action::Export => export(app),
         action => return Some(action),
     }
     None
+}
+
+/// `e`: the sweep on screen to a CSV file, as `sweep --format csv` writes it (the other views
+/// export the focused model's trajectory).
+fn export(app: &mut App) {
+    let key = match app.studies.sweep() {
+        Some(Ok(data)) if !views::is_studying(app) => data.spec.key,
+        Some(Err(reason)) => return app.say(format!("no sweep to export: {reason}"), true),
+        _ => return app.say("the sweep is being computed: export when it is done", true),
+    };
+    let stem = app.preset.as_deref().unwrap_or(&app.draft.scene.name);
+    let path = export::default_sweep_path(stem, key);
+    app.mode = Mode::Prompt(Prompt {
+        kind: PromptKind::Export(Export::Sweep),
+        input: Input::new(path.display().to_string()),
+        error: None,
+        then_quit: false,
+    });
 }
 
 /// The scene the sweep varies: the last valid one (the form may hold an invalid draft).

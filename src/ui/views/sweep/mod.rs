@@ -54,7 +54,7 @@ impl View for Sweep {
     }
 
     fn help(&self) -> Option<&'static str> {
-        Some("↑ ↓ rows; ← → change; Enter types or switches")
+        Some("↑ ↓ rows; ← → change; Enter types or switches; e: CSV")
     }
 
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
@@ -68,6 +68,7 @@ impl View for Sweep {
             ("←→", "change"),
             ("Space", "model"),
             ("[ ]", "focus"),
+            ("e", "CSV"),
         ]
     }
 

@@ -12,7 +12,7 @@ use crate::ui::app::{App, Mode};
 use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, SweepData};
 use crate::ui::style::Role;
-use crate::ui::widgets::common::{pane, span, wrap};
+use crate::ui::widgets::common::{pane, span, titled, wrap};
 use crate::ui::widgets::editable;
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
@@ -166,6 +166,6 @@ fn chart(frame: &mut Frame, area: Rect, app: &App, data: Option<&SweepData>, roo
     if computing {
         title.push_str(" · computing…");
     }
-    let block = pane(title, theme, roomy);
+    let block = titled(&title, area, theme, roomy);
     graph::render_with_legend(frame, area, block, &chart, (app.marker, theme), roomy);
 }

@@ -17,7 +17,7 @@ use crate::model::study::runner::{CurrentPoint, WorkPrecisionData};
 use crate::ui::style::{Role, Theme, sample};
 use crate::format::units::{self, sig};
 use crate::ui::views;
-use crate::ui::widgets::common::{flow, pane, span, wrap};
+use crate::ui::widgets::common::{flow, span, titled, wrap};
 use crate::ui::widgets::graph::{self, budget};
 use crate::chart::work_precision::{self as plot, CURRENT_GLYPH, Cost, ERROR_FLOOR};
 
@@ -34,7 +34,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
                     .to_string(),
                 _ => "no valid scene to measure".to_string(),
             };
-            let block = pane(title(app, None), theme, roomy);
+            let block = titled(&title(app, None), area, theme, roomy);
             let inner = block.inner(area);
             frame.render_widget(block, area);
             let lines: Vec<Line> = wrap(&text, usize::from(inner.width))
@@ -61,7 +61,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         Constraint::Length(notes.len() as u16),
     ])
     .areas(area);
-    let block = pane(title(app, Some(&data)), theme, roomy);
+    let block = titled(&title(app, Some(&data)), head, theme, roomy);
     let inner = block.inner(head);
     frame.render_widget(block, head);
     frame.render_widget(Paragraph::new(header), inner);
@@ -86,7 +86,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         graph::render(
             frame,
             rect,
-            pane(heading, theme, roomy),
+            titled(&heading, rect, theme, roomy),
             &chart,
             app.marker,
             theme,
