@@ -201,6 +201,7 @@ def main():
     parser.add_argument("--recorded", type=int, default=200)
     parser.add_argument("--every", type=int, default=1)
     parser.add_argument("--csv")
+    parser.add_argument("--progress", action="store_true", help="a line per value")
     args = parser.parse_args()
     freq = frequency()
     gammas = np.linspace(0.9, 3.5, args.values)[:: args.every]
@@ -219,6 +220,13 @@ def main():
             t = state[0]
             s, sd, _ = ball.table(t)
             state = (t, s, sd)
+        if args.progress:
+            used = time.process_time() - cpu
+            print(
+                f"  Γ = {gamma:.4f}: {impacts} impacts; so far {total} impacts, CPU {used:.2f} s, "
+                f"{1e6 * used / max(total, 1):.1f} µs per impact",
+                flush=True,
+            )
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
     print(
         f"scipy {args.stop}: f = {freq:.3f} Hz, {len(gammas)} values, {total} impacts, "
