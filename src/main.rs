@@ -5,7 +5,9 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use hertz_tui::cli::{self, Cli, CliError, Marker};
+use hertz_tui::model::presets::DEFAULT_SCENE;
 use hertz_tui::ui::MarkerStyle;
+use hertz_tui::ui::config::Config;
 
 /// mimalloc rather than the system allocator: the explorer's frame builds and drops its strings,
 /// spans and sample vectors every edit, and glibc's malloc and free took 9 % of an edit cycle's
@@ -27,9 +29,22 @@ fn main() -> color_eyre::Result<ExitCode> {
 /// Opens the explorer on the chosen scene. A bad scene is a user error (exit 2); failures of the
 /// terminal itself go through color_eyre.
 fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
+    let config = match Config::load() {
+        Ok(config) => config,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Ok(ExitCode::from(2));
+        }
+    };
+    // `--scene`, else the config file's, else the paper's Fig. 5.
+    let source = args
+        .scene
+        .clone()
+        .or_else(|| config.scene.clone())
+        .unwrap_or_else(|| DEFAULT_SCENE.to_string());
     let scene = cli::load_registry().and_then(|registry| {
-        let scene = registry.scene_with(&args.scene, &args.overrides)?;
-        Ok((scene, registry.scene_view(&args.scene)?))
+        let scene = registry.scene_with(&source, &args.overrides)?;
+        Ok((scene, registry.scene_view(&source)?))
     });
     match scene {
         Ok((scene, view)) => {
@@ -38,7 +53,7 @@ fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
                 Marker::Dot => MarkerStyle::Dot,
                 Marker::Block => MarkerStyle::Block,
             };
-            hertz_tui::ui::run(scene, view, &args.scene, marker)?;
+            hertz_tui::ui::run(scene, view, &source, marker, config)?;
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => Ok(exit(Err(e))),

@@ -1,6 +1,7 @@
 //! The figure back-end of [`Chart`]: SVG (vector, for reports) or PNG through plotters. The same
 //! description the terminal draws, on a white page: the ticks where the chart puts them, each
-//! series a solid line in its hue with its glyph at its peak and end, rules dashed, a legend.
+//! series a line in its hue and its law's pattern (solid, dashed, dotted) with its glyph at its
+//! peak and end, rules dashed, a legend.
 //!
 //! PNG text is drawn by ab_glyph from an embedded DejaVu Sans subset (`assets/fonts`), so no
 //! system font or fontconfig is needed; SVG text names the `sans-serif` family for the viewer.
@@ -14,7 +15,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{FontStyle, register_font};
 
-use super::{Chart, Hue, Ink};
+use super::{Chart, Dash, Hue, Ink};
 
 /// DejaVu Sans cut to Latin, Greek, sub- and superscripts and the symbols the charts use.
 const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans-subset.ttf");
@@ -255,7 +256,7 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         let style = color(s.ink).stroke_width(if s.focused { 3 } else { 2 });
         for run in &s.runs {
             let points = thinned(run.iter().filter_map(|&q| p.at(chart, q)));
-            area.draw(&PathElement::new(points, style))?;
+            stroke(area, points, s.ink.dash(), style)?;
         }
         let glyph = text_style(16, color(s.ink), HPos::Center, VPos::Center);
         let marked: Vec<(f64, f64)> = if s.steps {
@@ -294,6 +295,21 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         ))?;
     }
     Ok(())
+}
+
+/// A line through `points` in the pattern `dash`, as the terminal draws it: dashes of 10 px 6 px
+/// apart, dots of 2 px 4 px apart.
+fn stroke<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    points: Vec<(i32, i32)>,
+    dash: Dash,
+    style: ShapeStyle,
+) -> Drawn<DB> {
+    match dash {
+        Dash::Solid => area.draw(&PathElement::new(points, style)),
+        Dash::Dashed => area.draw(&DashedPathElement::new(points, 10, 6, style)),
+        Dash::Dotted => area.draw(&DashedPathElement::new(points, 2, 4, style)),
+    }
 }
 
 /// Pixels closer than this to the last point kept are dropped from a path: wide strokes drawn
@@ -345,10 +361,12 @@ fn legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart, p: &
     for (i, s) in chart.series.iter().enumerate() {
         let cy = y + 4 + row * i as i32 + row / 2;
         let ink = color(s.ink);
-        area.draw(&PathElement::new(
+        stroke(
+            area,
             vec![(x + 6, cy), (x + 34, cy)],
+            s.ink.dash(),
             ink.stroke_width(2),
-        ))?;
+        )?;
         area.draw(&Text::new(
             s.glyph.to_string(),
             (x + 20, cy),
@@ -464,6 +482,14 @@ mod tests {
             .count();
         assert_eq!(curves, 1, "{svg}");
         assert!(svg.contains("#00A0BE"), "hunt-crossley in cyan");
+        // Hunt–Crossley's line is dotted, as in the terminal: many short strokes, not one path.
+        let dots = svg
+            .split("<line")
+            .skip(1)
+            .filter(|l| l.contains("#00A0BE"))
+            .count()
+            + polylines.iter().filter(|p| p.contains("#00A0BE")).count();
+        assert!(dots > 20, "{dots} strokes: {svg}");
     }
 
     #[test]

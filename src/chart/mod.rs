@@ -17,6 +17,8 @@ pub mod sweep;
 pub mod ticks;
 pub mod work_precision;
 
+/// The pattern of an ink's lines: a law's is on its row of the law table.
+pub use crate::model::force::table::Dash;
 /// The colour of an ink, by name: a law's hue is part of its row of the law table.
 pub use crate::model::force::table::Hue;
 pub use layout::{Placed, place_ticks};
@@ -60,6 +62,21 @@ impl Ink {
             Ink::Warning => Hue::Yellow,
             Ink::Error => Hue::Red,
             Ink::Plain(hue) => hue,
+        }
+    }
+
+    /// The pattern of this ink's curves: a model's is on its row of the law table; the methods
+    /// that share the stability view's chart take three patterns, so that a method on top of the
+    /// reference leaves it showing in its gaps.
+    pub fn dash(self) -> Dash {
+        match self {
+            Ink::Model(m) => m.spec().style.dash,
+            Ink::Method(m) => match m {
+                Method::Radau5 | Method::Dopri5 | Method::SymplecticEuler => Dash::Solid,
+                Method::Dop853 | Method::Verlet => Dash::Dashed,
+                Method::Euler | Method::Rk4 => Dash::Dotted,
+            },
+            Ink::Foreground | Ink::Warning | Ink::Error | Ink::Plain(_) => Dash::Solid,
         }
     }
 }

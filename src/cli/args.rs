@@ -5,7 +5,6 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::model::ForceModel;
 use crate::model::impact::MethodChoice;
 use crate::model::overrides::Override;
-use crate::model::presets::DEFAULT_SCENE;
 use crate::model::scene_key::SceneKey;
 
 /// Explore impact contact forces: Hertz contact, dry friction, Hunt–Crossley, Lankarani–Nikravesh
@@ -15,9 +14,10 @@ use crate::model::scene_key::SceneKey;
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
-    /// Scene to open in the explorer: a preset name (see `hertz-tui list`) or a scene file path.
-    #[arg(long, value_name = "NAME|PATH", default_value = DEFAULT_SCENE)]
-    pub scene: String,
+    /// Scene to open in the explorer: a preset name (see `hertz-tui list`) or a scene file path
+    /// [default: the config file's `scene`, else fig5-steel-sphere-r10-plate].
+    #[arg(long, value_name = "NAME|PATH")]
+    pub scene: Option<String>,
     /// Override a key of the explorer's scene by its dotted path, e.g. impact.v0=0.5 (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,

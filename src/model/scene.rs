@@ -7,7 +7,7 @@ use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
 use super::force::ImpactParams;
 use super::pair::ContactPair;
-use super::quasistatic::{PairEstimate, Quasistatic};
+use super::quasistatic::{ContactGeometry, PairEstimate, Quasistatic};
 
 /// Conditions of the impact (the `[impact]` table of a scene file).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -162,6 +162,11 @@ impl SceneBodies {
 /// Refuses an estimate with a non-finite or non-positive number, naming the first one.
 fn require_finite_results(q: &Quasistatic) -> Result<(), ModelError> {
     let o = &q.onset;
+    // The contact's size too: a radius of 1e-107 m underflows the contact radius to 0.
+    let (size_name, size) = match q.geometry {
+        ContactGeometry::Point { contact_radius } => ("contact_radius", contact_radius),
+        ContactGeometry::Line { half_width, .. } => ("half_width", half_width),
+    };
     let values = [
         ("eta", q.eta),
         ("k", q.k),
@@ -175,6 +180,7 @@ fn require_finite_results(q: &Quasistatic) -> Result<(), ModelError> {
         ("v_yield_mean_pressure", o.v_yield_mean_pressure),
         ("v_plastic_mean_pressure", o.v_plastic_mean_pressure),
         ("v_wave_limit", o.v_wave_limit),
+        (size_name, size),
     ];
     match values.iter().find(|(_, v)| !(v.is_finite() && *v > 0.0)) {
         None => Ok(()),

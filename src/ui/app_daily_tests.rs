@@ -64,13 +64,7 @@ pub(super) fn preset_app(label: &str) -> (App, std::path::PathBuf) {
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene(DEFAULT_SCENE).unwrap();
     let view = registry.scene_view(DEFAULT_SCENE).unwrap();
-    let app = App::open(
-        scene,
-        view,
-        registry,
-        MarkerStyle::Braille,
-        Theme { color: false },
-    );
+    let app = App::open(scene, view, registry, MarkerStyle::Braille, Theme::Plain);
     (app, dir)
 }
 
@@ -571,12 +565,7 @@ impl App {
 fn a_preset_s_stand_ins_are_shown_as_assumed_until_edited() {
     let registry = Registry::builtin().unwrap();
     let scene = registry.scene("steel-sphere-r10-plate").unwrap();
-    let mut a = App::new(
-        scene,
-        registry,
-        MarkerStyle::Braille,
-        Theme { color: false },
-    );
+    let mut a = App::new(scene, registry, MarkerStyle::Braille, Theme::Plain);
     let assumed_rows = |a: &App| {
         screen(a, 160, 48)
             .iter()

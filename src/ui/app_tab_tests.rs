@@ -27,7 +27,7 @@ fn app() -> App {
         fig5_scene(),
         Registry::builtin().unwrap(),
         MarkerStyle::Braille,
-        Theme { color: true },
+        Theme::Dark,
     );
     app.take_jobs();
     app

@@ -23,7 +23,7 @@ pub(super) fn app() -> App {
         fig5_scene(),
         Registry::builtin().unwrap(),
         MarkerStyle::Braille,
-        Theme { color: true },
+        Theme::Dark,
     )
 }
 
@@ -521,7 +521,7 @@ fn saving_as_a_user_preset_lists_it_in_the_picker() {
     let scene = registry
         .scene(crate::model::presets::DEFAULT_SCENE)
         .unwrap();
-    let mut a = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+    let mut a = App::new(scene, registry, MarkerStyle::Braille, Theme::Dark);
     assert_eq!(
         a.preset.as_deref(),
         Some(crate::model::presets::DEFAULT_SCENE)

@@ -53,7 +53,7 @@ mod tests {
     fn the_explorer_figure_has_every_chart_of_the_checked_models() {
         let registry = Registry::builtin().unwrap();
         let scene = registry.scene(DEFAULT_SCENE).unwrap();
-        let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme { color: true });
+        let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme::Dark);
         for job in app.take_jobs() {
             update(&mut app, Action::Solved(Ok(worker::solve(&job))));
         }

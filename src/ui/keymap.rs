@@ -121,7 +121,7 @@ pub const INPUT_HINTS: &[&str] = &[
     "editing: Enter commits, Esc cancels, Ctrl-U clears, Ctrl-W deletes a word",
     "numbers: 200G, 200 GPa, 1 cm, 10 mm, 2.3 µm (um), 0.3 m/s, 3.6 km/h, 60%",
     "a bare number is in SI units (Pa, m, m/s, kg); mass `auto` = ρ × volume",
-    "--marker braille|dot|block for fonts without braille; NO_COLOR=1: no colour",
+    "--marker dot · NO_COLOR=1 · theme, keys: ~/.config/hertz-tui/config.toml",
 ];
 
 /// The action of a terminal event in `mode`, if any.
@@ -152,7 +152,7 @@ fn action_for_key(mode: &Mode, event: &Event, key: KeyEvent) -> Option<Action> {
         return Some(Action::Interrupt);
     }
     match mode {
-        Mode::Normal => normal(key),
+        Mode::Normal => normal(super::rebind::translate(key)),
         Mode::Editing(_) | Mode::Prompt(_) => match key.code {
             KeyCode::Enter => Some(Action::Enter),
             KeyCode::Esc => Some(Action::Cancel),

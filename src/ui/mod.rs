@@ -18,6 +18,7 @@ mod app_tab_tests;
 mod app_tests;
 #[cfg(test)]
 mod app_trap_tests;
+pub mod config;
 pub mod data_cursor;
 mod edited;
 pub mod export;
@@ -28,6 +29,7 @@ pub mod keymap;
 pub mod layout;
 mod mouse;
 pub mod picker;
+pub mod rebind;
 pub mod render;
 mod runtime;
 pub mod solutions;
@@ -55,17 +57,20 @@ use crate::model::scene_file::SceneView;
 use crate::model::scene_title::retitled;
 
 use app::App;
+use config::Config;
 use style::Theme;
 
 /// Opens the explorer on `scene` read from `source` (a preset name or a path), as `view` asks
 /// (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
+/// `config` (the user's config file) chooses the theme where it names one, and moves keys.
 pub fn run(
     scene: Scene,
     view: SceneView,
     source: &str,
     marker: MarkerStyle,
+    config: Config,
 ) -> color_eyre::Result<()> {
     let registry = Registry::load()
         .or_else(|_| Registry::builtin())
@@ -77,7 +82,9 @@ pub fn run(
         Ok(original) => retitled(&original, description.as_deref(), &scene).1,
         Err(_) => description,
     };
-    let mut app = App::open(scene, view, registry, marker, Theme::from_env());
+    let theme = config.theme_or(Theme::from_env);
+    rebind::install(config.keys);
+    let mut app = App::open(scene, view, registry, marker, theme);
     if app.description.is_none() {
         app.description = description;
     }

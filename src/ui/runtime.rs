@@ -259,7 +259,7 @@ mod tests {
             fig5_scene(),
             Registry::builtin().unwrap(),
             MarkerStyle::Braille,
-            Theme { color: false },
+            Theme::Plain,
         );
         let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
         let mut out: Vec<u8> = Vec::new();

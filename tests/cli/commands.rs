@@ -805,3 +805,23 @@ fn headers_follow_an_edited_plate() {
     );
     assert!(!translate.contains("steel plate"), "{translate}");
 }
+
+/// The explorer reads its config file before it takes the terminal: a mistake is a user error
+/// naming the file and line, and the file's `scene` is the one it opens without `--scene`.
+#[test]
+fn the_explorer_reads_its_config_file_and_names_the_line_of_a_mistake() {
+    let dir = TempDir::new("explorer-config");
+    dir.write(
+        "hertz-tui/config.toml",
+        "theme = \"dark\"\n[keys]\nquit = \"xy\"\n",
+    );
+    let err = user_error_with_config(Some(dir.path()), &[]);
+    let file = dir.path().join("hertz-tui").join("config.toml");
+    assert!(
+        err.contains(&format!("{}:3: keys.quit", file.display())),
+        "{err}"
+    );
+    dir.write("hertz-tui/config.toml", "scene = \"no-such-scene\"\n");
+    let err = user_error_with_config(Some(dir.path()), &[]);
+    assert!(err.contains("no-such-scene"), "{err}");
+}

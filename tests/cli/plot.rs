@@ -90,19 +90,22 @@ fn fig5_svg_puts_the_proposed_peak_where_its_labels_say() {
     ] {
         assert!(svg.contains(title), "{title}");
     }
-    // One polyline per curve in each model's colour (red, cyan, magenta), the focused one wider.
-    let curves = |colour: &str, width: &str| {
-        svg.split("<polyline")
-            .filter(|p| p.contains(colour) && p.contains(&format!("stroke-width=\"{width}\"")))
+    // Each model's colour (red, cyan, magenta) and its law's pattern: proposed solid, one
+    // polyline, the focused one wider; Hunt–Crossley dotted and Lankarani–Nikravesh dashed, many
+    // short strokes (the dots far more than the dashes) for the curve and its legend sample.
+    let strokes = |colour: &str, width: &str| {
+        svg.split('<')
+            .filter(|e| e.starts_with("polyline") || e.starts_with("line"))
+            .filter(|e| e.contains(colour) && e.contains(&format!("stroke-width=\"{width}\"")))
             .count()
     };
-    assert_eq!(curves("#D62728", "3"), 1, "proposed");
-    assert_eq!(
-        curves("#00A0BE", "2"),
-        2,
-        "hunt-crossley: its curve and its legend sample"
+    assert_eq!(strokes("#D62728", "3"), 1, "proposed");
+    let (dotted, dashed) = (strokes("#00A0BE", "2"), strokes("#B428AA", "2"));
+    assert!(dashed > 10, "lankarani-nikravesh: {dashed} dashes");
+    assert!(
+        dotted > 2 * dashed,
+        "hunt-crossley: {dotted} dots, {dashed} dashes"
     );
-    assert_eq!(curves("#B428AA", "2"), 2, "lankarani-nikravesh");
     let all = texts(&svg);
     // Tick labels: x labels share one row, y labels one column; each evenly spaced in value is
     // evenly spaced in pixels.

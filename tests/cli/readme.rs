@@ -4,7 +4,8 @@
 //! are in, so new sections and new documents are covered without touching this test:
 //!
 //! - ```` ```toml ```` — a scene (it has `[body1]`) is read by the strict scene reader, a material
-//!   (it has `youngs_modulus`) by the material reader; any other block must at least be TOML.
+//!   (it has `youngs_modulus`) by the material reader, the explorer's config file (it has `theme`,
+//!   `scene` or `[keys]`) by the config reader; any other block must at least be TOML.
 //!   ```` ```toml file=NAME ```` also writes the block to `NAME` in the folder the commands run in,
 //!   so that a later `--scene NAME` finds it.
 //! - ```` ```sh ```` — each command (lines joined at a trailing `\`, `#` comments dropped) must be
@@ -25,6 +26,7 @@ use std::process::Command;
 
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::scene_file::{Document, decode_material, parse_scene};
+use hertz_tui::ui::config::Config;
 
 /// A fenced block: its info string, the line of its document it starts on, its text.
 struct Block {
@@ -249,6 +251,14 @@ fn check_toml(name: &str, block: &Block, registry: &Registry) -> Result<(), Stri
     let table = doc.table();
     if table.contains_key("body1") {
         parse_scene(&origin, &block.text, registry.material_catalog())
+            .map(drop)
+            .map_err(|e| e.to_string())
+    } else if ["theme", "keys", "scene"]
+        .iter()
+        .any(|k| table.contains_key(*k))
+    {
+        // The explorer's config file.
+        Config::parse(&origin, &block.text)
             .map(drop)
             .map_err(|e| e.to_string())
     } else if table.contains_key("youngs_modulus") {

@@ -1,7 +1,8 @@
-//! The engine translations against hertz-tui's own law table: an engine whose law *is* one of
-//! hertz-tui's laws must realise, through that law's solver path (not the engine module's own
-//! contact law), the restitution the translation promises. Two independent implementations of
-//! Tsuji's β-map and of the Hunt–Crossley damping have to agree.
+//! The engine translations against hertz-tui's own law table: each engine's law is one of
+//! hertz-tui's laws, so its printed input, turned into that law's damping by the row's own rule
+//! (not by the engine module's map back from the calibrated damping), must realise the
+//! restitution the translation promises. Two implementations of Tsuji's β-map and of the
+//! Hunt–Crossley damping have to agree.
 
 use hertz_tui::model::engine::{self, Translation};
 use hertz_tui::model::force::ForceModel;

@@ -336,3 +336,22 @@ fn moderate_steel_cylinders_always_evaluate() {
         }
     }
 }
+
+/// A radius so small that the contact radius underflows to 0 is refused, naming it (found by
+/// `arbitrary_values_in_a_scene_file_never_panic`: radius = 1.106750042135791e-107).
+#[test]
+fn a_contact_radius_that_underflows_is_refused() {
+    let line = SMALL_SCENE
+        .lines()
+        .find(|l| l.starts_with("radius ="))
+        .unwrap();
+    let text = SMALL_SCENE.replacen(line, "radius = 1.106750042135791e-107", 1);
+    let registry = Registry::builtin().unwrap();
+    let scene = parse_scene("p.toml", &text, registry.material_catalog()).unwrap();
+    match scene.quasistatic() {
+        Err(ModelError::EstimateOutOfRange { quantity, value }) => {
+            assert_eq!((quantity, value), ("contact_radius", 0.0))
+        }
+        other => panic!("expected the contact radius refused, got {other:?}"),
+    }
+}

@@ -1,6 +1,7 @@
 //! The explorer: rendered into ratatui's TestBackend, and the real binary driven in tmux.
 
 mod axes;
+mod contrast;
 mod cut_words;
 mod e2e_tmux;
 mod models_pane;

@@ -149,9 +149,9 @@ fn the_regime_advice_names_its_models_in_one_form() {
 /// table), `[x]` on the checked laws, and says how many rows there are.
 #[test]
 fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
-    use hertz_tui::chart::model_glyph;
+    use hertz_tui::chart::{Ink, model_glyph};
     use hertz_tui::ui::style::{Theme, sample};
-    let theme = Theme { color: true };
+    let theme = Theme::Dark;
     for (width, height) in [(80, 24), (160, 48)] {
         let mut app = app();
         update(&mut app, Action::Resize(width, height));
@@ -182,7 +182,7 @@ fn the_models_pane_lists_the_table_in_order_with_each_laws_style() {
                 // The top row shown may be a law whose heading is scrolled off.
                 let family = *family.get_or_insert(model.spec().family);
                 assert_eq!(family, model.spec().family, "{model}: under its family");
-                let glyph = sample(model_glyph(model));
+                let glyph = sample(model_glyph(model), Ink::Model(model).dash());
                 let at = row.find(&glyph).unwrap_or_else(|| panic!("{model}: {row}"));
                 let x = row[..at].chars().count() + 1;
                 let cell = &buffer[(x as u16, y as u16)];

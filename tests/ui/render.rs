@@ -6,7 +6,7 @@
 
 use std::time::Duration;
 
-use hertz_tui::chart::{method_glyph, model_glyph};
+use hertz_tui::chart::{Ink, method_glyph, model_glyph};
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::ode::Method;
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
@@ -17,7 +17,7 @@ use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::{App, Cursor};
 use hertz_tui::ui::field::Field;
 use hertz_tui::ui::render::draw;
-use hertz_tui::ui::style::{Theme, sample};
+use hertz_tui::ui::style::{Role, Theme, sample};
 use hertz_tui::ui::tab::Tab;
 use hertz_tui::ui::update::update;
 use hertz_tui::ui::worker;
@@ -37,7 +37,7 @@ pub fn app_with(marker: MarkerStyle, theme: Theme) -> App {
 }
 
 pub fn app() -> App {
-    app_with(MarkerStyle::Braille, Theme { color: true })
+    app_with(MarkerStyle::Braille, Theme::Dark)
 }
 
 /// Solves and studies everything queued on this thread, as the workers would, then puts fixed
@@ -127,7 +127,7 @@ fn type_in(app: &mut App, value: &str) {
 }
 
 /// The app with body 1's ν set to 0.6 by keystrokes: invalid, and the last results stay.
-fn invalid_app() -> App {
+pub fn invalid_app() -> App {
     let mut app = app();
     app.cursor = Cursor::Field(Field::Number(SceneKey::Body(
         BodyIndex::One,
@@ -359,7 +359,7 @@ fn invalid_field_is_red_with_the_model_message() {
     let message = "body1.material.poisson_ratio must be in [0, 0.5), got 0.6";
     let first_line = &message[..30];
     assert!(screen.contains(first_line), "{screen}");
-    // The cells of the message are red.
+    // The cells of the message are the theme's red (bright red on the dark theme: 5.3:1 on black).
     let (row, line) = screen
         .lines()
         .enumerate()
@@ -367,12 +367,12 @@ fn invalid_field_is_red_with_the_model_message() {
         .unwrap();
     let col = line[..line.find(first_line).unwrap()].chars().count();
     let cell = &buffer[(col as u16, row as u16)];
-    assert_eq!(cell.fg, Color::Red);
+    assert_eq!(Some(cell.fg), Theme::Dark.style(Role::Error).fg);
 }
 
 #[test]
 fn no_color_draws_without_colours() {
-    let app = app_with(MarkerStyle::Braille, Theme { color: false });
+    let app = app_with(MarkerStyle::Braille, Theme::Plain);
     let terminal = render(&app, 160, 48);
     let buffer = terminal.backend().buffer();
     assert!(
@@ -403,20 +403,16 @@ fn markers_follow_the_option() {
             .any(|c| ('\u{2801}'..='\u{28FF}').contains(&c))
     );
     let dot = text(
-        render(&app_with(MarkerStyle::Dot, Theme { color: true }), 160, 48)
+        render(&app_with(MarkerStyle::Dot, Theme::Dark), 160, 48)
             .backend()
             .buffer(),
     );
     assert!(!dot.chars().any(|c| ('\u{2801}'..='\u{28FF}').contains(&c)));
     assert!(dot.contains('•'));
     let block = text(
-        render(
-            &app_with(MarkerStyle::Block, Theme { color: true }),
-            160,
-            48,
-        )
-        .backend()
-        .buffer(),
+        render(&app_with(MarkerStyle::Block, Theme::Dark), 160, 48)
+            .backend()
+            .buffer(),
     );
     assert!(block.contains('█'));
 }
@@ -456,7 +452,10 @@ fn work_precision_160x48() {
     let title = format!("Work–precision · {}", app.focused.label());
     assert!(screen.contains(&title), "{title}:\n{screen}");
     for method in Method::ALL {
-        let entry = format!("{} {method}", sample(method_glyph(method)));
+        let entry = format!(
+            "{} {method}",
+            sample(method_glyph(method), Ink::Method(method).dash())
+        );
         assert!(screen.contains(&entry), "{entry} in the legend:\n{screen}");
     }
     let current = app.studies.current().unwrap().as_ref().unwrap();
@@ -481,7 +480,10 @@ fn stability_160x48() {
         Method::Verlet,
         Method::Rk4,
     ] {
-        let row = format!("{} {method}", sample(method_glyph(method)));
+        let row = format!(
+            "{} {method}",
+            sample(method_glyph(method), Ink::Method(method).dash())
+        );
         assert!(screen.contains(&row), "{row}:\n{screen}");
     }
     assert!(screen.contains("diverged at t = ") || screen.contains("energy drift"));
@@ -506,7 +508,11 @@ fn assert_legend_names_the_checked_models(app: &App, screen: &str) {
     let checked = app.checked_models();
     assert!(checked.len() >= 3, "{checked:?}");
     for model in checked {
-        let entry = format!("{} {}", sample(model_glyph(model)), model.name());
+        let entry = format!(
+            "{} {}",
+            sample(model_glyph(model), Ink::Model(model).dash()),
+            model.name()
+        );
         assert!(screen.contains(&entry), "{entry} in the legend:\n{screen}");
     }
 }
@@ -568,7 +574,7 @@ fn no_color_holds_in_every_tab() {
         Tab::named("stability").unwrap(),
         Tab::named("sweep").unwrap(),
     ] {
-        let mut app = app_with(MarkerStyle::Braille, Theme { color: false });
+        let mut app = app_with(MarkerStyle::Braille, Theme::Plain);
         update(&mut app, Action::Resize(160, 48));
         update(&mut app, Action::Tab(tab));
         settle(&mut app);

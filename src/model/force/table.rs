@@ -87,14 +87,43 @@ pub enum Hue {
     Cyan,
 }
 
+/// The pattern a curve is drawn with, as print tells curves apart: where curves lie on one
+/// another, the gaps of a dotted or dashed one show the curve under it, and the pattern names a
+/// curve without colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Dash {
+    #[default]
+    Solid,
+    /// Every other dot.
+    Dotted,
+    /// Dashes of four dots, two dots apart.
+    Dashed,
+}
+
+impl Dash {
+    /// The dots drawn and the dots left out in each period of the pattern, along the curve
+    /// (`off` = 0: solid).
+    pub fn on_off(self) -> (u8, u8) {
+        match self {
+            Dash::Solid => (1, 0),
+            Dash::Dotted => (1, 1),
+            Dash::Dashed => (4, 2),
+        }
+    }
+}
+
 /// How a law's curves and legend entries look in every chart, pane and figure: part of its row,
 /// so that adding a law restyles no other. No two laws share a glyph (it tells curves apart
-/// where colour cannot); the paper's five take five different hues.
+/// where colour cannot), nor a hue and a pattern at once while the 21 pairs last; the paper's
+/// five take five different hues.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct LawStyle {
     /// Marks the law's curves at their peak and end; printable ASCII, which every font has.
     pub glyph: char,
     pub hue: Hue,
+    /// The line's pattern: the paper's Hunt–Crossley and Lankarani–Nikravesh, which lie within
+    /// a dot or two of each other, dotted and dashed.
+    pub dash: Dash,
 }
 
 /// One law of the table.
@@ -155,6 +184,7 @@ law_table! {
         style: LawStyle {
             glyph: 'o',
             hue: Hue::Blue,
+            dash: Dash::Dashed,
         },
         chi: None,
     };
@@ -170,6 +200,7 @@ law_table! {
         style: LawStyle {
             glyph: '%',
             hue: Hue::Yellow,
+            dash: Dash::Dotted,
         },
         chi: None,
     };
@@ -189,6 +220,7 @@ law_table! {
         style: LawStyle {
             glyph: '+',
             hue: Hue::Green,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -208,6 +240,7 @@ law_table! {
         style: LawStyle {
             glyph: '*',
             hue: Hue::Red,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -223,6 +256,7 @@ law_table! {
         style: LawStyle {
             glyph: '@',
             hue: Hue::Foreground,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -238,6 +272,7 @@ law_table! {
         style: LawStyle {
             glyph: '&',
             hue: Hue::Red,
+            dash: Dash::Dashed,
         },
         chi: None,
     };
@@ -253,6 +288,7 @@ law_table! {
         style: LawStyle {
             glyph: '$',
             hue: Hue::Cyan,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -268,6 +304,7 @@ law_table! {
         style: LawStyle {
             glyph: '~',
             hue: Hue::Magenta,
+            dash: Dash::Dotted,
         },
         chi: None,
     };
@@ -283,6 +320,7 @@ law_table! {
         style: LawStyle {
             glyph: '^',
             hue: Hue::Blue,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -298,6 +336,7 @@ law_table! {
         style: LawStyle {
             glyph: 'v',
             hue: Hue::Green,
+            dash: Dash::Dashed,
         },
         chi: None,
     };
@@ -314,9 +353,11 @@ law_table! {
             unit: "N·s/m",
         }),
         contact: ContactRule::ForceZero,
+        // The one hue and pattern no other law has: yellow takes all three patterns already.
         style: LawStyle {
             glyph: 'a',
-            hue: Hue::Yellow,
+            hue: Hue::Foreground,
+            dash: Dash::Dotted,
         },
         chi: None,
     };
@@ -336,6 +377,7 @@ law_table! {
         style: LawStyle {
             glyph: 's',
             hue: Hue::Yellow,
+            dash: Dash::Solid,
         },
         chi: None,
     };
@@ -351,6 +393,7 @@ law_table! {
         style: LawStyle {
             glyph: 'x',
             hue: Hue::Cyan,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 1.5 * (1.0 - e)),
     };
@@ -366,6 +409,7 @@ law_table! {
         style: LawStyle {
             glyph: '#',
             hue: Hue::Magenta,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| 0.75 * (1.0 - e * e)),
     };
@@ -381,6 +425,7 @@ law_table! {
         style: LawStyle {
             glyph: 'd',
             hue: Hue::Foreground,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
     };
@@ -396,6 +441,7 @@ law_table! {
         style: LawStyle {
             glyph: 'k',
             hue: Hue::Red,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 0.75 * (1.0 - e)),
     };
@@ -411,6 +457,7 @@ law_table! {
         style: LawStyle {
             glyph: 'z',
             hue: Hue::Cyan,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| (1.0 - e * e) / e),
     };
@@ -426,6 +473,7 @@ law_table! {
         style: LawStyle {
             glyph: 'w',
             hue: Hue::Magenta,
+            dash: Dash::Solid,
         },
         chi: Some(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
     };
@@ -441,6 +489,7 @@ law_table! {
         style: LawStyle {
             glyph: 'h',
             hue: Hue::Blue,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 1.6 * (1.0 - e) / e),
     };
@@ -456,6 +505,7 @@ law_table! {
         style: LawStyle {
             glyph: 'n',
             hue: Hue::Green,
+            dash: Dash::Dotted,
         },
         chi: Some(|e| 1.5 * (1.0 - e) / e),
     };
@@ -471,6 +521,7 @@ law_table! {
         style: LawStyle {
             glyph: 'q',
             hue: Hue::Yellow,
+            dash: Dash::Dashed,
         },
         chi: Some(|e| 1.0 / e - 1.0),
     };
@@ -522,6 +573,31 @@ mod tests {
             for b in &LAWS[i + 1..] {
                 assert_ne!(a.style.glyph, b.style.glyph, "{} and {}", a.id, b.id);
             }
+        }
+    }
+
+    /// Two laws of one hue differ in pattern while the 21 pairs of a hue (seven with the
+    /// foreground) and a pattern last, so that colour and pattern alone tell every pair apart;
+    /// the two closest of the paper's curves (Hunt–Crossley and Lankarani–Nikravesh) and Fig. 4's
+    /// pair (elastic Hertz and dry friction) differ in pattern too.
+    #[test]
+    fn no_two_laws_share_a_hue_and_a_pattern() {
+        let pairs: std::collections::HashSet<(Hue, Dash)> =
+            LAWS.iter().map(|a| (a.style.hue, a.style.dash)).collect();
+        assert_eq!(
+            pairs.len(),
+            LAWS.len().min(7 * 3),
+            "a hue and a pattern shared"
+        );
+        for (a, b) in [
+            ("hunt-crossley", "lankarani-nikravesh"),
+            ("quasistatic", "dry-friction"),
+        ] {
+            assert_ne!(
+                LAWS[index_of(a)].style.dash,
+                LAWS[index_of(b)].style.dash,
+                "{a} {b}"
+            );
         }
     }
 

@@ -1,6 +1,7 @@
-//! The one place the explorer's looks are chosen: the colours and text roles (light and dark
-//! terminals, `NO_COLOR`, muted text by DIM) and the chart marker of `--marker`.
+//! The one place the explorer's looks are chosen: the themes (dark, light, `NO_COLOR`) with their
+//! colours and text roles, the contrast they are held to, and the chart marker of `--marker`.
 
+pub mod contrast;
 mod marker;
 mod theme;
 

@@ -9,7 +9,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::canvas::{Canvas, Line as CanvasLine, Points};
+use ratatui::widgets::canvas::{Canvas, Points};
 use ratatui::widgets::{Block, Widget};
 
 use crate::chart::layout::dot;
@@ -18,6 +18,7 @@ use crate::ui::style::MarkerStyle;
 use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
+use super::strokes::{Stroke, Strokes, key_of, share, trace};
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -107,7 +108,7 @@ pub fn cell_of(
 /// How curves are told apart: by colour on braille, by glyphs where there is no colour or no
 /// braille (each model's glyph along the whole curve).
 fn glyphs_along(theme: Theme, marker: MarkerStyle) -> bool {
-    !theme.color || marker != MarkerStyle::Braille
+    !theme.color() || marker != MarkerStyle::Braille
 }
 
 /// Cells between the glyphs set along a curve when colour cannot tell curves apart.
@@ -237,18 +238,29 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             .collect();
         rules.push((points, inks.color(rule.ink, false)));
     }
-    let curves: Vec<(Vec<(f64, f64)>, Color)> = chart
+    // Each curve's dots in its pattern, then each cell shared by curves left to one of them.
+    let grid = (plot.width * dx, plot.height * dy);
+    let to_grid = |p: (f64, f64)| {
+        let (x, y) = dot_of(chart, dots, p);
+        (x, dots.1 - 1.0 - y)
+    };
+    let mut strokes: Vec<Stroke> = chart
         .series
         .iter()
-        .flat_map(|s| s.runs.iter().map(move |run| (s, run)))
-        .map(|(series, run)| {
-            let finite = run
-                .iter()
-                .copied()
-                .filter(|p| p.0.is_finite() && p.1.is_finite());
-            (finite.collect(), inks.color(series.ink, series.focused))
+        .map(|series| {
+            let mut drawn = Vec::new();
+            for run in &series.runs {
+                let points: Vec<(f64, f64)> = run.iter().map(|&p| to_grid(p)).collect();
+                trace(&points, series.ink.dash(), grid, &mut drawn);
+            }
+            Stroke {
+                color: inks.color(series.ink, series.focused),
+                key: key_of(&series.name),
+                dots: drawn,
+            }
         })
         .collect();
+    share(&mut strokes, (dx, dy), (plot.width, plot.height));
     let canvas = Canvas::default()
         .marker(marker.marker())
         .x_bounds(chart.x.range)
@@ -257,15 +269,7 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             for (points, color) in &rules {
                 ctx.draw(&Points::new(points, *color));
             }
-            for (points, color) in &curves {
-                if points.len() == 1 {
-                    ctx.draw(&Points::new(points, *color));
-                }
-                for w in points.windows(2) {
-                    let (a, b) = (w[0], w[1]);
-                    ctx.draw(&CanvasLine::new(a.0, a.1, b.0, b.1, *color));
-                }
-            }
+            ctx.draw(&Strokes(&strokes));
         });
     let area = Rect::new(0, 0, plot.width, plot.height);
     let mut dotted = Buffer::empty(area);
@@ -614,7 +618,7 @@ pub fn legend(chart: &Chart, theme: Theme, width: usize) -> Line<'static> {
     let mut spans = Vec::new();
     let mut used = 0;
     for (i, s) in chart.series.iter().enumerate() {
-        let text = format!(" {} {} ", sample(s.glyph), s.name);
+        let text = format!(" {} {} ", sample(s.glyph, s.ink.dash()), s.name);
         let left = chart.series.len() - i - 1;
         let more = if left > 0 {
             format!(" +{left} more ").chars().count()
@@ -773,10 +777,10 @@ mod tests {
                 render(
                     frame,
                     area,
-                    crate::ui::widgets::common::pane("", Theme { color: false }, true),
+                    crate::ui::widgets::common::pane("", Theme::Plain, true),
                     chart,
                     marker,
-                    Theme { color: false },
+                    Theme::Plain,
                 )
             })
             .unwrap();
@@ -829,7 +833,7 @@ mod tests {
             s.name = name.into();
             many.series.push(s);
         }
-        let theme = Theme { color: false };
+        let theme = Theme::Plain;
         assert_eq!(
             legend(&many, theme, 80).to_string().matches("──").count(),
             4

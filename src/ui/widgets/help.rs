@@ -7,6 +7,7 @@ use ratatui::widgets::{Clear, Paragraph, Wrap};
 
 use crate::ui::app::App;
 use crate::ui::keymap::{INPUT_HINTS, bindings};
+use crate::ui::rebind::{self, key_name};
 use crate::ui::style::Role;
 
 use super::common::{centered, pane};
@@ -28,6 +29,19 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
             ])
         })
         .collect();
+    let moved: Vec<String> = rebind::moved()
+        .into_iter()
+        .map(|(key, action)| format!("{} {action}", key_name(key)))
+        .collect();
+    if !moved.is_empty() {
+        lines.push(Line::from(vec![
+            Span::styled(
+                format!(" {:<key_width$}  ", "config"),
+                theme.style(Role::Key),
+            ),
+            Span::styled(moved.join(" · "), theme.style(Role::Normal)),
+        ]));
+    }
     // A blank line before the input hints, where the screen has a row for it.
     if lines.len() + 1 + INPUT_HINTS.len() + 2 <= usize::from(area.height) {
         lines.push(Line::default());

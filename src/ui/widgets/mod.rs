@@ -10,5 +10,6 @@ pub mod models;
 pub mod picker;
 pub mod prompt;
 pub mod status;
+mod strokes;
 pub mod tabs;
 pub mod too_small;

@@ -9,7 +9,7 @@ use ratatui::style::Modifier;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
-use crate::chart::model_glyph;
+use crate::chart::{Ink, model_glyph};
 use crate::model::ForceModel;
 use crate::ui::app::{App, Cursor, Scroll};
 use crate::ui::style::{Role, Theme, sample};
@@ -75,7 +75,7 @@ pub fn model_at(
     roomy: bool,
     position: Position,
 ) -> Option<(ForceModel, bool)> {
-    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    let inner = pane("", Theme::Plain, roomy).inner(area);
     if !inner.contains(position) {
         return None;
     }
@@ -154,7 +154,10 @@ fn model_line(
         span(focus, theme.style(Role::Key)),
         span(check, theme.style(Role::Normal)),
         span(" ", theme.style(Role::Normal)),
-        span(sample(model_glyph(model)), theme.model_style(model)),
+        span(
+            sample(model_glyph(model), Ink::Model(model).dash()),
+            theme.model_style(model),
+        ),
         span(" ", theme.style(Role::Normal)),
         span(padded, name_style),
         span(busy, theme.style(Role::Warning)),

@@ -67,7 +67,6 @@ pub(crate) fn after_impact(
     v_out: f64,
 ) -> AfterImpact {
     let e = dynamics.restitution;
-    let pressing = dynamics.pressing_at(stop, state.t);
     let tiny = 1e-13 * dynamics.speed_scale;
     if v_out <= tiny {
         return AfterImpact::Rests {
@@ -75,7 +74,18 @@ pub(crate) fn after_impact(
             chatter: false,
         };
     }
-    if pressing > 0.0 && e < 1.0 {
+    // Not even the largest pressing acceleration brings the body back within the window: a
+    // flight (skips evaluating the pressing at most impacts).
+    let (c0, c1, c2) = dynamics.pressing(stop);
+    let most = c0 + c1.hypot(c2);
+    if e >= 1.0
+        || most <= 0.0
+        || 2.0 * v_out / (most * (1.0 - e)) >= CHATTER_WINDOW * dynamics.period
+    {
+        return AfterImpact::Flight(state);
+    }
+    let pressing = dynamics.pressing_at(stop, state.t);
+    if pressing > 0.0 {
         // Under a constant pressing acceleration a the flights last 2v/a, 2ev/a, …: the
         // impacts accumulate at 2v/(a(1 − e)) (docs/physics.md §8.4).
         let remaining = 2.0 * v_out / (pressing * (1.0 - e));

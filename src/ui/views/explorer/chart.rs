@@ -219,7 +219,7 @@ pub fn cursor_at(
     roomy: bool,
     position: Position,
 ) -> Option<u16> {
-    let inner = pane("", Theme { color: false }, roomy).inner(area);
+    let inner = pane("", Theme::Plain, roomy).inner(area);
     let chart = describe(
         app,
         kind,
@@ -247,7 +247,7 @@ pub fn peak_at(app: &App, kind: ChartKind) -> Option<u16> {
             .charts
             .into_iter()
             .find(|(k, _)| *k == kind)
-            .map(|(_, rect)| pane("", Theme { color: false }, roomy).inner(rect))
+            .map(|(_, rect)| pane("", Theme::Plain, roomy).inner(rect))
     });
     // Off screen (no size known yet): the chart at a common size.
     let (columns, rows) = on_screen.map_or((60, 20), |inner| {

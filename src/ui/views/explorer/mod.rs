@@ -8,6 +8,8 @@ pub mod layout;
 mod mouse;
 mod regime;
 mod results;
+#[cfg(test)]
+mod visibility_tests;
 
 use ratatui::Frame;
 use ratatui::layout::Position;

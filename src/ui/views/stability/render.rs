@@ -33,7 +33,7 @@ fn name_cell(curve: Curve, text: &str, theme: Theme, narrow: bool) -> Cell<'stat
     let lead = if narrow {
         glyph.to_string()
     } else {
-        sample(glyph)
+        sample(glyph, ink.dash())
     };
     Cell::from(Line::from(vec![
         span(lead, style),

@@ -177,7 +177,7 @@ fn legend(
         .map(|l| {
             let style = theme.method_style(l.method);
             vec![
-                span(sample(method_glyph(l.method)), style),
+                span(sample(method_glyph(l.method), Ink::Method(l.method).dash()), style),
                 span(format!(" {}", l.method), style),
             ]
         })

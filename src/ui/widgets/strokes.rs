@@ -1,0 +1,193 @@
+//! Curves as patterned strokes of canvas dots, and which curve a cell shows where several pass
+//! through it. A terminal cell has one colour: where two curves lie within a cell of each other
+//! (Hunt–Crossley and Lankarani–Nikravesh, elastic Hertz under dry friction in Fig. 4), the one
+//! painted last took every shared cell and the other vanished. Here each shared cell goes to one of
+//! the curves in it, the same one whatever other curves are drawn, and every curve gets its share
+//! of the cells it shares; a cell shows only its owner's dots, so the owner's pattern reads in it.
+
+use ratatui::style::Color;
+use ratatui::widgets::canvas::{Painter, Shape};
+
+use crate::chart::Dash;
+
+/// One curve's dots on the canvas grid (x from the left, y from the top, in dots), in its colour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stroke {
+    pub color: Color,
+    /// Decides the cells this stroke shares (see [`share`]): the same curve keeps the same key
+    /// in every frame, so a shared cell keeps its owner as long as the curves in it do.
+    pub key: u64,
+    pub dots: Vec<(u16, u16)>,
+}
+
+/// A key for a curve named `name`: FNV-1a of the name.
+pub fn key_of(name: &str) -> u64 {
+    name.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// The dots of a run of points (fractional grid dots, x from the left, y from the top) joined by
+/// straight lines, drawn with `dash`: the dots along the line are counted from the run's start,
+/// and the pattern leaves out its `off` dots of each period. Dots off the `size` grid are dropped.
+pub fn trace(points: &[(f64, f64)], dash: Dash, size: (u16, u16), out: &mut Vec<(u16, u16)>) {
+    let (on, off) = dash.on_off();
+    let period = u32::from(on) + u32::from(off);
+    let mut counted: u32 = 0;
+    let mut last: Option<(i64, i64)> = None;
+    let mut put = |d: (i64, i64), out: &mut Vec<(u16, u16)>| {
+        if last == Some(d) {
+            return;
+        }
+        last = Some(d);
+        let draw = counted % period < u32::from(on);
+        counted = counted.wrapping_add(1);
+        let inside = (0..i64::from(size.0)).contains(&d.0) && (0..i64::from(size.1)).contains(&d.1);
+        if draw && inside {
+            out.push((d.0 as u16, d.1 as u16));
+        }
+    };
+    let round = |p: (f64, f64)| (p.0.round() as i64, p.1.round() as i64);
+    let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
+    let mut points = points.iter().filter(finite).map(|&p| round(p));
+    let Some(first) = points.next() else {
+        return;
+    };
+    put(first, out);
+    let mut from = first;
+    for to in points {
+        // A line of single steps, as Bresenham's: one dot per step along the longer side.
+        let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+        let steps = dx.abs().max(dy.abs());
+        for i in 1..=steps {
+            let along = |d: i64| (d as f64 * i as f64 / steps as f64).round() as i64;
+            put((from.0 + along(dx), from.1 + along(dy)), out);
+        }
+        from = to;
+    }
+}
+
+/// Cells (columns, rows) drawn by one curve where curves share them: a run of a few cells along a
+/// curve reads as a dash of it, where curves taking turns cell by cell read as noise.
+const BLOCK: (u16, u16) = (3, 2);
+
+/// Which stroke shows in each cell of `cells` (columns, rows) of `per_cell` dots: where several
+/// strokes have dots in a cell, the one whose key scores highest in the cell's [`BLOCK`]
+/// (rendezvous hashing: each of k strokes owns about 1/k of the blocks they share, and removing
+/// one stroke changes only the cells it owned); each stroke keeps only its dots in the cells it
+/// owns.
+pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
+    let index = |&(x, y): &(u16, u16)| {
+        usize::from(y / per_cell.1) * usize::from(cells.0) + usize::from(x / per_cell.0)
+    };
+    let mut owner: Vec<Option<(u64, usize)>> =
+        vec![None; usize::from(cells.0) * usize::from(cells.1)];
+    for (s, stroke) in strokes.iter().enumerate() {
+        for dot in &stroke.dots {
+            let i = index(dot);
+            let Some(slot) = owner.get_mut(i) else {
+                continue;
+            };
+            let (x, y) = (dot.0 / per_cell.0, dot.1 / per_cell.1);
+            let block = (u64::from(y / BLOCK.1) << 32) | u64::from(x / BLOCK.0);
+            let score = mix(block ^ stroke.key.rotate_left(17));
+            if slot.is_none_or(|(best, _)| score > best) {
+                *slot = Some((score, s));
+            }
+        }
+    }
+    for (s, stroke) in strokes.iter_mut().enumerate() {
+        stroke.dots.retain(|dot| {
+            owner
+                .get(index(dot))
+                .copied()
+                .flatten()
+                .is_some_and(|(_, o)| o == s)
+        });
+    }
+}
+
+/// SplitMix64's finaliser: a cell's score for a key, spread evenly.
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Strokes painted dot by dot on ratatui's canvas.
+pub struct Strokes<'a>(pub &'a [Stroke]);
+
+impl Shape for Strokes<'_> {
+    fn draw(&self, painter: &mut Painter) {
+        for stroke in self.0 {
+            for &(x, y) in &stroke.dots {
+                painter.paint(usize::from(x), usize::from(y), stroke.color);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(dash: Dash) -> Vec<(u16, u16)> {
+        let mut out = Vec::new();
+        trace(&[(0.0, 0.0), (11.0, 0.0)], dash, (40, 8), &mut out);
+        out
+    }
+
+    #[test]
+    fn patterns_leave_out_their_dots_along_the_line() {
+        let xs = |d: Vec<(u16, u16)>| d.into_iter().map(|p| p.0).collect::<Vec<_>>();
+        assert_eq!(xs(line(Dash::Solid)), (0..12).collect::<Vec<_>>());
+        assert_eq!(xs(line(Dash::Dotted)), [0, 2, 4, 6, 8, 10]);
+        assert_eq!(xs(line(Dash::Dashed)), [0, 1, 2, 3, 6, 7, 8, 9]);
+        // Steep lines take a dot per row, and the pattern goes on over a corner.
+        let mut out = Vec::new();
+        trace(
+            &[(0.0, 0.0), (1.0, 5.0), (6.0, 5.0)],
+            Dash::Dotted,
+            (40, 8),
+            &mut out,
+        );
+        assert_eq!(out, [(0, 0), (0, 2), (1, 4), (2, 5), (4, 5), (6, 5)]);
+        let mut out = Vec::new();
+        trace(
+            &[(-3.0, 1.0), (2.0, 1.0), (f64::NAN, 0.0)],
+            Dash::Solid,
+            (40, 8),
+            &mut out,
+        );
+        assert_eq!(
+            out,
+            [(0, 1), (1, 1), (2, 1)],
+            "off the grid and NaN: no dot"
+        );
+    }
+
+    /// Three strokes on the same dots: each owns about a third of the 200 cells, and removing
+    /// one leaves the others' cells as they were.
+    #[test]
+    fn shared_cells_are_shared_fairly_and_stay_put() {
+        let dots: Vec<(u16, u16)> = (0..400).map(|x| (x, 1)).collect();
+        let stroke = |name: &str| Stroke {
+            color: Color::Reset,
+            key: key_of(name),
+            dots: dots.clone(),
+        };
+        let mut three = [stroke("a"), stroke("b"), stroke("c")];
+        share(&mut three, (2, 4), (200, 2));
+        for s in &three {
+            let cells = s.dots.len() / 2;
+            assert!((45..=90).contains(&cells), "{cells} of 200");
+        }
+        let mut two = [stroke("a"), stroke("b")];
+        share(&mut two, (2, 4), (200, 2));
+        for (before, after) in three.iter().zip(&two) {
+            assert!(before.dots.iter().all(|d| after.dots.contains(d)));
+        }
+        let total: usize = three.iter().map(|s| s.dots.len()).sum();
+        assert_eq!(total, 400, "each cell shows its owner's dots");
+    }
+}
