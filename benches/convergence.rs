@@ -10,7 +10,7 @@
 use std::f64::consts::PI;
 
 use hertz_tui::chart::ticks::{log_axis, nice_axis};
-use hertz_tui::chart::{Chart, Ink, Rule, Series, figure};
+use hertz_tui::chart::{Chart, Hue, Ink, Rule, Series, figure};
 use hertz_tui::format::units::DIMENSIONLESS;
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::force::ForceLaw;
@@ -150,25 +150,25 @@ fn main() {
         steps: true,
     };
     let chart = Chart {
-        title: "Bouncing ball, e = 0.5: compliant Γ_PD against the rigid closed form".into(),
+        title: "Bouncing ball, e = 0.5: compliant period-doubling threshold against the rigid closed form".into(),
         x: x.chart_axis("contact time / forcing period".into()),
-        y: y.chart_axis("ΔΓ_PD / Γ_PD, %".into()),
+        y: y.chart_axis("threshold Γ, compliant/rigid − 1, %".into()),
         series: vec![
             series(
                 "Hunt–Crossley, exact χ, vs rigid e = 0.5",
-                Ink::Model(ForceModel::HuntCrossley),
+                Ink::Plain(Hue::Red),
                 'x',
                 hc,
             ),
             series(
                 "Kelvin–Voigt F ≥ 0 asked e = 0.5, vs rigid e = 0.5",
-                Ink::Model(kv),
+                Ink::Plain(Hue::Cyan),
                 '$',
                 kv_asked,
             ),
             series(
                 &format!("Kelvin–Voigt F ≥ 0, vs rigid at its realised e = {realised:.3}"),
-                Ink::Model(ForceModel::LankaraniNikravesh),
+                Ink::Plain(Hue::Magenta),
                 '#',
                 kv_real,
             ),
@@ -184,7 +184,7 @@ fn main() {
             Rule {
                 at: 100.0 * (rigid_realised / rigid - 1.0),
                 horizontal: true,
-                ink: Ink::Model(kv),
+                ink: Ink::Plain(Hue::Magenta),
                 label: format!("rigid e = {realised:.3}"),
             },
         ],
