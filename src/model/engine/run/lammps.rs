@@ -13,7 +13,9 @@ use super::super::error::EngineError;
 use super::super::lammps_tsuji::alpha;
 use super::super::tsuji::beta;
 use super::super::{EngineScene, Translation};
-use super::{Bodies, Claim, Run, Scheme, Script, gap, max_steps, num, parameter, stepped};
+use super::{
+    Bodies, Claim, Run, Scheme, Script, gap, max_steps, measure_loop, num, parameter, stepped,
+};
 
 /// The LAMMPS release the input was run in.
 pub const CHECKED_IN: &str =
@@ -167,24 +169,7 @@ group ball id 1
 velocity ball set 0 0 -{v0}
 thermo_style custom step
 thermo 0
-variable fa equal abs(fz[1])
-variable vrel equal {v_rel}
-variable fmax equal 0
-variable nc equal 0
-variable touched equal 0
-variable i loop {max_steps}
-label step
-run 1 pre no post no
-if "${{fa}} > ${{fmax}}" then "variable fmax equal ${{fa}}"
-if "${{fa}} != 0" then "variable nc equal ${{nc}}+1" "variable touched equal 1"
-if "${{touched}} == 1 && ${{fa}} == 0 && ${{vrel}} > 0" then "jump SELF done"
-next i
-jump SELF step
-label done
-variable e_out equal v_vrel/{v0}
-variable contact_time equal v_nc*dt
-print "RESULT e_out ${{e_out}} F_max ${{fmax}} contact_time ${{contact_time}}"
-"#,
+{measure}"#,
         engine = t.engine,
         name = scene.scene.name,
         e = num(choice.at_step.e_out),
@@ -193,7 +178,7 @@ print "RESULT e_out ${{e_out}} F_max ${{fmax}} contact_time ${{contact_time}}"
         skin = num(0.1 * bodies.radius()),
         step = num(choice.step),
         v0 = num(scene.v0),
-        max_steps = max_steps(scene, choice.step),
+        measure = measure_loop(&v_rel, max_steps(scene, choice.step), num(scene.v0)),
     );
     Ok(Run {
         checked_in: Some(CHECKED_IN),

@@ -206,6 +206,33 @@ pub fn without_script(checked_in: &'static str, claim: Claim, reason: String) ->
     }
 }
 
+/// The LAMMPS-family loop (LAMMPS and LIGGGHTS share its input language) that steps the impact
+/// one step at a time and prints `RESULT e_out … F_max … contact_time …`: the rebound speed
+/// `v_rel` (an equal-style expression) over `v0`, the largest |F_z| on the ball, and the steps with
+/// a force times the step.
+pub fn measure_loop(v_rel: &str, max_steps: u64, v0: impl std::fmt::Display) -> String {
+    format!(
+        r#"variable fa equal abs(fz[1])
+variable vrel equal {v_rel}
+variable fmax equal 0
+variable nc equal 0
+variable touched equal 0
+variable i loop {max_steps}
+label step
+run 1 pre no post no
+if "${{fa}} > ${{fmax}}" then "variable fmax equal ${{fa}}"
+if "${{fa}} != 0" then "variable nc equal ${{nc}}+1" "variable touched equal 1"
+if "${{touched}} == 1 && ${{fa}} == 0 && ${{vrel}} > 0" then "jump SELF done"
+next i
+jump SELF step
+label done
+variable e_out equal v_vrel/{v0}
+variable contact_time equal v_nc*dt
+print "RESULT e_out ${{e_out}} F_max ${{fmax}} contact_time ${{contact_time}}"
+"#
+    )
+}
+
 /// The number of steps a script runs at most: 200 continuous contact times.
 pub fn max_steps(scene: &EngineScene, step: f64) -> u64 {
     (200.0 * scene.t_contact / step).ceil() as u64
