@@ -178,7 +178,7 @@ thermo 0
         skin = num(0.1 * bodies.radius()),
         step = num(choice.step),
         v0 = num(scene.v0),
-        measure = measure_loop(&v_rel, max_steps(scene, choice.step), num(scene.v0)),
+        measure = measure_loop(v_rel, max_steps(scene, choice.step), num(scene.v0)),
     );
     Ok(Run {
         checked_in: Some(CHECKED_IN),
