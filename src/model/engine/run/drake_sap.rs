@@ -41,22 +41,19 @@ pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, 
         num(choice.at_step.t_contact),
     );
     let text = script(scene, &bodies, &props, choice.step, "sap", &header, true);
-    Ok(Run {
-        checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks"),
+    Ok(Run::run_in(
+        CHECKED_IN,
         claim,
-        other_claims: Vec::new(),
-        script: Some(Script {
+        Script {
             file: "impact.py",
             language: "python",
             command: "python3 impact.py",
             text,
-        }),
-        no_script: None,
-        versions: vec![
+        },
+        vec![
             "Checked in Drake 1.51.1 only. On a step comparable to the contact time SAP's near-rigid regime (near_rigid_threshold) changes the law; the printed step is far below it.".into(),
             "TAMSI, Similar and Lagged ignore relaxation_time and use hunt_crossley_dissipation: use `translate --engine drake` for them.".into(),
         ],
-        fragments: Vec::new(),
-    })
+        Vec::new(),
+    ))
 }

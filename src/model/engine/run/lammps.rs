@@ -180,19 +180,16 @@ thermo 0
         v0 = num(scene.v0),
         measure = measure_loop(v_rel, max_steps(scene, choice.step), num(scene.v0)),
     );
-    Ok(Run {
-        checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks"),
+    Ok(Run::run_in(
+        CHECKED_IN,
         claim,
-        other_claims: Vec::new(),
-        script: Some(Script {
+        Script {
             file: "impact.in",
             language: "text",
             command: "lmp -in impact.in",
             text,
-        }),
-        no_script: None,
+        },
         versions,
-        fragments: Vec::new(),
-    })
+        Vec::new(),
+    ))
 }

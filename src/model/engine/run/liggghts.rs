@@ -111,22 +111,19 @@ thermo 0
         v0 = num(scene.v0),
         measure = measure_loop(v_rel, max_steps(scene, choice.step), num(scene.v0)),
     );
-    Ok(Run {
-        checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks"),
+    Ok(Run::run_in(
+        CHECKED_IN,
         claim,
-        other_claims: Vec::new(),
-        script: Some(Script {
+        Script {
             file: "impact.in",
             language: "text",
             command: "liggghts -in impact.in",
             text,
-        }),
-        no_script: None,
-        versions: vec![
+        },
+        vec![
             "LIGGGHTS-PUBLIC 3.x: `hard_particles yes` is required for SI moduli above 1e9 Pa; a wall reads limitForce from its own fix wall/gran line, not from the pair style.".into(),
         ],
-        fragments: vec![Fragment {
+        vec![Fragment {
             title: "LIGGGHTS input lines (materials, pair style, wall)",
             language: "text",
             text: format!(
@@ -138,5 +135,5 @@ thermo 0
                 }
             ),
         }],
-    })
+    ))
 }

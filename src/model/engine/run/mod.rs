@@ -87,6 +87,29 @@ pub struct Run {
     pub fragments: Vec<Fragment>,
 }
 
+impl Run {
+    /// A run whose script was run in release `checked_in` by the engine checks, with no other
+    /// claim: what every engine but Drake (which claims its discrete plant too) builds.
+    pub fn run_in(
+        checked_in: &'static str,
+        claim: Claim,
+        script: Script,
+        versions: Vec<String>,
+        fragments: Vec<Fragment>,
+    ) -> Run {
+        Run {
+            checked_in: Some(checked_in),
+            checked: format!("run in {checked_in} by hertz-tui's engine checks"),
+            claim,
+            other_claims: Vec::new(),
+            script: Some(script),
+            no_script: None,
+            versions,
+            fragments,
+        }
+    }
+}
+
 /// Builds an engine's run from its translation: `tolerance` is asked of the printed step.
 pub type Runner = fn(&EngineScene, &Translation, f64) -> Result<Run, EngineError>;
 

@@ -92,28 +92,25 @@ contact_time = steps_in_contact * model.opt.timestep
         v0 = num(scene.v0),
         max_steps = max_steps(scene, choice.step),
     );
-    Ok(Run {
-        checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks"),
+    Ok(Run::run_in(
+        CHECKED_IN,
         claim,
-        other_claims: Vec::new(),
-        script: Some(Script {
+        Script {
             file: "impact.py",
             language: "python",
             command: "python3 impact.py",
             text,
-        }),
-        no_script: None,
-        versions: vec![
+        },
+        vec![
             "Checked in MuJoCo 4.0.0, with solref (timeconst, dampratio) and solimp as doc/modeling.rst describes them; MuJoCo raises a timeconst below 2·timestep to 2·timestep (refsafe), which is why the step stays at or below timeconst/2.".into(),
             "The step is MuJoCo's, not a stability bound: at timeconst/10 a lightly damped contact gains energy (e = 7.5 asked 0.9 on the Fig. 5 scene).".into(),
         ],
-        fragments: vec![Fragment {
+        vec![Fragment {
             title: "MJCF (solref = timeconst dampratio, the printed step)",
             language: "xml",
             text: mjcf,
         }],
-    })
+    ))
 }
 
 /// The MJCF with body 1 declared first (its free joint's qvel is 0..6) and `gap` above touch.

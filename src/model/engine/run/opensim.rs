@@ -123,22 +123,19 @@ e_out = rate / V0
         dissipation = num(dissipation),
         sample = num(scene.t_contact / 1000.0),
     );
-    Ok(Run {
-        checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks"),
+    Ok(Run::run_in(
+        CHECKED_IN,
         claim,
-        other_claims: Vec::new(),
-        script: Some(Script {
+        Script {
             file: "impact.py",
             language: "python",
             command: "python3 impact.py",
             text,
-        }),
-        no_script: None,
-        versions: vec![
+        },
+        vec![
             "OpenSim 4.x and Simbody 3.x share this HuntCrossleyForce (f = k·x^(3/2)·(1 + 1.5·c·ẋ)); OpenSim 4.6 is the release run.".into(),
             "With a fixed-step integrator (e.g. Manager.setIntegratorMethod with a fixed step) the claim is not modelled: keep the error-controlled default.".into(),
         ],
-        fragments: Vec::new(),
-    })
+        Vec::new(),
+    ))
 }

@@ -127,28 +127,25 @@ contact_time = steps_in_contact * O.dt
         lift = num(gap(scene, choice.step)),
         max_steps = max_steps(scene, choice.step),
     );
-    Ok(Run {
-        checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks"),
+    Ok(Run::run_in(
+        CHECKED_IN,
         claim,
-        other_claims: Vec::new(),
-        script: Some(Script {
+        Script {
             file: "impact.py",
             language: "python",
             command: "yade -n -x impact.py",
             text,
-        }),
-        no_script: None,
-        versions: vec![format!(
+        },
+        vec![format!(
             "en changed meaning: Yade 2023.02a (Debian) maps en through Thornton et al. 2013 and realises en itself (give en = {} there); older sources map en by Tsuji's β-map (give en = {} there). The script gives betan = {}, read the same way in both.",
             num(t.e_requested),
             num(en),
             num(betan)
         )],
-        fragments: vec![Fragment {
+        vec![Fragment {
             title: "Yade interaction loop (betan)",
             language: "python",
             text: law,
         }],
-    })
+    ))
 }
