@@ -24,6 +24,7 @@
 pub mod compliant;
 mod contact;
 mod diagram;
+pub mod map;
 mod error;
 mod model;
 mod orbit;
