@@ -10,6 +10,7 @@
 pub mod figure;
 pub mod kind;
 pub mod layout;
+pub mod map;
 pub mod restitution;
 pub mod sample;
 pub mod stability;

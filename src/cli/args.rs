@@ -62,6 +62,11 @@ pub enum Command {
     Orbit(OrbitArgs),
     /// A brute-force bifurcation diagram of a system over a scene or system key (CSV streamed).
     Bifurcation(BifurcationArgs),
+    /// A two-parameter map of a system's motion (periodic n:m, chaotic, chattering …), whole or
+    /// one shard (--shard I/N).
+    Map(crate::cli::map::MapArgs),
+    /// Join the shards of a map into the whole map (the file the unsharded run writes).
+    Merge(crate::cli::map::MergeArgs),
 }
 
 /// Options of `hertz-tui restitution`.

@@ -7,6 +7,7 @@ pub mod error;
 mod in_order;
 mod layout;
 mod list;
+pub mod map;
 pub mod orbit;
 pub mod plot;
 mod plot_system;
@@ -74,6 +75,8 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             return Ok(out.flush()?);
         }
         Command::Bifurcation(args) => bifurcation::run(args, &registry)?,
+        Command::Map(args) => return map::run(args, &registry, out),
+        Command::Merge(args) => return map::run_merge(args, out),
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

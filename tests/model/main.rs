@@ -35,6 +35,7 @@ mod systems_ball;
 mod systems_common;
 mod systems_diagram;
 mod systems_hard;
+mod systems_map;
 mod systems_oscillator;
 mod systems_scene;
 mod tables;

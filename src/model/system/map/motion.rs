@@ -12,7 +12,7 @@ use crate::model::system::{EndReason, History, ImpactKind, ImpactRecord};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case", tag = "kind")]
 pub enum Motion {
-    /// No impact after the transient within the run's time limit.
+    /// At most one impact recorded after the transient within the run's time limit.
     NoImpact,
     /// The body rests on a stop for ever (a rigid stop's chatter ends in a stick that never
     /// releases; a compliant contact is held for [`HELD_PERIODS`](crate::model::system::compliant::HELD_PERIODS)).
@@ -147,14 +147,13 @@ pub const CHATTER_SPEED: f64 = 1e-3;
 /// What the history says before any exponent: `Some` when it decides the motion alone (no
 /// impact, sticking, chatter, a period), `None` when the exponent must decide.
 pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) -> Option<Motion> {
+    let impacts = &history.impacts;
     match history.end {
         EndReason::StuckForever => return Some(Motion::Sticking),
-        EndReason::TimeLimit => return Some(Motion::NoImpact),
-        EndReason::Recorded => {}
-    }
-    let impacts = &history.impacts;
-    if impacts.is_empty() {
-        return Some(Motion::NoImpact);
+        // Out of time with (almost) nothing recorded: the body stopped impacting. With more, the
+        // impacts were only slow to come; what was recorded is read as usual.
+        EndReason::TimeLimit if impacts.len() < 2 => return Some(Motion::NoImpact),
+        EndReason::TimeLimit | EndReason::Recorded => {}
     }
     let period = period_of(impacts, forcing_period, tol.period, tol.max_period_impacts);
     let fastest = impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);

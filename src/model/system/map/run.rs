@@ -34,7 +34,7 @@ impl Default for MapOptions {
             run: RunOptions {
                 transient_impacts: 300,
                 recorded_impacts: 64,
-                max_periods: 1000.0,
+                max_periods: 20_000.0,
                 max_impacts: 100_000,
                 samples_per_period: 0,
                 initial: None,
