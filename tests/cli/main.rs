@@ -2,6 +2,7 @@
 
 mod commands;
 mod laws;
+mod maps;
 mod plot;
 mod readme;
 mod recommendation;

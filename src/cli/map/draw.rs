@@ -28,12 +28,6 @@ fn draw_layer(out: &mut String, file: &MapFile, layer: &Layer) {
         "{} map of {}: {} across, {} up ({nx} × {ny} cells)",
         layer.contact, file.header.scene, hx.key, hy.key
     );
-    let at = |ix: usize, iy: usize| {
-        layer
-            .cells
-            .get(iy * nx + ix)
-            .filter(|c| c.ix == ix && c.iy == iy)
-    };
     let pick = |i: usize, of: usize, n: usize| {
         if of <= 1 {
             0
@@ -43,6 +37,12 @@ fn draw_layer(out: &mut String, file: &MapFile, layer: &Layer) {
     };
     let label = format!("{}", hy.to);
     let width = label.len().max(format!("{}", hy.from).len());
+    let mut cells = vec![None; nx * ny];
+    for c in &layer.cells {
+        if let Some(slot) = cells.get_mut(c.iy * nx + c.ix).filter(|_| c.ix < nx) {
+            *slot = Some(c);
+        }
+    }
     for r in 0..rows {
         let iy = pick(rows - 1 - r, rows, ny);
         let side = if r == 0 {
@@ -54,7 +54,7 @@ fn draw_layer(out: &mut String, file: &MapFile, layer: &Layer) {
         };
         let line: String = (0..cols)
             .map(|c| {
-                at(pick(c, cols, nx), iy)
+                cells[iy * nx + pick(c, cols, nx)]
                     .map_or(' ', |cell| look(&cell.motion, cell.impacts).glyph)
             })
             .collect();

@@ -191,6 +191,16 @@ pub enum Kind {
     Json,
 }
 
+impl Kind {
+    /// "a CSV file" or "a JSON file", for messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Csv => "a CSV file",
+            Kind::Json => "a JSON file",
+        }
+    }
+}
+
 #[derive(Serialize, Deserialize)]
 struct JsonMap {
     format: String,

@@ -17,7 +17,9 @@ pub fn merge(files: &[(String, String)]) -> Result<(MapFile, Kind), String> {
     for (i, (name, file, k)) in parsed.iter().enumerate() {
         if k != kind {
             return Err(format!(
-                "{name}: {k:?} while {first_name} is {kind:?}: merge shards written in one format"
+                "{name}: {} while {first_name} is {}: merge shards written in one format",
+                k.name(),
+                kind.name()
             ));
         }
         if file.header != first.header {
