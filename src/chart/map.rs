@@ -31,7 +31,10 @@ pub fn look(motion: &str, impacts: Option<u32>) -> Look {
                 2 => Hue::Cyan,
                 _ => Hue::Blue,
             },
-            name: format!("periodic, n = {n} impact{} an orbit (n:m in the file)", if n == 1 { "" } else { "s" }),
+            name: format!(
+                "periodic, n = {n} impact{} an orbit (n:m in the file)",
+                if n == 1 { "" } else { "s" }
+            ),
         },
         ("periodic", _) => l('+', Hue::Blue, "periodic, n ≥ 10 impacts an orbit"),
         ("quasi-periodic", _) => l('~', Hue::Yellow, "quasi-periodic (λ ≈ 0)"),

@@ -89,12 +89,7 @@ fn shards(dir: &Path, n: usize, format: &str, extension: &str) -> Vec<String> {
             let shard = format!("{i}/{n}");
             ok(
                 &refs(&with(&[
-                    "--format",
-                    format,
-                    "--shard",
-                    &shard,
-                    "--out",
-                    &path_text,
+                    "--format", format, "--shard", &shard, "--out", &path_text,
                 ])),
                 None,
             );
@@ -108,7 +103,10 @@ fn shards_merge_into_the_unsharded_bytes_whatever_the_threads() {
     let dir = folder("identity");
     let one_thread = ok(&refs(&with(&[])), Some("1"));
     let two_threads = ok(&refs(&with(&[])), Some("2"));
-    assert_eq!(one_thread, two_threads, "the map depends on the thread count");
+    assert_eq!(
+        one_thread, two_threads,
+        "the map depends on the thread count"
+    );
     let text = String::from_utf8(one_thread.clone()).unwrap();
     // The map is not trivial: several kinds of motion.
     for kind in [",sticking,", ",chattering,", ",chaotic,", ",periodic,"] {
@@ -138,7 +136,14 @@ fn shards_merge_into_the_unsharded_bytes_whatever_the_threads() {
     // The drawing's legend counts every cell.
     let counted: usize = drawing
         .lines()
-        .filter_map(|l| l.split(": ").nth(1)?.split(" cells").next()?.parse::<usize>().ok())
+        .filter_map(|l| {
+            l.split(": ")
+                .nth(1)?
+                .split(" cells")
+                .next()?
+                .parse::<usize>()
+                .ok()
+        })
         .sum();
     assert_eq!(counted, 9 * 7, "{drawing}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -163,7 +168,14 @@ fn merge_refuses_what_would_give_a_wrong_map() {
     // Shards of another map (another --set) and of another N.
     let other = dir.join("other.csv").display().to_string();
     ok(
-        &refs(&with(&["--set", "system.frequency=25", "--shard", "2/3", "--out", &other])),
+        &refs(&with(&[
+            "--set",
+            "system.frequency=25",
+            "--shard",
+            "2/3",
+            "--out",
+            &other,
+        ])),
         None,
     );
     let e = merge(&[&files[0], &other, &files[2]]);

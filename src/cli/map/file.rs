@@ -153,12 +153,19 @@ impl MapFile {
     /// Refuses a file whose checksum is missing (a shard that did not finish) or wrong.
     pub fn parse(name: &str, text: &str) -> Result<(MapFile, Kind), String> {
         let (file, checksum, kind) = if text.trim_start().starts_with('{') {
-            let json: JsonMap = serde_json::from_str(text)
-                .map_err(|e| format!("{name}: not a map file: {e}"))?;
+            let json: JsonMap =
+                serde_json::from_str(text).map_err(|e| format!("{name}: not a map file: {e}"))?;
             if json.format != MAGIC {
-                return Err(format!("{name}: format `{}`, expected `{MAGIC}`", json.format));
+                return Err(format!(
+                    "{name}: format `{}`, expected `{MAGIC}`",
+                    json.format
+                ));
             }
-            let shard = json.shard.as_deref().map(|s| parse_shard(name, 0, s)).transpose()?;
+            let shard = json
+                .shard
+                .as_deref()
+                .map(|s| parse_shard(name, 0, s))
+                .transpose()?;
             let file = MapFile {
                 header: json.header,
                 shard,
@@ -263,7 +270,9 @@ fn parse_csv(name: &str, text: &str) -> Result<(MapFile, Option<String>), String
             break;
         }
         let Some((key, value)) = line.strip_prefix("# ").and_then(|l| l.split_once(": ")) else {
-            return Err(format!("{name}:{n}: expected `# key: value` or the column line"));
+            return Err(format!(
+                "{name}:{n}: expected `# key: value` or the column line"
+            ));
         };
         meta.push((n, key.to_string(), value.to_string()));
     }
@@ -301,13 +310,16 @@ fn parse_csv(name: &str, text: &str) -> Result<(MapFile, Option<String>), String
             return Err(bad("expected 10 fields"));
         }
         let number = |i: usize, what: &str| -> Result<f64, String> {
-            f[i].parse().map_err(|_| bad(&format!("{what} is not a number")))
+            f[i].parse()
+                .map_err(|_| bad(&format!("{what} is not a number")))
         };
         let count = |i: usize, what: &str| -> Result<Option<u32>, String> {
             if f[i].is_empty() {
                 return Ok(None);
             }
-            f[i].parse().map(Some).map_err(|_| bad(&format!("{what} is not a count")))
+            f[i].parse()
+                .map(Some)
+                .map_err(|_| bad(&format!("{what} is not a count")))
         };
         let row = Row {
             ix: f[1].parse().map_err(|_| bad("ix is not an index"))?,

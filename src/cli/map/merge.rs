@@ -28,7 +28,9 @@ pub fn merge(files: &[(String, String)]) -> Result<(MapFile, Kind), String> {
                 differing(&file.header, &first.header)
             ));
         }
-        let shard = file.shard.unwrap_or(crate::model::system::map::Shard::WHOLE);
+        let shard = file
+            .shard
+            .unwrap_or(crate::model::system::map::Shard::WHOLE);
         if shard.count != count {
             return Err(format!(
                 "{name}: shard {}/{} while {first_name} is one of {count}: all shards must use the same N",
@@ -70,7 +72,9 @@ pub fn merge(files: &[(String, String)]) -> Result<(MapFile, Kind), String> {
         let file = &parsed[holder].1;
         for (layer, from) in layers.iter_mut().zip(&file.layers) {
             let start = from.cells.partition_point(|c| c.iy < iy);
-            layer.cells.extend_from_slice(&from.cells[start..start + nx]);
+            layer
+                .cells
+                .extend_from_slice(&from.cells[start..start + nx]);
         }
     }
     Ok((

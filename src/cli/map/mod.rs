@@ -47,7 +47,9 @@ fn grid(args: &MapArgs) -> Result<Grid, CliError> {
     two("--points", args.points.len())?;
     for v in args.from.iter().chain(&args.to) {
         if !v.is_finite() {
-            return Err(usage(format!("--from and --to must be finite numbers, got {v}")));
+            return Err(usage(format!(
+                "--from and --to must be finite numbers, got {v}"
+            )));
         }
     }
     for &p in &args.points {
@@ -74,7 +76,9 @@ fn options(args: &MapArgs) -> Result<MapOptions, CliError> {
         ("--max-periods", args.max_periods),
     ] {
         if !(v.is_finite() && v > 0.0) {
-            return Err(usage(format!("{name} must be a finite number > 0, got {v}")));
+            return Err(usage(format!(
+                "{name} must be a finite number > 0, got {v}"
+            )));
         }
     }
     let recorded = args.recorded as usize;
@@ -218,8 +222,7 @@ fn render(file: &MapFile, kind: Kind) -> Result<String, CliError> {
 }
 
 fn write_file(path: &Path, text: &str) -> Result<(), CliError> {
-    std::fs::write(path, text)
-        .map_err(|e| usage(format!("cannot write {}: {e}", path.display())))
+    std::fs::write(path, text).map_err(|e| usage(format!("cannot write {}: {e}", path.display())))
 }
 
 /// The map drawn as a figure, one chart per layer.

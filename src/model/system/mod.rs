@@ -24,8 +24,8 @@
 pub mod compliant;
 mod contact;
 mod diagram;
-pub mod map;
 mod error;
+pub mod map;
 mod model;
 mod orbit;
 mod param;

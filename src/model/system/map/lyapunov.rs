@@ -11,6 +11,7 @@
 //! Distances are measured in (t/T, v/V): T the forcing period, V the largest recorded speed; the
 //! exponent does not depend on that choice as L grows, only its convergence does.
 
+use crate::model::ForceModel;
 use crate::model::system::compliant::orbit::{MapPoint, map_step as compliant_step};
 use crate::model::system::compliant::{CompliantOptions, CompliantStop};
 use crate::model::system::rigid::dynamics::Dynamics;
@@ -18,7 +19,6 @@ use crate::model::system::rigid::orbit::map_step as rigid_step;
 use crate::model::system::{
     CompliantDamping, ImpactKind, ImpactRecord, State, SystemError, SystemModel,
 };
-use crate::model::ForceModel;
 
 /// The companion's distance, relative to the scales.
 const D0: f64 = 1e-6;
@@ -42,7 +42,9 @@ pub enum NoExponent {
 
 fn degenerate(e: SystemError) -> Result<NoExponent, SystemError> {
     match e {
-        SystemError::OrbitDegenerate(why) if why.contains("no impact") || why.contains("no further") => {
+        SystemError::OrbitDegenerate(why)
+            if why.contains("no impact") || why.contains("no further") =>
+        {
             Ok(NoExponent::NoImpact)
         }
         SystemError::OrbitDegenerate(_) => Ok(NoExponent::Chatters),

@@ -161,8 +161,7 @@ pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) ->
         || impacts.iter().any(|i| {
             i.kind == ImpactKind::ChatterEnd
                 || i.v_in < CHATTER_SPEED * fastest
-                || i
-                    .contact_time
+                || i.contact_time
                     .is_some_and(|tc| tc > HOLDING_CONTACT * forcing_period)
         });
     if chatters {

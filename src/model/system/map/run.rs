@@ -88,9 +88,8 @@ pub fn map(
 ) -> Result<MapRows, SystemError> {
     grid.check(model)?;
     let rows: Vec<usize> = shard.rows(grid.y.points).collect();
-    let per_cell = options.run.transient_impacts
-        + options.run.recorded_impacts
-        + options.lyapunov_impacts;
+    let per_cell =
+        options.run.transient_impacts + options.run.recorded_impacts + options.lyapunov_impacts;
     let needed = rows.len() as u128 * grid.x.points as u128 * per_cell as u128;
     if needed > options.max_total_impacts {
         return Err(SystemError::DiagramBudget {
@@ -201,9 +200,7 @@ pub fn cell(
     let speed = history.impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
     let steps = options.lyapunov_impacts;
     let exponent = match contact {
-        Contact::Rigid { restitution } => {
-            lyapunov::rigid(model, restitution, last, speed, steps)?
-        }
+        Contact::Rigid { restitution } => lyapunov::rigid(model, restitution, last, speed, steps)?,
         Contact::Compliant {
             model: law,
             damping,
