@@ -238,3 +238,27 @@ fn a_slurm_job_array_merges_into_the_one_process_map() {
     );
     assert!(String::from_utf8_lossy(&output.stdout).contains("byte for byte"));
 }
+
+#[test]
+fn the_figure_shows_every_motion_of_the_legend_on_the_keys_axes() {
+    let dir = folder("figure");
+    let svg = dir.join("map.svg");
+    let svg_text = svg.display().to_string();
+    let drawing = String::from_utf8(ok(
+        &refs(&with(&["--format", "table", "--figure", &svg_text])),
+        None,
+    ))
+    .unwrap();
+    let figure = std::fs::read_to_string(&svg).unwrap();
+    assert!(figure.contains("system.gamma") && figure.contains("impact.restitution"));
+    // Every motion the terminal legend lists is a series of the figure.
+    let mut listed = 0;
+    for line in drawing.lines().filter(|l| l.contains(" cell")) {
+        let name = line[5..].split(": ").next().unwrap();
+        let name = name.replace('>', "&gt;").replace('<', "&lt;");
+        assert!(figure.contains(&name), "{name} missing from the figure");
+        listed += 1;
+    }
+    assert!(listed >= 3, "{drawing}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

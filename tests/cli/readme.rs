@@ -163,6 +163,8 @@ fn run(command: &str, dir: &Path) -> Result<String, String> {
         "system",
         "orbit",
         "bifurcation",
+        "map",
+        "merge",
         "help",
     ];
     if !args

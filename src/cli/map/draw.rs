@@ -78,7 +78,8 @@ fn draw_layer(out: &mut String, file: &MapFile, layer: &Layer) {
     for (glyph, name, count) in legend {
         let _ = writeln!(
             out,
-            "  {glyph}  {name}: {count} cells ({:.1} %)",
+            "  {glyph}  {name}: {count} cell{} ({:.1} %)",
+            if count == 1 { "" } else { "s" },
             100.0 * count as f64 / total as f64
         );
     }
