@@ -217,6 +217,15 @@ fn parse_value(
                 .map(Value::Float)
                 .map_err(|reason| {
                     let given = raw.to_string();
+                    let reason = match key {
+                        "system.forcing_amplitude" if base_motion => {
+                            format!("{reason}; a force F₀ needs system.forcing = \"force\"")
+                        }
+                        "system.forcing_amplitude" => format!(
+                            "{reason}; a base motion B in m needs system.forcing = \"base\""
+                        ),
+                        _ => reason,
+                    };
                     bad_value(key, ValueProblem::BadQuantity { given, reason })
                 }),
         },
@@ -377,6 +386,31 @@ plastic_indentation = 2.3e-6
         let err = scene_with(&["body1.shape=cylinder"]).unwrap_err();
         assert!(
             err.contains("missing key `body1.length` (a cylinder needs it)"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn numbers_take_their_keys_unit() {
+        let s = scene_with(&[
+            "impact.v0=300 mm/s",
+            "body1.radius=12mm",
+            "body1.mass=33 g",
+            "body1.material.youngs_modulus=70 GPa",
+            "body2.material.density=2.7 g/cm³",
+            "impact.restitution=55%",
+        ])
+        .unwrap();
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-15 * b.abs();
+        assert!(close(s.impact.v0, 0.3), "{}", s.impact.v0);
+        assert!(close(s.body1.shape.radius(), 0.012));
+        assert!(close(s.body1.mass.unwrap(), 0.033));
+        assert_eq!(s.body1.material.youngs_modulus, 7e10);
+        assert!(close(s.body2.material.density, 2700.0));
+        assert!(close(s.impact.restitution, 0.55));
+        let err = scene_with(&["body1.radius=1 kg"]).unwrap_err();
+        assert!(
+            err.starts_with("--set body1.radius: \"1 kg\": unknown unit 'kg' (expected m"),
             "{err}"
         );
     }

@@ -11,7 +11,7 @@ use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
 use crate::model::presets::kebab_case;
 use crate::model::recommend::{Recommendation, recommend};
-use crate::model::scene_file::SceneView;
+use crate::model::scene_file::{SceneView, system_table};
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::scene_title::{edits, retitled};
 use crate::model::study::runner::{StudyJob, StudySpec};
@@ -269,6 +269,48 @@ pub struct App {
     pub quit: bool,
 }
 
+/// [`retitled`] of a scene with its `[system]` table: the description names the keys of the
+/// table that were edited too, so that a preset's "Γ ≈ 1.61" does not describe another Γ.
+pub(crate) fn retitled_with_system(
+    (original, saved_system): (&Scene, Option<&SystemSpec>),
+    description: Option<&str>,
+    (edited, system): (&Scene, Option<&SystemSpec>),
+) -> (String, Option<String>) {
+    let (name, described) = retitled(original, description, edited);
+    let system = system_edits(saved_system, system);
+    if system.is_empty() {
+        return (name, described);
+    }
+    let changed: Vec<String> = edits(original, edited).into_iter().chain(system).collect();
+    let described = format!("edited from \"{}\": {}", original.name, changed.join(", "));
+    (name, Some(described))
+}
+
+/// What differs in `edited` from the `[system]` table `saved`: `system.gap = 0.0004`, each key
+/// with its new value as the scene file writes it.
+fn system_edits(saved: Option<&SystemSpec>, edited: Option<&SystemSpec>) -> Vec<String> {
+    if saved == edited {
+        return Vec::new();
+    }
+    let lines = |spec: Option<&SystemSpec>| -> Vec<String> {
+        spec.map(system_table)
+            .unwrap_or_default()
+            .lines()
+            .skip(1)
+            .map(|l| l.split('#').next().unwrap_or_default().trim().to_string())
+            .collect()
+    };
+    let before = lines(saved);
+    match edited {
+        None => vec!["[system] removed".to_string()],
+        Some(_) => lines(edited)
+            .into_iter()
+            .filter(|line| !before.contains(line))
+            .map(|line| format!("system.{line}"))
+            .collect(),
+    }
+}
+
 pub(super) fn model_index(model: ForceModel) -> usize {
     model.index()
 }
@@ -446,8 +488,13 @@ impl App {
     /// The scene's name and description as shown, exported and saved: those loaded while the
     /// draft is as loaded, else named by its bodies with what was edited (a preset's "…on steel
     /// plate" is not the name of a scene whose plate became aluminium).
+    /// An edited `[system]` table is named in the description too.
     pub fn title(&self) -> (String, Option<String>) {
-        retitled(&self.saved, self.description.as_deref(), &self.draft.scene)
+        retitled_with_system(
+            (&self.saved, self.saved_system.as_ref()),
+            self.description.as_deref(),
+            (&self.draft.scene, self.draft.system.as_ref()),
+        )
     }
 
     /// The file-name stem of exports: the preset's name while unedited, else the shown name in

@@ -55,7 +55,7 @@ use crate::model::Scene;
 use crate::model::overrides::Override;
 use crate::model::presets::{PresetError, Registry};
 use crate::model::scene_file::SceneView;
-use crate::model::scene_title::retitled;
+
 use crate::model::system::SystemSpec;
 
 use app::App;
@@ -108,9 +108,15 @@ pub fn run(
         .wrap_err("cannot load the presets")?;
     // A scene file's description is kept on save, as a preset's is.
     let description = registry.scene_description(source).ok().flatten();
-    // Overrides given on the command line: the description says what they edited.
+    // Overrides given on the command line: the description says what they edited, `system.*`
+    // included.
     let description = match registry.scene(source) {
-        Ok(original) => retitled(&original, description.as_deref(), &scene).1,
+        Ok(original) => {
+            let loaded = registry.scene_system(source, &[]).ok().flatten();
+            let original = (&original, loaded.as_ref());
+            let edited = (&scene, system.as_ref());
+            app::retitled_with_system(original, description.as_deref(), edited).1
+        }
         Err(_) => description,
     };
     let theme = config.theme_or(Theme::from_env);
