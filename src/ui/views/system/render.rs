@@ -225,24 +225,19 @@ fn how_to_add_a_system() -> Vec<(String, Role)> {
     let mut texts = vec![
         (format!("{NO_SYSTEM}: nothing to run."), Role::Warning),
         (
-            "Enter adds the table of the preset under the cursor to this scene, with its \
-             bodies as the body and its stop (u takes it back, s saves it); p opens a system \
-             preset instead."
+            "Enter adds the chosen preset's table to this scene, its bodies as the body and \
+             the stop (u undoes, s saves); p opens a preset."
                 .to_string(),
             Role::Normal,
         ),
         (
-            "Or add a table to the scene file and open it with hertz-tui --scene FILE:".to_string(),
+            "Or add to the scene file, then hertz-tui --scene FILE:".to_string(),
             Role::Normal,
         ),
     ];
-    texts.extend(
-        TOML_SNIPPET
-            .lines()
-            .map(|line| (format!("  {line}"), Role::Label)),
-    );
+    texts.extend(TOML_SNIPPET.lines().map(|line| (line.to_string(), Role::Label)));
     texts.push((
-        "The keys of each kind: docs/systems.md.".to_string(),
+        "Keys of each kind: docs/systems.md".to_string(),
         Role::Muted,
     ));
     texts
@@ -299,8 +294,12 @@ fn charts(frame: &mut Frame, area: Rect, app: &App, model: Option<&SystemModel>,
         None => Vec::new(),
     }
     .into_iter();
+    let empty = match app.draft.system {
+        Some(_) => "no run yet",
+        None => "no system",
+    };
     for area in areas {
-        chart_pane(frame, area, app, motion.next(), "no run yet", running, roomy);
+        chart_pane(frame, area, app, motion.next(), empty, running, roomy);
     }
     let filling = app.studies.is_pending(StudyKind::Diagram);
     let chart = model.and_then(|model| {
