@@ -55,7 +55,6 @@ use crate::model::Scene;
 use crate::model::overrides::Override;
 use crate::model::presets::{PresetError, Registry};
 use crate::model::scene_file::SceneView;
-
 use crate::model::system::SystemSpec;
 
 use app::App;
