@@ -139,7 +139,7 @@ fn shards_merge_into_the_unsharded_bytes_whatever_the_threads() {
         .filter_map(|l| {
             l.split(": ")
                 .nth(1)?
-                .split(" cells")
+                .split(" cell")
                 .next()?
                 .parse::<usize>()
                 .ok()
