@@ -346,6 +346,38 @@ fn shards_and_threads_do_not_change_the_map() {
 }
 
 #[test]
+fn a_compliant_map_does_not_depend_on_the_threads_either() {
+    let model = steel_ball(1.3);
+    let hc = Contact::Compliant {
+        model: ForceModel::HuntCrossley,
+        damping: CompliantDamping::PerImpact,
+    };
+    let options = MapOptions {
+        run: RunOptions {
+            transient_impacts: 40,
+            recorded_impacts: 16,
+            ..MapOptions::default().run
+        },
+        lyapunov_impacts: 20,
+        ..MapOptions::default()
+    };
+    let grid = Grid {
+        x: gamma_axis(1.2, 2.4, 3),
+        y: e_axis(0.4, 0.8, 3),
+    };
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| map::map(&model, &hc, &grid, Shard::WHOLE, &options).unwrap())
+    };
+    let (one, three) = (on(1), on(3));
+    assert_eq!(one, three);
+    assert!(one.cells.iter().any(|c| c.lyapunov.is_some()), "{one:?}");
+}
+
+#[test]
 fn bad_grids_are_refused_naming_the_key() {
     let model = ball(1.0, 0.5);
     let options = MapOptions::default();
