@@ -210,6 +210,11 @@ fn map_refuses_bad_grids_naming_the_flag_or_key() {
     assert!(refused(&refs(&once)).contains("--from must be given twice"));
     let e = refused(&refs(&with(&["--shard", "4/3"])));
     assert!(e.contains("4/3"), "{e}");
+    let e = refused(&refs(&with(&["--budget", "1000"])));
+    assert!(
+        e.contains("the map needs") && e.contains("--budget 1000"),
+        "{e}"
+    );
     let mut gap = with(&[]);
     gap[4] = "system.gap".into();
     assert!(refused(&refs(&gap)).contains("system.gap"));

@@ -15,7 +15,7 @@ use crate::model::presets::Registry;
 use crate::model::system::map::{
     Axis, Cell, Grid, MapOptions, Shard, Tolerances, difference, map as compute,
 };
-use crate::model::system::{Contact, Param, RunOptions, SystemModel};
+use crate::model::system::{Contact, Param, RunOptions, SystemError, SystemModel};
 
 use super::args::Format;
 use super::error::CliError;
@@ -180,7 +180,18 @@ pub fn compute_file(args: &MapArgs, registry: &Registry) -> Result<MapFile, CliE
     let mut layers = Vec::new();
     let mut maps = Vec::new();
     for stop in &stops {
-        let rows = compute(&model, stop, &grid, shard, &options).map_err(|e| failed(stop, e))?;
+        let rows = compute(&model, stop, &grid, shard, &options).map_err(|e| match e {
+            SystemError::DiagramBudget {
+                needed,
+                values,
+                per_value,
+                ..
+            } => usage(format!(
+                "the map needs {needed} impacts ({values} cells × {per_value} impacts a cell), more than --budget {}; use fewer points or impacts a cell, or shards (--shard I/N)",
+                args.budget
+            )),
+            e => failed(stop, e),
+        })?;
         layers.push(Layer {
             contact: contact_label(stop),
             cells: rows_of(&rows.cells),
