@@ -40,6 +40,9 @@ pub enum NoExponent {
     Grazes,
 }
 
+/// Why a map step refused: the steps say so only in words (`OrbitDegenerate`), so the two "no
+/// impact" messages of the rigid and compliant steps are told from chatter and held contacts by
+/// their text; anything else (a budget, a failed contact) is the cell's error.
 fn degenerate(e: SystemError) -> Result<NoExponent, SystemError> {
     match e {
         SystemError::OrbitDegenerate(why)
