@@ -20,7 +20,7 @@ Two stops, as in the Rust benchmark:
 Tolerances: rtol 1e-8 on both (atol 1e-8 of the contact's x_e and v_in, of g·T² and g·T in flight),
 as `cargo bench --bench systems` runs hertz-tui. Prints impacts, wall and CPU time, µs per impact.
 `--every K` runs only every K-th Γ value (the diagram's per-impact cost from a sample of it: the full
-diagram takes scipy about an hour). `--csv FILE` writes (Γ, impact speed) of the recorded impacts.
+diagram takes scipy hours; `--every 20`, 50 values, gives tens of thousands of impacts). `--csv FILE` writes (Γ, impact speed) of the recorded impacts.
 
 Standard scipy; not run by CI. See docs/performance.md ("Vibro-impact diagrams").
 """
@@ -239,7 +239,8 @@ def main():
             )
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
     print(
-        f"scipy {args.stop}: f = {freq:.3f} Hz, {len(gammas)} values, {total} impacts, "
+        f"scipy {args.stop}: f = {freq:.3f} Hz, {len(gammas)} values (every {args.every}th of "
+        f"{args.values}), {total} impacts, "
         f"wall {wall:.2f} s, CPU {cpu:.2f} s, {1e6 * cpu / max(total, 1):.1f} µs CPU per impact"
     )
     if args.csv:

@@ -6,4 +6,5 @@ mod plot;
 mod readme;
 mod recommendation;
 mod studies;
+mod support;
 mod systems;

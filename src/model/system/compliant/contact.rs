@@ -264,34 +264,14 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         let (ddd, stop_now, ..) = ode_sys.relative_accel(0.0, &State::zeros());
         if ddd <= 0.0 {
             let (x, v) = stop_now.body(0.0, 0.0);
-            return Ok(finish(
-                mass,
-                Some((0.0, State::zeros())),
-                scale,
-                t0,
-                v_in,
-                stop,
-                (0.0, t0),
-                0.0,
-                EnergyAudit::default(),
-                Exit::Free { t: t0, x, v },
-                0,
-                0,
-                Vec::new(),
-            ));
+            let mut totals = Totals::new(mass, scale, v_in);
+            totals.law_end = Some((0.0, State::zeros()));
+            return Ok(totals.finish(Exit::Free { t: t0, x, v }));
         }
     }
     let mut tau = 0.0;
     let mut y = State::new(0.0, v_in / v_s);
-    let mut steps = 0;
-    let mut pieces = Vec::new();
-    let mut energy = EnergyAudit {
-        incoming: 0.5 * mass * v_in * v_in,
-        ..EnergyAudit::default()
-    };
-    let mut peak = (0.0_f64, t0);
-    let mut max_approach = 0.0_f64;
-    let mut law_end: Option<(f64, State)> = None;
+    let mut totals = Totals::new(mass, scale, v_in);
     let mut h_initial = None;
     let mut pending_work = 0.0;
     let fail = |tau: f64, source| ContactError::Integration {
@@ -303,21 +283,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         if tau >= tau_limit {
             let (x, v) = scale.body(plant, tau, &y);
             let t = scale.time(tau);
-            return Ok(finish(
-                mass,
-                law_end,
-                scale,
-                t0,
-                v_in,
-                stop,
-                peak,
-                max_approach,
-                energy,
-                Exit::Held { t, x, v },
-                ode_sys.evals,
-                steps,
-                pieces,
-            ));
+            return Ok(totals.finish(Exit::Held { t, x, v }));
         }
         let phase = ode_sys.phase;
         let law_now = ode_sys.law;
@@ -378,13 +344,14 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             };
             (end, run)
         };
-        steps += integration.stats.steps + integration.stats.rejected_steps;
-        if steps > settings.max_steps {
+        totals.steps += integration.stats.steps + integration.stats.rejected_steps;
+        totals.force_evals = ode_sys.evals;
+        if totals.steps > settings.max_steps {
             return Err(fail(
                 integration.t,
                 OdeError::StepBudgetExhausted {
                     t: scale.time(integration.t),
-                    steps,
+                    steps: totals.steps,
                 },
             ));
         }
@@ -397,13 +364,13 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             .reduce(f64::max);
         if ode_sys.force_on {
             let (piece_peak, piece_max) = extremes(&ode_sys, segments, integration.t, scale);
-            if piece_peak.0 > peak.0 {
-                peak = piece_peak;
+            if piece_peak.0 > totals.peak.0 {
+                totals.peak = piece_peak;
             }
-            max_approach = max_approach.max(piece_max);
+            totals.max_approach = totals.max_approach.max(piece_max);
             let (work, dissipated) = energy_integrals(&mut ode_sys, segments, integration.t);
-            energy.external_work += work;
-            energy.absorbed += dissipated;
+            totals.energy.external_work += work;
+            totals.energy.absorbed += dissipated;
         } else {
             // Free motion inside: only the external forces work, and that counts towards this
             // impact only if the law takes up the contact again.
@@ -414,7 +381,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         if settings.keep_dense {
             let mut dense = integration.dense;
             dense.truncate_at(tau_end);
-            pieces.push(ContactPiece {
+            totals.pieces.push(ContactPiece {
                 dense,
                 scale,
                 force_on: ode_sys.force_on,
@@ -425,43 +392,29 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         match piece_end {
             PieceEnd::Approach => {
                 if ode_sys.force_on {
-                    law_end = Some((tau, State::new(0.0, y[1])));
+                    totals.law_end = Some((tau, State::new(0.0, y[1])));
                 }
                 // Exactly on the surface, so that the flight starts from a gap of exactly 0.
                 let t = scale.time(tau);
                 let stop_now = plant.stop(stop, t);
                 let (x, v) = stop_now.body(0.0, y[1] * scale.v);
-                return Ok(finish(
-                    mass,
-                    law_end,
-                    scale,
-                    t0,
-                    v_in,
-                    stop,
-                    peak,
-                    max_approach,
-                    energy,
-                    Exit::Free { t, x, v },
-                    ode_sys.evals,
-                    steps,
-                    pieces,
-                ));
+                return Ok(totals.finish(Exit::Free { t, x, v }));
             }
             PieceEnd::Tension => {
-                law_end = Some((tau, y));
+                totals.law_end = Some((tau, y));
                 let d = y[0] * scale.x;
-                energy.absorbed += law_now.stored_energy(d, phase);
+                totals.energy.absorbed += law_now.stored_energy(d, phase);
                 ode_sys.force_on = false;
             }
             PieceEnd::Recontact => {
                 // The excursion is part of the same impact: its energy bookkeeping restarts from
                 // the state the law takes up again.
                 let d = y[0] * scale.x;
-                energy.absorbed -= law_now.stored_energy(d, phase);
-                energy.external_work += std::mem::take(&mut pending_work);
+                totals.energy.absorbed -= law_now.stored_energy(d, phase);
+                totals.energy.external_work += std::mem::take(&mut pending_work);
                 ode_sys.force_on = true;
                 ode_sys.phase = Phase::of_velocity(y[1]);
-                law_end = None;
+                totals.law_end = None;
             }
             PieceEnd::Turn => {
                 y[1] = 0.0;
@@ -475,21 +428,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             PieceEnd::TimeLimit => {
                 let (x, v) = scale.body(plant, tau, &y);
                 let t = scale.time(tau);
-                return Ok(finish(
-                    mass,
-                    law_end,
-                    scale,
-                    t0,
-                    v_in,
-                    stop,
-                    peak,
-                    max_approach,
-                    energy,
-                    Exit::Held { t, x, v },
-                    ode_sys.evals,
-                    steps,
-                    pieces,
-                ));
+                return Ok(totals.finish(Exit::Held { t, x, v }));
             }
         }
     }
@@ -515,42 +454,66 @@ fn options(
     }
 }
 
-#[allow(clippy::too_many_arguments)]
-fn finish(
+/// A contact's running totals, from its first touch to whichever exit ends it.
+struct Totals {
     mass: f64,
-    law_end: Option<(f64, State)>,
     scale: Scale,
-    t0: f64,
     v_in: f64,
-    stop: usize,
+    /// Where the law let go (scaled time and state), if it did.
+    law_end: Option<(f64, State)>,
+    /// Peak force, N, and its time, s.
     peak: (f64, f64),
     max_approach: f64,
-    mut energy: EnergyAudit,
-    exit: Exit,
+    energy: EnergyAudit,
     force_evals: usize,
     steps: usize,
     pieces: Vec<ContactPiece>,
-) -> ContactResult {
-    let (t_end, v_out, residual) = match (law_end, exit) {
-        (Some((tau, y)), _) => (scale.time(tau), -y[1] * scale.v, y[0] * scale.x),
-        (None, Exit::Held { t, .. } | Exit::Free { t, .. }) => (t, 0.0, 0.0),
-    };
-    energy.outgoing = 0.5 * mass * v_out * v_out;
-    ContactResult {
-        stop,
-        t_start: t0,
-        v_in,
-        t_end,
-        v_out,
-        residual,
-        peak_force: peak.0,
-        t_peak: peak.1,
-        max_approach,
-        energy,
-        exit,
-        force_evals,
-        steps,
-        pieces,
+}
+
+impl Totals {
+    fn new(mass: f64, scale: Scale, v_in: f64) -> Totals {
+        Totals {
+            mass,
+            scale,
+            v_in,
+            law_end: None,
+            peak: (0.0, scale.t0),
+            max_approach: 0.0,
+            energy: EnergyAudit {
+                incoming: 0.5 * mass * v_in * v_in,
+                ..EnergyAudit::default()
+            },
+            force_evals: 0,
+            steps: 0,
+            pieces: Vec::new(),
+        }
+    }
+
+    /// The contact's result once `exit` ends it.
+    fn finish(self, exit: Exit) -> ContactResult {
+        let scale = self.scale;
+        let (t_end, v_out, residual) = match (self.law_end, exit) {
+            (Some((tau, y)), _) => (scale.time(tau), -y[1] * scale.v, y[0] * scale.x),
+            (None, Exit::Held { t, .. } | Exit::Free { t, .. }) => (t, 0.0, 0.0),
+        };
+        let mut energy = self.energy;
+        energy.outgoing = 0.5 * self.mass * v_out * v_out;
+        ContactResult {
+            stop: scale.stop,
+            t_start: scale.t0,
+            v_in: self.v_in,
+            t_end,
+            v_out,
+            residual,
+            peak_force: self.peak.0,
+            t_peak: self.peak.1,
+            max_approach: self.max_approach,
+            energy,
+            exit,
+            force_evals: self.force_evals,
+            steps: self.steps,
+            pieces: self.pieces,
+        }
     }
 }
 
