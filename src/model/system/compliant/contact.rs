@@ -138,6 +138,11 @@ pub struct ContactResult {
     pub t_peak: f64,
     pub max_approach: f64,
     pub energy: EnergyAudit,
+    /// ∫ side·(s̈ − a) dt over the contact, m/s: the impulse per unit mass with which the
+    /// system's forces pressed the body into the stop while the law's force acted. Against the
+    /// speed the contact reversed, v_in + v_out, it tells an impact from a resting phase
+    /// ([`ContactResult::is_rest`]).
+    pub pressing_impulse: f64,
     pub exit: Exit,
     /// The law's force evaluations, the floor of a contact's cost.
     pub force_evals: usize,
@@ -148,6 +153,16 @@ pub struct ContactResult {
 impl ContactResult {
     pub fn contact_time(&self) -> f64 {
         self.t_end - self.t_start
+    }
+
+    /// Whether the body came to rest on the stop rather than bounced: the contact never ended,
+    /// or the system's forces pressed it in with more impulse than the contact spent reversing
+    /// its motion (v_in + v_out), so that most of the contact force's impulse, v_in + v_out + J,
+    /// held the body against them (docs/compliant.md §3). A free impact of any law of the table
+    /// is the other way round by orders of magnitude when its contact is short against the
+    /// system's motion.
+    pub fn is_rest(&self) -> bool {
+        matches!(self.exit, Exit::Held { .. }) || self.pressing_impulse > self.v_in + self.v_out
     }
 }
 
@@ -368,13 +383,15 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
                 totals.peak = piece_peak;
             }
             totals.max_approach = totals.max_approach.max(piece_max);
-            let (work, dissipated) = energy_integrals(&mut ode_sys, segments, integration.t);
+            let (work, dissipated, impulse) =
+                energy_integrals(&mut ode_sys, segments, integration.t);
             totals.energy.external_work += work;
             totals.energy.absorbed += dissipated;
+            totals.pressing_impulse += impulse;
         } else {
             // Free motion inside: only the external forces work, and that counts towards this
             // impact only if the law takes up the contact again.
-            let (work, _) = energy_integrals(&mut ode_sys, segments, integration.t);
+            let (work, ..) = energy_integrals(&mut ode_sys, segments, integration.t);
             pending_work += work;
         }
         let (tau_end, y_end) = (integration.t, integration.y);
@@ -465,6 +482,7 @@ struct Totals {
     peak: (f64, f64),
     max_approach: f64,
     energy: EnergyAudit,
+    pressing_impulse: f64,
     force_evals: usize,
     steps: usize,
     pieces: Vec<ContactPiece>,
@@ -483,6 +501,7 @@ impl Totals {
                 incoming: 0.5 * mass * v_in * v_in,
                 ..EnergyAudit::default()
             },
+            pressing_impulse: 0.0,
             force_evals: 0,
             steps: 0,
             pieces: Vec::new(),
@@ -509,6 +528,7 @@ impl Totals {
             t_peak: self.peak.1,
             max_approach: self.max_approach,
             energy,
+            pressing_impulse: self.pressing_impulse,
             exit,
             force_evals: self.force_evals,
             steps: self.steps,
@@ -575,16 +595,17 @@ fn extremes<P: Plant, L: ForceLaw>(
     (peak, x.max(0.0) * scale.x)
 }
 
-/// ∫ m·side·(s̈ − a)·δ̇ dt (external work) and ∫ (F − k·xⁿ)·δ̇ dt (the law's dissipative work)
-/// over a piece, J, by Gauss–Legendre on each step's interpolant.
+/// ∫ m·side·(s̈ − a)·δ̇ dt (external work, J), ∫ (F − k·xⁿ)·δ̇ dt (the law's dissipative work, J)
+/// and ∫ side·(s̈ − a) dt (the pressing impulse per unit mass, m/s) over a piece, by
+/// Gauss–Legendre on each step's interpolant.
 fn energy_integrals<P: Plant, L: ForceLaw>(
     sys: &mut ContactOde<'_, P, L>,
     segments: &[Segment],
     tau_end: f64,
-) -> (f64, f64) {
+) -> (f64, f64, f64) {
     let scale = sys.scale;
     let mass = 1.0 / sys.inv_mass;
-    let (mut work, mut dissipated) = (0.0, 0.0);
+    let (mut work, mut dissipated, mut impulse) = (0.0, 0.0, 0.0);
     for seg in segments {
         let (a, b) = (seg.t_start(), seg.t_end().min(tau_end));
         if b <= a {
@@ -599,11 +620,13 @@ fn energy_integrals<P: Plant, L: ForceLaw>(
             let stop = sys.plant.stop(scale.stop, t);
             let (x, v) = stop.body(d, dd);
             let accel = sys.plant.free_accel(t, x, v);
-            work += weight * h * mass * stop.side * (stop.sdd - accel) * dd;
+            let pressing = stop.side * (stop.sdd - accel);
+            work += weight * h * mass * pressing * dd;
+            impulse += weight * h * pressing;
             if sys.force_on {
                 dissipated += weight * h * sys.law.dissipative_force(d, dd, sys.phase) * dd;
             }
         }
     }
-    (work, dissipated)
+    (work, dissipated, impulse)
 }
