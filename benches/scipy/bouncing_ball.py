@@ -10,8 +10,13 @@ so that the elastic contact at the period-1 orbit's impact speed gT/(1+e) lasts 
 
 Two stops, as in the Rust benchmark:
 - `--stop rigid`: flight by solve_ivp (DOP853) with a terminal event on the gap y − A·sin(ωt),
-  Newton's restitution at the event; a ball whose approach speed falls below 1e-9 of gT rides the
-  table until its acceleration −Aω²·sin(ωt) drops below −g (found by a root of that), or for ever.
+  Newton's restitution at the event; chatter whose accumulation time 2v/(a(1 − e)) (a = g + s̈) is
+  under 1e-6 of a period is summed in closed form, and the ball rides the table until its
+  acceleration −Aω²·sin(ωt) drops below −g (a closed-form arcsin), or for ever — as hertz-tui
+  does (docs/systems.md §4). A hop lower than the flights' absolute tolerance on the height (which
+  solve_ivp's event cannot resolve: the ball would fall through the table) lands in closed form
+  after 2v/a at the speed it left, for both stops; a value that ends with the ball on the table
+  starts the next there.
 - `--stop hunt-crossley`: flights as above; each contact by solve_ivp (DOP853) in the table's frame,
   δ̈ = s̈ + g − F/m with F = k·δⁿ·(1 + α·δ̇) and α = χ/v_in, χ the exact χ(e) (its realised e is
   e: ln((1 + χ)/(1 − χ·e)) = χ·(1 + e)), a terminal event at δ = 0 (and at F = 0, the
@@ -163,34 +168,57 @@ class Ball:
         t_end = min(ev[0] for ev in ends)
         return t_end, sol.y[:, -1]
 
+    def release_from(self, t):
+        """The ball riding the table from t: the state just after it leaves, or None (Γ ≤ 1)."""
+        release = self.stick_release(t)
+        if release is None:
+            return None
+        # Riding the table until release, then off it: after δ = T/1000 the free ball is above the
+        # table by about jerk·δ³/6, far above rounding.
+        s_r, sd_r, _ = self.table(release)
+        dt = 1e-3 * self.period
+        return release + dt, s_r + sd_r * dt - 0.5 * G * dt * dt, sd_r - G * dt
+
     def run(self, state, transient, recorded, speeds):
         """One value: `transient` then `recorded` impacts from state (t, y, v); the end state."""
         t, y, v = state
         t_limit = t + 10000.0 * self.period
         impacts = 0
+        low = RTOL * G * self.period**2  # the flights' absolute tolerance on the height, m
         while impacts < transient + recorded:
-            # A flight longer than 64 periods means the ball left for good (or sank in): stop.
-            hit = self.fly(t, y, v, min(t_limit, t + 64.0 * self.period))
+            s, sd, sdd = self.table(t)
+            rise, press = v - sd, G + sdd
+            if abs(y - s) <= 1e-9 * self.amp and rise >= 0.0 and press > 0.0 and rise * rise <= 2.0 * press * low:
+                # A hop lower than the flights' tolerance (or the ball resting on the table) is
+                # below what solve_ivp's event resolves: it lands after 2v/a at the speed it left.
+                t = t + 2.0 * rise / press
+                s, sd, _ = self.table(t)
+                hit = (t, s, sd - rise)
+            else:
+                # A flight longer than 64 periods means the ball left for good (or sank in): stop.
+                hit = self.fly(t, y, v, min(t_limit, t + 64.0 * self.period))
             if hit is None:
                 return (t, y, v), impacts
             t, y, v = hit
-            s, sd, _ = self.table(t)
+            s, sd, sdd = self.table(t)
             v_in = sd - v
             impacts += 1
             if impacts > transient:
                 speeds.append(v_in)
             if self.stop == "rigid":
                 v_out = E_REST * v_in
-                if v_out < 1e-9 * G * self.period:
-                    release = self.stick_release(t)
-                    if release is None:
-                        return (t, s, sd), impacts
-                    # Riding the table until release, then off it: after δ = T/1000 the free ball is
-                    # above the table by about jerk·δ³/6, far above rounding.
-                    s_r, sd_r, _ = self.table(release)
-                    dt = 1e-3 * self.period
-                    t = release + dt
-                    y, v = s_r + sd_r * dt - 0.5 * G * dt * dt, sd_r - G * dt
+                # Chatter: flights of 2v/a, 2ev/a, … accumulate at 2v/(a(1 − e)) with the table
+                # pressing the ball at a = g + s̈; once that is under 1e-6 of a period it is summed
+                # in closed form and the ball rides the table, as hertz-tui does
+                # (docs/systems.md §4).
+                press = G + sdd
+                if press > 0.0 and 2.0 * v_out <= 1e-6 * self.period * press * (1.0 - E_REST):
+                    t_acc = t + 2.0 * v_out / (press * (1.0 - E_REST))
+                    off = self.release_from(t_acc)
+                    if off is None:
+                        s, sd, _ = self.table(t_acc)
+                        return (t_acc, s, sd), impacts
+                    t, y, v = off
                     continue
                 y, v = s, sd + v_out
             else:

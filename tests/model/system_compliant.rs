@@ -501,3 +501,31 @@ fn the_verdict_weighs_the_impacts_contacts_and_reports_resting_phases_apart() {
         sentence(&v)
     );
 }
+
+#[test]
+fn a_compliant_orbit_is_found_without_a_start_where_the_run_from_rest_settles() {
+    // Γ = 1.3, t_c/T = 0.003: the run from rest chatters and rests on the table; the search
+    // starts Newton from the rigid orbit and lands on the compliant one beside it.
+    let f = frequency_for_ratio(0.003);
+    let model = ball(f, 1.3);
+    let hc = Contact::Compliant {
+        model: ForceModel::HuntCrossley,
+        damping: CompliantDamping::CalibratedTo(E),
+    };
+    let run = simulate(&model, &hc, &RunOptions::default()).unwrap();
+    assert!(
+        run.impacts.iter().any(|i| i.kind == ImpactKind::Rest),
+        "{:?}",
+        run.end
+    );
+    let guess = OrbitGuess {
+        forcing_cycles: 1,
+        impacts: 1,
+        start: None,
+        attractor: RunOptions::default(),
+    };
+    let o = find_orbit(&model, &hc, &guess, &OrbitOptions::default()).unwrap();
+    assert!(o.stable, "{o:?}");
+    let v_rigid = G / f / (1.0 + E);
+    assert!((o.points[0].v_in / v_rigid - 1.0).abs() < 2e-3, "{o:?}");
+}
