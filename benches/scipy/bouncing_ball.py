@@ -227,6 +227,11 @@ class Ball:
                     return (t, y, v), impacts
                 t, (d, dd) = end
                 s, sd, _ = self.table(t)
+                # Exactly on the surface where the contact ended at δ = 0 (its event lands within
+                # rounding of it, possibly inside: the flight's falling-gap event would then miss a
+                # hop shorter than its first step), as hertz-tui does.
+                if abs(d) < 1e-12:
+                    d = 0.0
                 y, v = s - d, sd - dd
         return (t, y, v), impacts
 
@@ -244,20 +249,25 @@ def main():
     freq = frequency()
     gammas = np.linspace(0.9, 3.5, args.values)[:: args.every]
     wall, cpu = time.perf_counter(), time.process_time()
-    state = (0.0, 0.0, 0.0)
+    state = (0.0, 0.0, 0.0)  # (t, gap over the table, speed relative to it)
     total = 0
     rows = []
     for gamma in gammas:
         ball = Ball(gamma, freq, args.stop)
+        # The state carried to the new table at the same gap and speed relative to it (as
+        # hertz-tui's diagram does): the tables differ in amplitude.
+        t, gap, rise = state
+        s, sd, _ = ball.table(t)
         speeds = []
-        state, impacts = ball.run(state, args.transient, args.recorded, speeds)
+        end, impacts = ball.run((t, s + gap, sd + rise), args.transient, args.recorded, speeds)
         total += impacts
-        rows.extend((gamma, s) for s in speeds)
+        rows.extend((gamma, v) for v in speeds)
+        s, sd, _ = ball.table(end[0])
         if impacts < args.transient + args.recorded:
             # The ball came to rest: the next value starts from rest on the table.
-            t = state[0]
-            s, sd, _ = ball.table(t)
-            state = (t, s, sd)
+            state = (end[0], 0.0, 0.0)
+        else:
+            state = (end[0], max(end[1] - s, 0.0), end[2] - sd)
         if args.progress:
             used = time.process_time() - cpu
             print(
