@@ -9,8 +9,8 @@ use crate::format::verdict as words;
 use crate::model::presets::Registry;
 use crate::model::system::compliant::verdict::{Verdict, verdict_of};
 use crate::model::system::{
-    self, CompliantDamping, Contact, EndReason, History, ImpactKind, ImpactRecord, RunOptions,
-    Stick, SystemError, SystemModel, SystemSample,
+    self, CompliantDamping, Contact, Dents, EndReason, History, ImpactKind, ImpactRecord,
+    RunOptions, Stick, SystemError, SystemModel, SystemSample,
 };
 
 use super::args::{
@@ -170,8 +170,29 @@ pub struct RunReport {
     pub impacts_total: usize,
     pub impacts: Vec<ImpactRecord>,
     pub sticks: Vec<Stick>,
+    /// The permanent dents the recorded contacts left, not carried (a plastic law's).
+    #[serde(skip_serializing_if = "no_dents")]
+    pub dents: Dents,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub samples: Vec<SystemSample>,
+}
+
+fn no_dents(d: &Dents) -> bool {
+    d.contacts == 0
+}
+
+/// The warning of a run whose law left permanent dents the stop does not carry.
+pub fn dent_warning(contact: &str, dents: &Dents) -> Option<String> {
+    (dents.contacts > 0).then(|| {
+        format!(
+            "warning: {contact} leaves a permanent dent at {} of the recorded contacts (up to {}, \
+             {} in all), which the stop does not carry: every contact starts from an undeformed \
+             stop (docs/compliant.md §1)",
+            dents.contacts,
+            engineering(dents.largest, "m"),
+            engineering(dents.total, "m"),
+        )
+    })
 }
 
 /// Which approach the system needs (with `--contact both` or `compliant`): the model's verdict
@@ -241,6 +262,7 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
             impacts_total: h.impacts_total,
             impacts: h.impacts,
             sticks: h.sticks,
+            dents: h.dents,
             samples: h.samples,
         })
         .collect();
@@ -335,6 +357,9 @@ fn table(report: &SystemReport, transient: usize) -> String {
                 "  … the last {TABLE_IMPACTS} of {}; --format csv gives all\n",
                 run.impacts.len()
             ));
+        }
+        if let Some(warning) = dent_warning(&run.contact, &run.dents) {
+            out.push_str(&format!("  {warning}\n"));
         }
     }
     if let Some(v) = &report.verdict {
