@@ -38,5 +38,6 @@ mod systems_hard;
 mod systems_map;
 mod systems_oscillator;
 mod systems_scene;
+mod systems_seed;
 mod tables;
 mod tolerance_promise;

@@ -31,6 +31,7 @@ mod orbit;
 mod param;
 pub mod rigid;
 mod run;
+pub(crate) mod seed;
 mod spec;
 
 use std::ops::ControlFlow;
@@ -42,7 +43,8 @@ pub use model::SystemModel;
 pub use orbit::{GuessStart, ImpactPoint, Orbit, OrbitGuess, OrbitOptions};
 pub use param::{Param, SystemKey};
 pub use run::{
-    EndReason, History, ImpactKind, ImpactRecord, RunOptions, State, Stick, StopIndex, SystemSample,
+    Dents, EndReason, History, ImpactKind, ImpactRecord, RunOptions, State, Stick, StopIndex,
+    SystemSample,
 };
 pub use spec::{
     Damping, Forcing, Groups, OscillatorCoefficients, STANDARD_GRAVITY, SystemKind, SystemSpec,

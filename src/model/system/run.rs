@@ -70,6 +70,9 @@ pub enum ImpactKind {
     /// The accumulation point of a chatter sequence (infinitely many impacts in finite time,
     /// summed in closed form): the body sticks to the stop from here (docs/systems.md §4).
     ChatterEnd,
+    /// A compliant contact in which the body came to rest on the stop instead of bouncing off
+    /// it (docs/compliant.md §3): its time on the stop is a [`Stick`], not a contact time.
+    Rest,
 }
 
 /// One impact.
@@ -99,7 +102,8 @@ pub struct ImpactRecord {
     pub kind: ImpactKind,
 }
 
-/// An interval during which the body rides on a stop (after chatter, or an impact at zero speed).
+/// An interval during which the body rides on a stop (after chatter, or an impact at zero speed;
+/// for a compliant stop, a contact in which the body came to rest).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Stick {
     /// Start, s.
@@ -108,6 +112,19 @@ pub struct Stick {
     pub end: Option<f64>,
     /// Which stop.
     pub stop: StopIndex,
+}
+
+/// The permanent (plastic) indentations a compliant stop's recorded contacts left — Thornton's
+/// law once yielded, the proposed model — which the stop does not carry from one contact to the
+/// next: every contact starts from an undeformed stop (docs/compliant.md §1 says why).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct Dents {
+    /// Recorded contacts that left one.
+    pub contacts: usize,
+    /// Their sum, m: the dent a stop carrying them would have after the recorded contacts.
+    pub total: f64,
+    /// The largest, m.
+    pub largest: f64,
 }
 
 /// Why a run ended.
@@ -138,6 +155,9 @@ pub struct History {
     pub end_state: State,
     /// Why it ended.
     pub end: EndReason,
+    /// The permanent dents of the recorded contacts, not carried (compliant stop; none for the
+    /// rigid one).
+    pub dents: Dents,
 }
 
 impl History {
