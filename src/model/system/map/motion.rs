@@ -18,7 +18,8 @@ pub enum Motion {
     /// releases; a compliant contact is held for [`HELD_PERIODS`](crate::model::system::compliant::HELD_PERIODS)).
     Sticking,
     /// Chatter: accumulating impacts ending in sticking phases that release again (rigid), or
-    /// contacts that hold the body (compliant); `period` if the sequence repeats.
+    /// contacts in which the body comes to rest or is held (compliant); `period` if the sequence
+    /// repeats.
     Chattering {
         /// n impacts (accumulation points count as one) in m forcing periods.
         period: Option<(u32, u32)>,
@@ -159,7 +160,8 @@ pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) ->
     let fastest = impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
     let chatters = !history.sticks.is_empty()
         || impacts.iter().any(|i| {
-            i.kind == ImpactKind::ChatterEnd
+            // A rigid chatter's accumulation point, or a compliant contact that came to rest.
+            i.kind != ImpactKind::Impact
                 || i.v_in < CHATTER_SPEED * fastest
                 || i.contact_time
                     .is_some_and(|tc| tc > HOLDING_CONTACT * forcing_period)
