@@ -6,6 +6,7 @@ mod ode_common;
 
 mod bodies_props;
 mod calibration;
+mod continuation_ball;
 mod dry_friction_cutoff;
 mod engine_runs;
 mod engines;

@@ -22,6 +22,7 @@
 //! key or the budget concerned.
 
 pub mod compliant;
+pub mod continuation;
 mod contact;
 mod diagram;
 mod error;
