@@ -5,9 +5,9 @@
 use std::f64::consts::PI;
 
 use hertz_tui::model::system::continuation::{
-    Branch, BranchEnd, ContinuationOptions, SpecialKind, continue_orbit,
+    Branch, BranchEnd, ContinuationOptions, SpecialKind, continue_orbit, switch_at_period_doubling,
 };
-use hertz_tui::model::system::{Contact, Param, SystemKey};
+use hertz_tui::model::system::{Contact, OrbitOptions, Param, SystemKey, find_orbit};
 
 use crate::systems_common::{ball, guess};
 
@@ -48,7 +48,10 @@ fn ball_fold_and_period_doubling_at_their_closed_forms() {
         let folds: Vec<_> = down.special(SpecialKind::Fold).collect();
         assert_eq!(folds.len(), 1, "n = {n}: {:?}", down.specials);
         let fold = folds[0].point.values[0];
-        assert!((fold - sn).abs() < 1e-8, "n = {n}: fold at {fold} vs Γ_SN = {sn}");
+        assert!(
+            (fold - sn).abs() < 1e-8,
+            "n = {n}: fold at {fold} vs Γ_SN = {sn}"
+        );
         // Past the fold the branch comes back up on the unstable orbits and leaves the range.
         assert_eq!(down.end, BranchEnd::Range);
         let last = down.points.last().unwrap();
@@ -61,7 +64,11 @@ fn ball_fold_and_period_doubling_at_their_closed_forms() {
         // Stable before, unstable after; det J = e² everywhere (docs/physics.md §8.1).
         assert!(up.points[0].stable && !up.points.last().unwrap().stable);
         for p in down.points.iter().chain(&up.points) {
-            assert!((p.jacobian_det - E * E).abs() < 1e-9, "det {}", p.jacobian_det);
+            assert!(
+                (p.jacobian_det - E * E).abs() < 1e-9,
+                "det {}",
+                p.jacobian_det
+            );
         }
         eprintln!(
             "n = {n}: fold {:.3e} from Γ_SN, PD {:.3e} from Γ_PD; {} + {} points",
@@ -71,4 +78,65 @@ fn ball_fold_and_period_doubling_at_their_closed_forms() {
             up.points.len()
         );
     }
+}
+
+#[test]
+fn switching_at_the_period_doubling_follows_the_doubled_orbit() {
+    let (sn, pd) = (gamma_sn(1, E), gamma_pd(1, E));
+    let from = 0.5 * (sn + pd);
+    let up = branch(1, E, from, 1.2 * pd);
+    let special = up.special(SpecialKind::PeriodDoubling).next().unwrap();
+    let model = ball(from, E);
+    let doubled = switch_at_period_doubling(
+        &model,
+        &Contact::rigid(E),
+        Param::System(SystemKey::Amplitude),
+        (from, 1.2 * pd),
+        &up,
+        special,
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
+    assert_eq!((doubled.cycles, doubled.stops.len()), (2, 2));
+    // It is born at Γ_PD and exists past it (supercritical), stable at first: two distinct
+    // impacts per orbit, det J = e⁴.
+    let first = &doubled.points[0];
+    assert!((first.values[0] - pd).abs() < 1e-8);
+    let next = &doubled.points[3];
+    assert!(next.values[0] > pd, "{}", next.values[0]);
+    assert!(next.stable, "{next:?}");
+    assert!((next.jacobian_det - E.powi(4)).abs() < 1e-9);
+    let (a, b) = (next.points[0].v_in, next.points[1].v_in);
+    assert!(
+        (a - b).abs() > 1e-3 * a,
+        "{a} {b}: still the period-1 orbit"
+    );
+    // The same orbit by Newton on the impact map (the orbit solver, independent of continuation).
+    let gamma = next.values[0];
+    let orbit = find_orbit(
+        &ball(gamma, E),
+        &Contact::rigid(E),
+        &guess(2, 2, next.points[0].phase + 1e-4, a * 1.0001, 0),
+        &OrbitOptions::default(),
+    )
+    .unwrap();
+    let speeds = |p: &[hertz_tui::model::system::ImpactPoint]| {
+        let mut v: Vec<f64> = p.iter().map(|q| q.v_in).collect();
+        v.sort_by(f64::total_cmp);
+        v
+    };
+    for (x, y) in speeds(&orbit.points).iter().zip(speeds(&next.points)) {
+        assert!((x - y).abs() < 1e-9, "{x} vs {y}");
+    }
+    eprintln!(
+        "doubled branch: {} points, from Γ = {} to {}, specials {:?}",
+        doubled.points.len(),
+        first.values[0],
+        doubled.points.last().unwrap().values[0],
+        doubled
+            .specials
+            .iter()
+            .map(|s| (s.kind, s.point.values[0]))
+            .collect::<Vec<_>>()
+    );
 }

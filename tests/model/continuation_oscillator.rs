@@ -91,7 +91,10 @@ fn budd_dux_period_doubling_by_continuation_in_the_gap() {
     let pd: Vec<_> = b.special(SpecialKind::PeriodDoubling).collect();
     assert!(!pd.is_empty(), "{:?} {:?}", b.specials, b.end);
     let at = pd[0].point.values[0];
-    eprintln!("Budd–Dux σ_PD {sigma_pd}: continuation {at} ({:.2e})", at - sigma_pd);
+    eprintln!(
+        "Budd–Dux σ_PD {sigma_pd}: continuation {at} ({:.2e})",
+        at - sigma_pd
+    );
     assert!((at - sigma_pd).abs() < 1e-8, "{at} vs {sigma_pd}");
     // Undamped, one impact: det J = r² at every point (but a grazing end's, where J is singular).
     for p in b.points.iter().filter(|p| p.min_speed > 1e-6) {
@@ -121,8 +124,15 @@ fn damped_grazing_point_and_curve_over_frequency() {
     let key = Param::System(SystemKey::ForcingAmplitude);
     let a_g = grazing_amplitude(k, c, OMEGA, d);
     let options = ContinuationOptions::default();
-    let b = continue_orbit(&model, &Contact::rigid(R), key, (1.0, 0.2), &attractor, &options)
-        .unwrap();
+    let b = continue_orbit(
+        &model,
+        &Contact::rigid(R),
+        key,
+        (1.0, 0.2),
+        &attractor,
+        &options,
+    )
+    .unwrap();
     assert_eq!(b.end, BranchEnd::Grazing, "{:?}", b.specials);
     let graze = b.special(SpecialKind::GrazingImpact).next().unwrap();
     let at = graze.point.values[0];
@@ -132,7 +142,11 @@ fn damped_grazing_point_and_curve_over_frequency() {
     let period = TAU / OMEGA;
     for p in b.points.iter().filter(|p| p.min_speed > 1e-3) {
         let expected = R * R * (-c * period).exp();
-        assert!((p.jacobian_det - expected).abs() < 1e-8, "{} vs {expected}", p.jacobian_det);
+        assert!(
+            (p.jacobian_det - expected).abs() < 1e-8,
+            "{} vs {expected}",
+            p.jacobian_det
+        );
     }
     // The grazing curve in (A, f): every point on A_g(ω).
     let f = OMEGA / TAU;
@@ -158,7 +172,10 @@ fn damped_grazing_point_and_curve_over_frequency() {
         curve.points.first().unwrap().values[1] / f,
         curve.points.last().unwrap().values[1] / f,
     );
-    eprintln!("grazing curve: {} points over f/f₀ {span:?}, worst relative error {worst:.2e}", curve.points.len());
+    eprintln!(
+        "grazing curve: {} points over f/f₀ {span:?}, worst relative error {worst:.2e}",
+        curve.points.len()
+    );
     assert!(worst < 1e-8, "{worst}");
     assert!(span.0 < 0.81 && span.1 > 1.19, "{span:?}");
 }

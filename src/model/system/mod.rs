@@ -22,8 +22,8 @@
 //! key or the budget concerned.
 
 pub mod compliant;
-pub mod continuation;
 mod contact;
+pub mod continuation;
 mod diagram;
 mod error;
 mod model;

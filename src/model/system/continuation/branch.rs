@@ -73,7 +73,10 @@ impl SpecialKind {
 
     /// Whether the orbit stops being an orbit of the same impacts past it.
     pub fn is_grazing(self) -> bool {
-        matches!(self, SpecialKind::GrazingImpact | SpecialKind::GrazingFlight)
+        matches!(
+            self,
+            SpecialKind::GrazingImpact | SpecialKind::GrazingFlight
+        )
     }
 }
 
@@ -136,7 +139,9 @@ impl BranchEnd {
             BranchEnd::Range => "left the parameter range".into(),
             BranchEnd::Grazing => "reached a grazing point".into(),
             BranchEnd::MaxPoints => "reached the maximum number of points".into(),
-            BranchEnd::StepTooSmall(why) => format!("stopped: the step fell below its minimum ({why})"),
+            BranchEnd::StepTooSmall(why) => {
+                format!("stopped: the step fell below its minimum ({why})")
+            }
         }
     }
 }

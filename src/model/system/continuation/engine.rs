@@ -22,7 +22,10 @@ pub(crate) trait Equations {
 }
 
 /// DF(z) by central differences (N × (N + 1)).
-pub(crate) fn jacobian(eq: &dyn Equations, z: &DVector<f64>) -> Result<DMatrix<f64>, ContinuationError> {
+pub(crate) fn jacobian(
+    eq: &dyn Equations,
+    z: &DVector<f64>,
+) -> Result<DMatrix<f64>, ContinuationError> {
     let n = eq.equations();
     let mut jac = DMatrix::zeros(n, z.len());
     let h = eq.fd_step();
@@ -40,7 +43,10 @@ pub(crate) fn jacobian(eq: &dyn Equations, z: &DVector<f64>) -> Result<DMatrix<f
 
 /// The unit null vector of `jac` (N × (N + 1)) on the side of `prev`: the solution of
 /// [DF; prevᵀ]·t = (0, 1), normalised.
-pub(crate) fn tangent(jac: &DMatrix<f64>, prev: &DVector<f64>) -> Result<DVector<f64>, ContinuationError> {
+pub(crate) fn tangent(
+    jac: &DMatrix<f64>,
+    prev: &DVector<f64>,
+) -> Result<DVector<f64>, ContinuationError> {
     let n = jac.nrows();
     let mut a = jac.clone().insert_row(n, 0.0);
     a.set_row(n, &prev.transpose());

@@ -24,8 +24,6 @@ mod rigid;
 mod run;
 mod trace;
 
-pub use branch::{
-    Branch, BranchEnd, BranchPoint, ContinuationOptions, SpecialKind, SpecialPoint,
-};
+pub use branch::{Branch, BranchEnd, BranchPoint, ContinuationOptions, SpecialKind, SpecialPoint};
 pub use error::ContinuationError;
 pub use run::{continue_orbit, continue_special, switch_at_period_doubling};

@@ -128,8 +128,5 @@ pub(crate) fn mul(a: &Mat, b: &Mat) -> Mat {
 
 /// S·J·S⁻¹ with S = diag(sx, sy): a Jacobian in (t, v) as one in (sx·t, sy·v).
 pub(crate) fn rescale(j: &Mat, sx: f64, sy: f64) -> Mat {
-    [
-        [j[0][0], j[0][1] * sx / sy],
-        [j[1][0] * sy / sx, j[1][1]],
-    ]
+    [[j[0][0], j[0][1] * sx / sy], [j[1][0] * sy / sx, j[1][1]]]
 }

@@ -13,7 +13,9 @@ use crate::model::system::rigid::dynamics::{Dynamics, Law};
 use crate::model::system::{ImpactPoint, Param, SystemModel};
 
 use super::error::ContinuationError;
-use super::problem::{Mat, Monitors, OrbitProblem, model_at, mul, rescale, varies_restitution, wrap};
+use super::problem::{
+    Mat, Monitors, OrbitProblem, model_at, mul, rescale, varies_restitution, wrap,
+};
 
 /// A rigid orbit of fixed impact sequence.
 #[derive(Debug, Clone)]

@@ -15,7 +15,10 @@ use super::trace::{Augmented, Trace, test_value};
 
 /// A parameter's scale: its range's extent, or its size when that is larger.
 fn scale_of(from: f64, to: f64) -> f64 {
-    from.abs().max(to.abs()).max((to - from).abs()).max(f64::MIN_POSITIVE)
+    from.abs()
+        .max(to.abs())
+        .max((to - from).abs())
+        .max(f64::MIN_POSITIVE)
 }
 
 fn check_range(key: Param, (from, to): (f64, f64)) -> Result<(), ContinuationError> {
@@ -47,7 +50,10 @@ fn problem(
             cycles,
             speed,
         }),
-        Contact::Compliant { model: law, damping } => Box::new(CompliantProblem::new(
+        Contact::Compliant {
+            model: law,
+            damping,
+        } => Box::new(CompliantProblem::new(
             model.clone(),
             keys,
             law,
@@ -74,9 +80,7 @@ pub fn continue_orbit(
     let keys = vec![param];
     let at_start = model_at(model, &keys, &[range.0])?;
     let contact = match contact {
-        Contact::Rigid { .. } if varies_restitution(&keys) => {
-            Contact::rigid(at_start.restitution)
-        }
+        Contact::Rigid { .. } if varies_restitution(&keys) => Contact::rigid(at_start.restitution),
         c => *c,
     };
     let orbit = find_orbit(&at_start, &contact, guess, &OrbitOptions::default())?;
@@ -87,7 +91,13 @@ pub fn continue_orbit(
         .fold(f64::MIN_POSITIVE, f64::max);
     let omega = at_start.spec.omega();
     let stops: Vec<usize> = orbit.points.iter().map(|p| p.stop).collect();
-    let p = problem(model, &contact, keys, (orbit.period_forcing_cycles, stops), speed);
+    let p = problem(
+        model,
+        &contact,
+        keys,
+        (orbit.period_forcing_cycles, stops),
+        speed,
+    );
     let scale = scale_of(range.0, range.1);
     // Unknowns at the found orbit: the rigid problem's (ωt_k, v_k⁺/V) for each impact, the
     // compliant one's (ωt, v_in/V) of the first contact.

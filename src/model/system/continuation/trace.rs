@@ -208,7 +208,12 @@ impl Trace<'_> {
 
     /// Follows the branch from `z0` (tangent `t0`); the first step's interval is not searched
     /// for special points when `skip_first` (z0 is itself a branch point).
-    pub fn run(&self, z0: DVector<f64>, t0: DVector<f64>, skip_first: bool) -> Result<Traced, ContinuationError> {
+    pub fn run(
+        &self,
+        z0: DVector<f64>,
+        t0: DVector<f64>,
+        skip_first: bool,
+    ) -> Result<Traced, ContinuationError> {
         let o = &self.options;
         let m0 = self.eq.monitors(&z0)?;
         let mut node = Node {
