@@ -13,6 +13,10 @@ use super::problem::{OrbitProblem, model_at, varies_restitution};
 use super::rigid::RigidProblem;
 use super::trace::{Augmented, Trace, test_value};
 
+/// A fold or period-doubling curve ends where an impact speed falls below this fraction of the
+/// speed scale: it is running into a grazing point, where J ~ 1/v has no finite limit.
+const GRAZED: f64 = 1e-6;
+
 /// A parameter's scale: its range's extent, or its size when that is larger.
 fn scale_of(from: f64, to: f64) -> f64 {
     from.abs()
@@ -151,6 +155,7 @@ fn trace_branch(
         options: *options,
         watch: SpecialKind::ALL.to_vec(),
         bounds: (lo, hi),
+        min_speed: None,
     };
     let traced = trace.run(z, t0, skip_first)?;
     let (cycles, stops) = eq.problem.signature();
@@ -232,6 +237,7 @@ pub fn switch_at_period_doubling(
         options: *options,
         watch: vec![],
         bounds: (f64::NEG_INFINITY, f64::INFINITY),
+        min_speed: None,
     };
     let m0 = eq.monitors(&z0)?;
     let first = trace.point(&z0, &m0, 0.0);
@@ -291,11 +297,12 @@ pub fn continue_special(
     })?;
     let lo = range2.0.min(range2.1) / scale2;
     let hi = range2.0.max(range2.1) / scale2;
-    let watch: Vec<SpecialKind> = match special.kind {
-        SpecialKind::Fold | SpecialKind::PeriodDoubling => {
-            vec![SpecialKind::GrazingImpact, SpecialKind::GrazingFlight]
-        }
-        _ => vec![],
+    let (watch, min_speed): (Vec<SpecialKind>, _) = match special.kind {
+        SpecialKind::Fold | SpecialKind::PeriodDoubling => (
+            vec![SpecialKind::GrazingImpact, SpecialKind::GrazingFlight],
+            Some(GRAZED),
+        ),
+        _ => (vec![], None),
     };
     let jac = jacobian(&eq, &z0)?;
     let mut halves = Vec::new();
@@ -308,16 +315,23 @@ pub fn continue_special(
             options: *options,
             watch: watch.clone(),
             bounds: (lo, hi),
+            min_speed,
         };
         halves.push(trace.run(z0.clone(), t0, false)?);
     }
     let forward = halves.pop().expect("two halves");
     let backward = halves.pop().expect("two halves");
-    let mut points: Vec<_> = backward.points.into_iter().rev().collect();
+    // The backward half without its start (the forward half's), nor a range end on the start.
+    let start = z0.as_slice().to_vec();
+    let mut points: Vec<_> = backward
+        .points
+        .into_iter()
+        .rev()
+        .filter(|p| p.z.iter().zip(&start).any(|(a, b)| (a - b).abs() > 1e-12))
+        .collect();
     for point in &mut points {
         point.arclength = -point.arclength;
     }
-    points.pop();
     let offset = points.len();
     points.extend(forward.points);
     let mut specials: Vec<_> = backward

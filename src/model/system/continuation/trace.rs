@@ -110,6 +110,9 @@ pub(crate) struct Trace<'a> {
     pub watch: Vec<SpecialKind>,
     /// Bounds of the last scaled parameter.
     pub bounds: (f64, f64),
+    /// Ends the trace as grazing where the smallest impact speed falls below this (scaled): a
+    /// fold or period-doubling curve runs into a grazing point without crossing it (J ~ 1/v).
+    pub min_speed: Option<f64>,
 }
 
 /// The outcome of a trace.
@@ -251,6 +254,7 @@ impl Trace<'_> {
             let before = self.tests(&node.monitors);
             let after = self.tests(&m);
             let mut found: Vec<(f64, SpecialKind, DVector<f64>, Monitors, f64)> = Vec::new();
+            let mut lost = false;
             if !skip {
                 for (i, &kind) in self.watch.iter().enumerate() {
                     let (Some(fa), Some(fb)) = (before[i], after[i]) else {
@@ -261,12 +265,18 @@ impl Trace<'_> {
                     }
                     let scales = self.eq.problem.scales();
                     let f = move |_: &DVector<f64>, m: &Monitors| test_value(kind, m, scales, None);
-                    let (s, zs, ms, fs) = self.locate(&node, (ds, fb), fa, &f)?;
-                    // A test through a pole (J's 1/v near grazing) is no root.
-                    if fs.abs() < 1e-6 {
-                        found.push((s, kind, zs, ms, fs));
+                    match self.locate(&node, (ds, fb), fa, &f) {
+                        // A test through a pole (J's 1/v near grazing) is no root.
+                        Ok((s, zs, ms, fs)) if fs.abs() < 1e-6 => found.push((s, kind, zs, ms, fs)),
+                        Ok(_) => {}
+                        Err(_) => lost = true,
                     }
                 }
+            }
+            if lost {
+                // A root the corrector could not reach from this step: take a shorter one.
+                ds *= 0.5;
+                continue;
             }
             skip = false;
             found.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -299,6 +309,10 @@ impl Trace<'_> {
             }
             let arclength = node.arclength + ds;
             points.push(self.point(&z, &m, arclength));
+            let scale = self.eq.problem.scales().0;
+            if self.min_speed.is_some_and(|v| m.min_speed().1 < v * scale) {
+                break BranchEnd::Grazing;
+            }
             node = Node {
                 z,
                 t,
