@@ -137,7 +137,6 @@ fn compliant_fold_and_period_doubling_converge_to_the_rigid_ones() {
                         ..CompliantOptions::default()
                     },
                 )
-                .map_err(Into::into)
             },
             MapPoint {
                 t: p0.phase / (2.0 * PI * f),

@@ -31,8 +31,11 @@ pub(crate) struct CompliantProblem {
     pub cycles: u32,
     /// Speed scale V (unknown w = v_in/V), m/s.
     pub speed: f64,
-    cache: Rc<RefCell<Vec<(Vec<f64>, Rc<CompliantStop>)>>>,
+    cache: Rc<RefCell<Vec<Cached>>>,
 }
+
+/// A stop built at parameter values λ.
+type Cached = (Vec<f64>, Rc<CompliantStop>);
 
 impl CompliantProblem {
     #[allow(clippy::too_many_arguments)]
