@@ -16,6 +16,8 @@ const DOTS: f64 = 240.0;
 /// and the special points (parameter, v_in, label).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BranchCurve {
+    /// What tells it from the stop's other branches in the legend (`period-2`), if anything.
+    pub label: String,
     /// (stable, points) in the order of the arclength.
     pub runs: Vec<(bool, Vec<(f64, f64)>)>,
     pub specials: Vec<(f64, f64, String)>,
@@ -140,6 +142,11 @@ pub fn branch(
     let mut marks = Vec::new();
     for (approach, c) in curves {
         let (name, ink, glyph) = approach.look();
+        let name = if c.label.is_empty() {
+            name
+        } else {
+            format!("{name} {}", c.label)
+        };
         let focused = *approach == Approach::Rigid;
         let stable: Vec<_> = c
             .runs

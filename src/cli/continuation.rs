@@ -515,7 +515,10 @@ fn to_csv(report: &ContinueReport) -> String {
 /// A branch as the chart draws it: every impact's v_in against the key, by stability, with its
 /// special points.
 fn curve_of(b: &Branch) -> BranchCurve {
-    let mut c = BranchCurve::default();
+    let mut c = BranchCurve {
+        label: format!("period-{}", b.cycles),
+        ..BranchCurve::default()
+    };
     let impacts = b.stops.len();
     for k in 0..impacts {
         let points: Vec<(f64, f64, bool)> = b
@@ -586,7 +589,10 @@ fn charts(
     axes.range = Some((args.from.min(args.to), args.from.max(args.to)));
     let name = report.scene.clone();
     let mut chart = plot::branch(&drawn, &diagram, &axes, BUDGET);
-    chart.title = format!("{} · {name}", chart.title);
+    // Side by side with a curve there is no room for the scene's name.
+    if args.second.is_none() {
+        chart.title = format!("{} · {name}", chart.title);
+    }
     let mut charts = vec![chart];
     if let Some(second) = args.second {
         let lines: Vec<(Approach, Vec<(f64, f64)>)> = report
@@ -614,9 +620,7 @@ fn charts(
                 lines.iter().map(|(a, l)| (*a, l.as_slice())).collect();
             let first = DiagramAxes::impact_speeds(args.param, &model);
             let second_axes = DiagramAxes::impact_speeds(second, &model);
-            let mut chart = plot::curves(&drawn, kind, (&first, &second_axes), BUDGET);
-            chart.title = format!("{} · {name}", chart.title);
-            charts.push(chart);
+            charts.push(plot::curves(&drawn, kind, (&first, &second_axes), BUDGET));
         }
     }
     Ok(charts)

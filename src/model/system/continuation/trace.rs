@@ -9,6 +9,10 @@ use super::engine::{Equations, correct, jacobian, tangent};
 use super::error::ContinuationError;
 use super::problem::{Monitors, OrbitProblem};
 
+/// A branch that cannot go on with an impact speed below this fraction of its scale is said to
+/// end near grazing.
+const NEAR_GRAZING: f64 = 0.05;
+
 /// Corrector iterations at most.
 const CORRECTOR_ITERATIONS: usize = 12;
 
@@ -236,7 +240,13 @@ impl Trace<'_> {
                 break BranchEnd::MaxPoints;
             }
             if ds < o.min_step {
-                break BranchEnd::StepTooSmall("the corrector failed at every step size".into());
+                let (_, v) = node.monitors.min_speed();
+                let scale = self.eq.problem.scales().0;
+                break BranchEnd::StepTooSmall(if v < NEAR_GRAZING * scale {
+                    format!("near grazing: the impact speed fell to {v:.3e} m/s")
+                } else {
+                    "the corrector failed at every step size".into()
+                });
             }
             let step = self.at(&node, ds).and_then(|(z, m)| {
                 let jac = jacobian(self.eq, &z)?;
