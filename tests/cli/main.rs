@@ -7,4 +7,5 @@ mod plot;
 mod readme;
 mod recommendation;
 mod studies;
+mod support;
 mod systems;

@@ -40,5 +40,6 @@ mod systems_diagram;
 mod systems_hard;
 mod systems_oscillator;
 mod systems_scene;
+mod systems_seed;
 mod tables;
 mod tolerance_promise;

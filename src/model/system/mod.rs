@@ -31,6 +31,7 @@ mod orbit;
 mod param;
 pub mod rigid;
 mod run;
+pub(crate) mod seed;
 mod spec;
 
 use std::ops::ControlFlow;

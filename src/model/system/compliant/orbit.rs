@@ -13,7 +13,9 @@ use nalgebra::{Complex, Matrix2, Vector2};
 
 use crate::model::numeric::roots::brent;
 
-use super::super::{ImpactPoint, Orbit, OrbitGuess, OrbitOptions, SystemError};
+use super::super::{
+    GuessStart, ImpactPoint, Orbit, OrbitGuess, OrbitOptions, SystemError, rigid, seed,
+};
 use super::contact::Exit;
 use super::flight::Landing;
 use super::plant::Plant;
@@ -157,31 +159,47 @@ pub fn find_orbit(
     options: &OrbitOptions,
 ) -> Result<Orbit, SystemError> {
     let plant = &stop.plant;
-    let (m, n) = (guess.forcing_cycles, guess.impacts);
-    if m == 0 || n == 0 {
-        return Err(SystemError::OrbitDegenerate(
-            "an orbit needs at least one forcing period and one impact",
-        ));
-    }
-    let p =
-        match guess.start {
-            Some(s) => MapPoint {
-                t: s.phase / plant.omega(),
-                v_in: s.v_in,
-                stop: s.stop,
-            },
-            None => {
-                let h = super::run(stop, model, &guess.attractor)?.history;
-                let last = h.impacts.iter().rev().nth(n as usize - 1).ok_or(
-                    SystemError::OrbitDegenerate("the attractor run recorded too few impacts"),
-                )?;
-                MapPoint {
-                    t: last.t,
-                    v_in: last.v_in,
-                    stop: last.stop,
-                }
-            }
-        };
+    // 0 asks for the period the run settles on (without a start; with one, 1).
+    let (m, n) = (guess.forcing_cycles.max(1), guess.impacts.max(1));
+    let p = match guess.start {
+        Some(s) => MapPoint {
+            t: s.phase / plant.omega(),
+            v_in: s.v_in,
+            stop: s.stop,
+        },
+        None => {
+            // The rigid stop's orbit first (the compliant one's limit as t_c/T falls;
+            // docs/compliant.md §5), then the run's isolated impacts.
+            let seeded = OrbitOptions {
+                max_iterations: options.max_iterations.min(seed::SEED_ITERATIONS),
+                ..*options
+            };
+            return seed::search(
+                model,
+                guess,
+                |run| Ok(super::run(stop, model, run)?.history),
+                |guess| find_orbit(stop, model, guess, &seeded),
+                (
+                    |guess: &OrbitGuess, _: &[GuessStart]| {
+                        rigid::find_orbit(model, model.restitution, guess, options).map_or_else(
+                            |_| Vec::new(),
+                            |o| {
+                                o.points
+                                    .iter()
+                                    .map(|p| GuessStart {
+                                        phase: p.phase,
+                                        v_in: p.v_in,
+                                        stop: p.stop,
+                                    })
+                                    .collect()
+                            },
+                        )
+                    },
+                    seed::Extra::First,
+                ),
+            );
+        }
+    };
     let tol = options.tolerance.max(TOLERANCE_FLOOR);
     let (p, iterations) = newton(stop, p, m, n, tol, options.max_iterations)?;
     orbit_at(stop, p, m, n, iterations)
