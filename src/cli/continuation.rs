@@ -107,12 +107,13 @@ pub struct ContinueArgs {
     /// Also follow the doubled branch born at the first period doubling.
     #[arg(long)]
     pub doubled: bool,
-    /// m: forcing periods per orbit period of the starting orbit.
-    #[arg(long, value_name = "M", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub period: u32,
-    /// n: impacts per orbit period of the starting orbit.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub impacts: u32,
+    /// m: forcing periods per orbit period of the starting orbit (default: the period the run
+    /// settles on after the transient).
+    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub period: Option<u32>,
+    /// n: impacts per orbit period of the starting orbit (default: as for --period).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub impacts: Option<u32>,
     /// Newton's first impact: its forcing phase ωt, rad (with --speed; default: from the
     /// attractor reached after the transient).
     #[arg(
@@ -233,8 +234,8 @@ pub fn report(args: &ContinueArgs, registry: &Registry) -> Result<ContinueReport
         ..ContinuationOptions::default()
     };
     let guess = OrbitGuess {
-        forcing_cycles: args.period,
-        impacts: args.impacts,
+        forcing_cycles: args.period.unwrap_or(0),
+        impacts: args.impacts.unwrap_or(0),
         start: match (args.phase, args.speed) {
             (Some(phase), Some(v_in)) => Some(GuessStart {
                 phase,

@@ -4,40 +4,13 @@
 //! rows against the JSON's points, the figure's labels, and bad input named.
 
 use std::f64::consts::PI;
-use std::process::{Command, Output};
 
 use serde_json::Value;
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
-        .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-continuation-no-config"),
-        )
-        .env_remove("RUST_BACKTRACE")
-        .output()
-        .expect("the binary runs")
-}
+use crate::support::{ok, out_file, refused};
 
-fn ok(args: &[&str]) -> String {
-    let output = run(args);
-    assert!(
-        output.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    String::from_utf8(output.stdout).unwrap()
-}
-
-fn refused(args: &[&str]) -> String {
-    let output = run(args);
-    assert_eq!(output.status.code(), Some(2), "{args:?}");
-    assert!(output.stdout.is_empty(), "{args:?}");
-    String::from_utf8(output.stderr).unwrap()
-}
-
-const BALL: [&str; 12] = [
+/// The ball's branch from Γ = 1.3 (the orbit found from the run's settled period-1 cycle).
+const BALL: [&str; 9] = [
     "continue",
     "--scene",
     "bouncing-ball",
@@ -47,15 +20,12 @@ const BALL: [&str; 12] = [
     "1.3",
     "--to",
     "1.7",
-    "--phase",
-    "0.64",
-    "--speed",
 ];
 
 #[test]
 fn the_balls_period_doubling_and_doubled_branch() {
     let mut args = BALL.to_vec();
-    args.extend(["0.33", "--doubled", "--format", "json"]);
+    args.extend(["--doubled", "--format", "json"]);
     let report: Value = serde_json::from_str(&ok(&args)).unwrap();
     let e: f64 = 0.5;
     let sn = PI * (1.0 - e) / (1.0 + e);
@@ -71,7 +41,7 @@ fn the_balls_period_doubling_and_doubled_branch() {
     assert_eq!(doubled["stops"].as_array().unwrap().len(), 2);
     // The CSV: a row per impact of every orbit, and the special point's own row.
     let mut args = BALL.to_vec();
-    args.extend(["0.33", "--format", "csv"]);
+    args.extend(["--format", "csv"]);
     let csv = ok(&args);
     let mut lines = csv.lines();
     assert!(
@@ -136,12 +106,9 @@ fn the_oscillators_grazing_is_its_closed_form() {
 
 #[test]
 fn the_figure_marks_the_special_points() {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-continuation-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("branch.svg");
+    let path = out_file("continuation", "branch.svg");
     let mut args = BALL.to_vec();
     args.extend([
-        "0.33",
         "--diagram",
         "20",
         "--transient",
@@ -157,8 +124,8 @@ fn the_figure_marks_the_special_points() {
     for text in [
         "periodic orbits over Γ",
         "PD 1.5268",
-        "rigid stable",
-        "rigid unstable",
+        "rigid period-1 stable",
+        "rigid period-1 unstable",
         "rigid diagram",
     ] {
         assert!(svg.contains(text), "{text} missing");
@@ -205,7 +172,7 @@ fn bad_input_is_named() {
         "system.frequency",
     ]);
     assert!(e.contains("--from2"), "{e}");
-    // A start where the attractor chatters: said in words, naming the stop.
+    // A start below the fold, where no period-1 orbit exists: said in words, naming the stop.
     let e = refused(&[
         "continue",
         "--scene",
@@ -213,9 +180,9 @@ fn bad_input_is_named() {
         "--param",
         "system.gamma",
         "--from",
-        "1.3",
+        "0.5",
         "--to",
         "2",
     ]);
-    assert!(e.contains("rigid stop") && e.contains("chatters"), "{e}");
+    assert!(e.contains("rigid stop") && e.contains("exists only from Γ"), "{e}");
 }
