@@ -184,5 +184,8 @@ fn bad_input_is_named() {
         "--to",
         "2",
     ]);
-    assert!(e.contains("rigid stop") && e.contains("exists only from Γ"), "{e}");
+    assert!(
+        e.contains("rigid stop") && e.contains("exists only from Γ"),
+        "{e}"
+    );
 }
