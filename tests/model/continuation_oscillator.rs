@@ -8,7 +8,7 @@ use std::f64::consts::{PI, TAU};
 use hertz_tui::model::system::continuation::{
     BranchEnd, ContinuationOptions, SpecialKind, continue_orbit, continue_special,
 };
-use hertz_tui::model::system::{Contact, OrbitGuess, Param, RunOptions, SystemKey};
+use hertz_tui::model::system::{Contact, OrbitGuess, Param, RunOptions, State, SystemKey};
 
 use crate::systems_common::{guess, oscillator};
 
@@ -178,4 +178,74 @@ fn damped_grazing_point_and_curve_over_frequency() {
     );
     assert!(worst < 1e-8, "{worst}");
     assert!(span.0 < 0.81 && span.1 > 1.19, "{span:?}");
+}
+
+#[test]
+fn a_new_impact_on_the_other_stop_is_located_where_the_swing_grazes_it() {
+    // One impact per period on the upper stop; as the force grows the swing reaches the lower
+    // stop at −second: the flight's gap minimum to it falls to zero there.
+    let (k, c, d, second) = (1.0, 0.1, 0.1, 1.0);
+    let model = oscillator(k, c, 0.6, OMEGA, d, Some(second), R);
+    let attractor = OrbitGuess {
+        forcing_cycles: 1,
+        impacts: 1,
+        start: None,
+        attractor: RunOptions {
+            transient_impacts: 2000,
+            recorded_impacts: 8,
+            ..RunOptions::default()
+        },
+    };
+    let key = Param::System(SystemKey::ForcingAmplitude);
+    let b = continue_orbit(
+        &model,
+        &Contact::rigid(R),
+        key,
+        (0.6, 3.0),
+        &attractor,
+        &ContinuationOptions::default(),
+    )
+    .unwrap();
+    let graze = b
+        .special(SpecialKind::GrazingFlight)
+        .next()
+        .expect("a grazing in flight");
+    let f_g = graze.point.values[0];
+    assert_eq!(b.end, BranchEnd::Grazing);
+    assert!(
+        graze.point.min_gap.unwrap().abs() < 1e-12,
+        "{:?}",
+        graze.point.min_gap
+    );
+    // Independently, the solver's certified impact search run from the orbit's impact for one
+    // period: no impact on the lower stop just below f_g, one just above it.
+    let p = &graze.point.points[0];
+    let lower_hits = |f: f64| {
+        let m = oscillator(k, c, f, OMEGA, d, Some(second), R);
+        let start = State {
+            t: p.t,
+            x: d,
+            v: -R * p.v_in,
+        };
+        let options = RunOptions {
+            transient_impacts: 0,
+            recorded_impacts: 2,
+            max_periods: 1.0,
+            initial: Some(start),
+            ..RunOptions::default()
+        };
+        hertz_tui::model::system::simulate(&m, &Contact::rigid(R), &options)
+            .unwrap()
+            .impacts
+            .iter()
+            .any(|i| i.stop == 1)
+    };
+    assert!(
+        !lower_hits(f_g * (1.0 - 1e-9)),
+        "an impact below f_g = {f_g}"
+    );
+    assert!(
+        lower_hits(f_g * (1.0 + 1e-9)),
+        "no impact above f_g = {f_g}"
+    );
 }
