@@ -529,3 +529,50 @@ fn a_compliant_orbit_is_found_without_a_start_where_the_run_from_rest_settles() 
     let v_rigid = G / f / (1.0 + E);
     assert!((o.points[0].v_in / v_rigid - 1.0).abs() < 2e-3, "{o:?}");
 }
+
+#[test]
+fn compliant_multipliers_reach_the_rigid_det_j_and_agree_with_a_finer_tolerance_to_1e_10() {
+    use hertz_tui::model::system::compliant::orbit::{map_jacobian_extrapolated, newton};
+    // The period-1 orbit at Γ = 1.3 with Hunt–Crossley at the exact χ: det J → e² (the rigid
+    // map's, docs/physics.md §8.1) linearly in t_c/T; the extrapolated Jacobian at the orbits'
+    // rtol 1e-12 against one at 1e-13 agrees to ~1e-11 (plain central differences at a step of
+    // 1e-6: ~1e-10, measured 7e-11 to 1.5e-10 on these orbits).
+    let mut deviations = Vec::new();
+    for ratio in [0.01, 0.003, 0.001] {
+        let f = frequency_for_ratio(ratio);
+        let model = ball(f, 1.3);
+        let at = |rtol: f64| {
+            let options = CompliantOptions {
+                rtol,
+                ..CompliantOptions::default()
+            };
+            let s = CompliantStop::new(
+                &model,
+                ForceModel::HuntCrossley,
+                CompliantDamping::CalibratedTo(E),
+                options,
+            )
+            .unwrap();
+            let (p, _) = newton(&s, rigid_orbit(f, 1.3, E), 1, 1, 1e-11, 40).unwrap();
+            map_jacobian_extrapolated(&s, p, 1).unwrap()
+        };
+        let (j, fine) = (at(1e-12), at(1e-13));
+        assert!(
+            (j.determinant() - fine.determinant()).abs() < 3e-11
+                && (j.trace() - fine.trace()).abs() < 3e-11,
+            "t_c/T = {ratio}: {j} against {fine}"
+        );
+        let deviation = E * E - fine.determinant();
+        assert!(
+            deviation > 0.0 && deviation < 0.06 * ratio,
+            "{ratio}: {deviation}"
+        );
+        deviations.push(deviation);
+    }
+    eprintln!("e² − det J at t_c/T 0.01, 0.003, 0.001: {deviations:?}");
+    // Linear in t_c/T: each step down by 3.3 divides it by about that.
+    for w in deviations.windows(2) {
+        let r = w[1] / w[0];
+        assert!((0.2..0.45).contains(&r), "{deviations:?}");
+    }
+}
