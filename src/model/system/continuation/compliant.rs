@@ -8,7 +8,7 @@ use std::f64::consts::TAU;
 use std::rc::Rc;
 
 use crate::model::ForceModel;
-use crate::model::system::compliant::orbit::{MapPoint, map_jacobian, map_n};
+use crate::model::system::compliant::orbit::{MapPoint, map_jacobian_extrapolated, map_n};
 use crate::model::system::compliant::{CompliantOptions, CompliantStop, ORBIT_RTOL};
 use crate::model::system::{CompliantDamping, Param, SystemModel};
 
@@ -119,7 +119,8 @@ impl OrbitProblem for CompliantProblem {
         let stop = self.stop_at(lambda)?;
         let p = self.point(&stop, y);
         let (_, steps) = map_n(&stop, p, self.impacts)?;
-        let j = map_jacobian(&stop, p, self.impacts)?;
+        // The multipliers and test functions as `orbit` gives them (Richardson-extrapolated).
+        let j = map_jacobian_extrapolated(&stop, p, self.impacts)?;
         let jacobian = rescale(
             &[[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]],
             stop.plant.omega(),
