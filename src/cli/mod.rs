@@ -3,6 +3,7 @@
 pub mod args;
 pub mod bench;
 pub mod bifurcation;
+pub mod continuation;
 pub mod error;
 mod in_order;
 mod layout;
@@ -75,6 +76,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             return Ok(out.flush()?);
         }
         Command::Bifurcation(args) => bifurcation::run(args, &registry)?,
+        Command::Continue(args) => continuation::run(args, &registry)?,
         Command::Map(args) => return map::run(args, &registry, out),
         Command::Merge(args) => return map::run_merge(args, out),
     };
