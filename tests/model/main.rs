@@ -13,7 +13,9 @@ mod engines_vs_laws;
 #[allow(dead_code)]
 mod fit_common;
 mod fit_coverage;
+mod fit_forward;
 mod fit_recovery;
+mod fit_selection;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
