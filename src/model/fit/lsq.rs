@@ -167,7 +167,7 @@ impl Default for LsqOptions {
             xtol: 1e-10,
             gtol: 1e-14,
             ftol: 1e-12,
-            difference: Difference::Forward,
+            difference: Difference::Central,
             final_difference: Difference::Central,
             step: 1e-6,
             level: 0.95,

@@ -418,8 +418,14 @@ pub fn fit_one_from(
         residuals: &residuals,
         known_sd: weighted,
     };
+    // One parameter: a forward difference steers the steps as well as a central one at half the
+    // solves; the covariance still comes from a central one.
+    let lsq = LsqOptions {
+        difference: lsq::Difference::Forward,
+        ..opts.lsq
+    };
     let result =
-        least_squares(&problem, &opts.lsq).map_err(|source| FitError::Lsq { candidate, source })?;
+        least_squares(&problem, &lsq).map_err(|source| FitError::Lsq { candidate, source })?;
     // Back to the data's order, unweighted.
     let mut sorted_res = vec![0.0; n];
     for (k, &i) in order.iter().enumerate() {
