@@ -63,6 +63,8 @@ pub enum Command {
     Orbit(OrbitArgs),
     /// A brute-force bifurcation diagram of a system over a scene or system key (CSV streamed).
     Bifurcation(BifurcationArgs),
+    /// Continue a system's periodic orbit in a key: stability, folds, period doublings, grazing.
+    Continue(super::continuation::ContinueArgs),
 }
 
 /// Options of `hertz-tui restitution`.

@@ -80,11 +80,11 @@ pub fn attr(element: &str, name: &str) -> f64 {
 }
 
 /// Tick labels as (value, pixel).
-pub type Ticks = Vec<(f64, f64)>;
+pub type Labels = Vec<(f64, f64)>;
 
-/// The tick labels of a chart: the numbers on its bottom row (x, by their x pixel) and in its
-/// leftmost column (y, by their y pixel).
-pub fn tick_labels(svg: &str) -> (Ticks, Ticks) {
+/// The tick labels of a chart as (value, pixel): the numbers on its bottom row (x, by their x
+/// pixel) and in its leftmost column (y, by their y pixel).
+pub fn tick_labels(svg: &str) -> (Labels, Labels) {
     let numbers: Vec<(f64, f64, f64)> = texts(svg)
         .iter()
         .filter_map(|(t, x, y)| t.parse::<f64>().ok().map(|v| (v, *x, *y)))

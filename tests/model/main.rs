@@ -6,6 +6,9 @@ mod ode_common;
 
 mod bodies_props;
 mod calibration;
+mod continuation_ball;
+mod continuation_compliant;
+mod continuation_oscillator;
 mod dry_friction_cutoff;
 mod engine_runs;
 mod engines;

@@ -23,6 +23,7 @@
 
 pub mod compliant;
 mod contact;
+pub mod continuation;
 mod diagram;
 mod error;
 mod model;
