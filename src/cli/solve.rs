@@ -3,11 +3,11 @@
 use serde::Serialize;
 
 use crate::format::recommendation;
-use crate::model::scene_fit::{FittedLaw, scene_law};
 use crate::model::force::Damping;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
 use crate::model::recommend::recommend;
+use crate::model::scene_fit::{FittedLaw, scene_law};
 use crate::model::warnings::{ModelWarning, impact_warnings, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 

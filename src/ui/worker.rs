@@ -92,6 +92,7 @@ mod tests {
             params: fig5_params(0.3),
             options: SolveOptions::default(),
             calibrate: false,
+            fitted: None,
         }
     }
 
