@@ -104,3 +104,78 @@ pub fn fit_table(fit: &FittedLaw) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use std::collections::BTreeMap;
+
+    use super::*;
+    use crate::model::ForceModel;
+    use crate::model::calibrate::hunt_crossley_restitution;
+    use crate::model::scene::tests::fig5_scene;
+    use crate::model::scene_file::{parse_scene, to_toml};
+
+    /// Fig. 5's scene file with `fit` appended.
+    fn with_fit(fit: &str) -> String {
+        format!("{}\n{fit}", to_toml(&fig5_scene(), None))
+    }
+
+    fn parse(text: &str) -> Result<crate::model::Scene, SceneFileError> {
+        parse_scene("s.toml", text, &BTreeMap::new())
+    }
+
+    #[test]
+    fn a_fitted_scene_round_trips_and_its_e_is_the_laws_at_v0() {
+        let text = with_fit("[fit]\nlaw = \"hunt-crossley\"\na = 2.5\nsource = \"d.csv\"\n");
+        let scene = parse(&text).unwrap();
+        let fit = scene.fit.clone().unwrap();
+        assert_eq!(fit.kind, FittedKind::Law(ForceModel::HuntCrossley));
+        assert_eq!((fit.value, fit.source.as_deref()), (2.5, Some("d.csv")));
+        // Fig. 5's file says e = 0.6; the fit says what e is at v0 = 0.3 m/s.
+        let e = hunt_crossley_restitution(2.5 * 0.3);
+        assert!((scene.impact.restitution - e).abs() < 1e-15);
+        assert!((e - 0.6).abs() > 0.05, "the fit moved e: {e}");
+        let again = parse(&to_toml(&scene, None)).unwrap();
+        assert_eq!(again, scene);
+        assert!(to_toml(&scene, None).contains("a = 2.5  # a, s/m\n"));
+    }
+
+    #[test]
+    fn bad_fit_tables_name_the_key_and_its_line() {
+        let err = |fit: &str| parse(&with_fit(fit)).unwrap_err().to_string();
+        let line = to_toml(&fig5_scene(), None).lines().count() + 2;
+        let e = err("[fit]\nlaw = \"hunt-crossley\"\nc = 1.0\n");
+        assert!(
+            e.starts_with(&format!("s.toml:{}:1: `fit.c` is not the constant of hunt-crossley (its constant is `fit.a`)", line + 2)),
+            "{e}"
+        );
+        let e = err("[fit]\nlaw = \"quasistatic\"\na = 1.0\n");
+        assert!(
+            e.contains(&format!(":{}:", line + 1))
+                && e.contains("unknown fitted law \"quasistatic\""),
+            "{e}"
+        );
+        let e = err("[fit]\nlaw = \"kelvin-voigt\"\n");
+        assert!(e.contains("missing key `fit.c`"), "{e}");
+        let e = err("[fit]\nlaw = \"constant-e\"\ne = 1.2\n");
+        assert!(
+            e.contains(&format!(":{}:", line + 2))
+                && e.contains("fit.e must be in (0, 1], got 1.2"),
+            "{e}"
+        );
+        let e = err("[fit]\nlaw = \"hunt-crossley\"\na = \"big\"\n");
+        assert!(e.contains("`fit.a` must be a number"), "{e}");
+        let e = err("[fit]\na = 1.0\n");
+        assert!(e.contains("missing key `fit.law`"), "{e}");
+        let e = err("[fit]\nlaw = \"hunt-crossley\"\na = 1.0\nwhen = 3\n");
+        assert!(e.contains("unknown key `fit.when`"), "{e}");
+    }
+
+    #[test]
+    fn constant_e_sets_e_whatever_v0() {
+        let text = with_fit("[fit]\nlaw = \"constant-e\"\ne = 0.55\n");
+        let scene = parse(&text).unwrap();
+        assert_eq!(scene.impact.restitution, 0.55);
+        assert!(!scene.assumed.restitution);
+    }
+}
