@@ -5,8 +5,8 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
+use super::fit::FitError;
 use super::force::ImpactParams;
-use super::impact::ImpactError;
 use super::pair::ContactPair;
 use super::quasistatic::{ContactGeometry, PairEstimate, Quasistatic};
 use super::scene_fit::FittedLaw;
@@ -119,7 +119,7 @@ impl Scene {
     /// Sets `impact.restitution` to the e the fitted law realises at the scene's v₀ (nothing
     /// without a `[fit]`), so that every other law is set or calibrated to the measured e; e is
     /// then given, not assumed. Called wherever v₀ may have changed (decoding, the explorer's edits).
-    pub fn apply_fit(&mut self) -> Result<(), ImpactError> {
+    pub fn apply_fit(&mut self) -> Result<(), FitError> {
         let Some(fit) = &self.fit else {
             return Ok(());
         };
@@ -271,7 +271,7 @@ impl Serialize for FitRecord<'_> {
         let fit = self.0;
         let mut map = serializer.serialize_map(None)?;
         map.serialize_entry("law", fit.kind.id())?;
-        map.serialize_entry(fit.kind.constant().0, &fit.value)?;
+        map.serialize_entry(fit.constant().0, &fit.value)?;
         if let Some(source) = &fit.source {
             map.serialize_entry("source", source)?;
         }

@@ -4,82 +4,45 @@
 //! so that every other law is set (or calibrated) to the same e.
 #![warn(missing_docs)]
 
-use super::calibrate::{CalibrationError, hunt_crossley_restitution, scene_or_calibrated};
+use super::calibrate::{CalibrationError, scene_or_calibrated};
 use super::error::{ModelError, require_positive};
+use super::fit::{Candidate, FitError, restitution_model};
 use super::force::table::Family;
 use super::force::{AnyLaw, ForceModel, ImpactParams};
-use super::impact::{ImpactError, MethodChoice, SolveOptions, solve_law};
+use super::impact::ImpactError;
 
-/// The relative tolerance of the solve that gives a solved law's e at v₀: two digits below the
-/// 1e-6 to which a fit recovers its constant.
-const SOLVE_RTOL: f64 = 1e-10;
+/// What a scene's `[fit]` may name: Newton's constant e or a law with a material constant
+/// ([`Candidate`]); its `law = "…"` is the candidate's id.
+pub type FittedKind = Candidate;
 
-/// What was fitted: Newton's constant e, or a law of the table with its material constant.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FittedKind {
-    /// A constant coefficient of restitution, whatever v₀ (`law = "constant-e"`).
-    ConstantE,
-    /// A law of the table.
-    Law(ForceModel),
+/// The key, symbol and SI unit of `candidate`'s material constant (`e`; `a` = χ/v₀ in s/m for the
+/// Hunt–Crossley family; the law's damping parameter otherwise); `None` for a law without one.
+pub fn constant_of(candidate: Candidate) -> Option<(&'static str, &'static str, &'static str)> {
+    let specs = candidate.params().ok()?;
+    let spec = specs.first()?;
+    Some((spec.key, spec.symbol, spec.unit))
 }
 
-impl FittedKind {
-    /// The id of `law = "…"` in a scene file: `constant-e` or the law's id.
-    pub fn id(self) -> &'static str {
-        match self {
-            FittedKind::ConstantE => CONSTANT_E,
-            FittedKind::Law(model) => model.name(),
-        }
-    }
-
-    /// The kind with id `id`, or `None` for an unknown id or a law without a damping parameter
-    /// (elastic Hertz rebounds at e = 1 whatever is fitted).
-    pub fn from_id(id: &str) -> Option<FittedKind> {
-        if id == CONSTANT_E {
-            return Some(FittedKind::ConstantE);
-        }
-        let model: ForceModel = id.parse().ok()?;
-        model.spec().damping.map(|_| FittedKind::Law(model))
-    }
-
-    /// The ids [`FittedKind::from_id`] accepts, for messages.
-    pub fn ids() -> Vec<&'static str> {
-        std::iter::once(CONSTANT_E)
-            .chain(
-                ForceModel::ALL
-                    .into_iter()
-                    .filter(|m| m.spec().damping.is_some())
-                    .map(ForceModel::name),
-            )
-            .collect()
-    }
-
-    /// The key of the material constant in `[fit]`, its symbol and SI unit: `e` for constant e;
-    /// `a` = χ/v₀ in s/m for the Hunt–Crossley family (χ = a·v₀, docs/physics.md §6.4); the
-    /// law's own damping parameter for the others (c, γ, A, v_y, …), which is a material constant.
-    pub fn constant(self) -> (&'static str, &'static str, &'static str) {
-        match self {
-            FittedKind::ConstantE => ("e", "e", "1"),
-            FittedKind::Law(model) if model.spec().family == Family::HuntCrossley => {
-                ("a", "a", "s/m")
-            }
-            FittedKind::Law(model) => match model.spec().damping {
-                Some(d) => (d.key, d.symbol, d.unit),
-                None => ("", "", ""),
-            },
-        }
-    }
+/// The candidate with id `id` when it has a material constant a scene can carry.
+pub fn fitted_kind(id: &str) -> Option<Candidate> {
+    Candidate::from_id(id).filter(|c| constant_of(*c).is_some())
 }
 
-/// The id of Newton's constant e in `[fit] law`.
-pub const CONSTANT_E: &str = "constant-e";
+/// The ids [`fitted_kind`] accepts, for messages.
+pub fn fitted_ids() -> Vec<&'static str> {
+    std::iter::once(Candidate::ConstantE)
+        .chain(ForceModel::ALL.into_iter().map(Candidate::Law))
+        .filter(|c| constant_of(*c).is_some())
+        .map(Candidate::id)
+        .collect()
+}
 
 /// A fitted law as a scene carries it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FittedLaw {
-    /// The law.
-    pub kind: FittedKind,
-    /// Its material constant in the SI unit of [`FittedKind::constant`].
+    /// The law (or constant e).
+    pub kind: Candidate,
+    /// Its material constant in the SI unit of [`FittedLaw::constant`].
     pub value: f64,
     /// The data file it was fitted to, as given (for the reader; never read back).
     pub source: Option<String>,
@@ -89,7 +52,7 @@ pub struct FittedLaw {
 
 impl FittedLaw {
     /// A fitted law without provenance.
-    pub fn new(kind: FittedKind, value: f64) -> Self {
+    pub fn new(kind: Candidate, value: f64) -> Self {
         FittedLaw {
             kind,
             value,
@@ -98,17 +61,22 @@ impl FittedLaw {
         }
     }
 
+    /// The key, symbol and SI unit of its constant (`a`, `a`, `s/m` for Hunt–Crossley).
+    pub fn constant(&self) -> (&'static str, &'static str, &'static str) {
+        constant_of(self.kind).unwrap_or(("", "", ""))
+    }
+
     /// The dotted field of the constant, e.g. `fit.a`.
     pub fn field(&self) -> String {
-        format!("fit.{}", self.kind.constant().0)
+        format!("fit.{}", self.constant().0)
     }
 
     /// Checks the constant: e in (0, 1] for constant e, a finite number ≥ 0 otherwise.
     pub fn validate(&self) -> Result<(), ModelError> {
         let field = self.field();
         let ok = match self.kind {
-            FittedKind::ConstantE => self.value > 0.0 && self.value <= 1.0,
-            FittedKind::Law(_) => self.value.is_finite() && self.value >= 0.0,
+            Candidate::ConstantE => self.value > 0.0 && self.value <= 1.0,
+            Candidate::Law(_) => self.value.is_finite() && self.value >= 0.0,
         };
         if ok {
             return Ok(());
@@ -116,8 +84,8 @@ impl FittedLaw {
         Err(ModelError::InvalidParameter {
             field,
             requirement: match self.kind {
-                FittedKind::ConstantE => "in (0, 1]",
-                FittedKind::Law(_) => "a finite number ≥ 0",
+                Candidate::ConstantE => "in (0, 1]",
+                Candidate::Law(_) => "a finite number ≥ 0",
             },
             value: self.value,
         })
@@ -127,11 +95,11 @@ impl FittedLaw {
     /// the constant itself otherwise); `None` for constant e.
     pub fn damping_at(&self, v0: f64) -> Option<f64> {
         match self.kind {
-            FittedKind::ConstantE => None,
-            FittedKind::Law(model) if model.spec().family == Family::HuntCrossley => {
+            Candidate::ConstantE => None,
+            Candidate::Law(model) if model.spec().family == Family::HuntCrossley => {
                 Some(self.value * v0)
             }
-            FittedKind::Law(_) => Some(self.value),
+            Candidate::Law(_) => Some(self.value),
         }
     }
 
@@ -140,36 +108,19 @@ impl FittedLaw {
     pub fn law(&self, params: &ImpactParams) -> Result<Option<(ForceModel, AnyLaw)>, ModelError> {
         self.validate()?;
         match (self.kind, self.damping_at(params.v0)) {
-            (FittedKind::Law(model), Some(d)) => {
+            (Candidate::Law(model), Some(d)) => {
                 Ok(Some((model, model.law_with_damping(params, d)?)))
             }
             _ => Ok(None),
         }
     }
 
-    /// The restitution the fitted law realises at `params.v0`: the constant e; the exact relation
-    /// ln((1 + χ)/(1 − χ·e)) = χ·(1 + e) with χ = a·v₀ for the Hunt–Crossley family
-    /// (docs/physics.md §6.4); an impact solve at rtol 1e-10 for the others.
-    pub fn restitution_at(&self, params: &ImpactParams) -> Result<f64, ImpactError> {
+    /// The restitution the fitted law realises at `params.v0`: the fit's own forward model
+    /// ([`restitution_model`]: exact relations where they exist, docs/physics.md §9.1).
+    pub fn restitution_at(&self, params: &ImpactParams) -> Result<f64, FitError> {
         self.validate()?;
         require_positive("impact.v0", params.v0)?;
-        match self.kind {
-            FittedKind::ConstantE => Ok(self.value),
-            FittedKind::Law(model) if model.spec().family == Family::HuntCrossley => {
-                Ok(hunt_crossley_restitution(self.value * params.v0))
-            }
-            FittedKind::Law(_) => {
-                let Some((_, law)) = self.law(params)? else {
-                    return Ok(params.restitution);
-                };
-                let options = SolveOptions {
-                    method: MethodChoice::Auto,
-                    rtol: SOLVE_RTOL,
-                    ..SolveOptions::default()
-                };
-                Ok(solve_law(&law, &options)?.summary.e_out)
-            }
-        }
+        restitution_model(params, self.kind, &[self.value], params.v0)
     }
 }
 
@@ -182,7 +133,7 @@ pub fn fitted_law_for(
     params: &ImpactParams,
 ) -> Result<Option<AnyLaw>, ModelError> {
     match fit {
-        Some(fit) if fit.kind == FittedKind::Law(model) => Ok(fit.law(params)?.map(|(_, l)| l)),
+        Some(fit) if fit.kind == Candidate::Law(model) => Ok(fit.law(params)?.map(|(_, l)| l)),
         _ => Ok(None),
     }
 }
@@ -207,7 +158,7 @@ pub fn scene_law(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::impact::solve_impact;
+    use crate::model::impact::{SolveOptions, solve_law};
     use crate::model::scene::tests::fig5_scene;
 
     fn fig5_at(v0: f64) -> ImpactParams {
@@ -218,7 +169,7 @@ mod tests {
 
     #[test]
     fn a_fitted_hunt_crossley_constant_gives_its_exact_e_and_the_solver_agrees() {
-        let fit = FittedLaw::new(FittedKind::Law(ForceModel::HuntCrossley), 2.0);
+        let fit = FittedLaw::new(Candidate::Law(ForceModel::HuntCrossley), 2.0);
         let mut last = 1.0;
         for v0 in [0.1, 0.3, 1.0] {
             let p = fig5_at(v0);
@@ -240,29 +191,47 @@ mod tests {
     }
 
     #[test]
-    fn a_solved_law_realises_its_constant_and_calibrating_to_that_e_gives_it_back() {
-        let kv = ForceModel::with_id("kelvin-voigt");
+    fn every_fittable_law_solved_with_its_constant_realises_the_fits_e() {
+        // The law a solve builds from the constant and the fit's forward model agree at v₀.
         let p = fig5_at(0.3);
-        let c = kv.law(&p).unwrap().damping().unwrap().value;
-        let fit = FittedLaw::new(FittedKind::Law(kv), c);
-        let e = fit.restitution_at(&p).unwrap();
-        let own = solve_impact(kv, &p, &SolveOptions::default()).unwrap();
-        assert!((own.summary.e_out - e).abs() < 1e-6);
+        for model in ForceModel::ALL {
+            let candidate = Candidate::Law(model);
+            let Some((_, _, _)) = constant_of(candidate) else {
+                continue;
+            };
+            let Some(d) = model.law(&p).unwrap().damping() else {
+                continue;
+            };
+            let value = if model.spec().family == Family::HuntCrossley {
+                d.value / p.v0
+            } else {
+                d.value
+            };
+            let fit = FittedLaw::new(candidate, value);
+            let e = fit.restitution_at(&p).unwrap();
+            let law = fit.law(&p).unwrap().unwrap().1;
+            let solved = solve_law(&law, &SolveOptions::default())
+                .unwrap()
+                .summary
+                .e_out;
+            assert!(
+                (solved - e).abs() < 1e-6,
+                "{model}: solved {solved}, fit {e}"
+            );
+        }
     }
 
     #[test]
     fn ids_and_constants_are_those_of_the_table_and_bad_values_name_the_field() {
-        assert_eq!(
-            FittedKind::from_id("constant-e"),
-            Some(FittedKind::ConstantE)
-        );
-        assert_eq!(FittedKind::from_id("quasistatic"), None, "no damping");
-        assert_eq!(FittedKind::from_id("no-such"), None);
-        let hc = FittedKind::from_id("lankarani-nikravesh").unwrap();
-        assert_eq!(hc.constant(), ("a", "a", "s/m"));
-        let thornton = FittedKind::from_id("thornton").unwrap();
-        assert_eq!(thornton.constant().0, "v_yield");
-        let bad = FittedLaw::new(FittedKind::ConstantE, 1.5).validate();
+        assert_eq!(fitted_kind("constant-e"), Some(Candidate::ConstantE));
+        assert_eq!(fitted_kind("quasistatic"), None, "no damping");
+        assert_eq!(fitted_kind("no-such"), None);
+        let hc = fitted_kind("lankarani-nikravesh").unwrap();
+        assert_eq!(constant_of(hc), Some(("a", "a", "s/m")));
+        let thornton = fitted_kind("thornton").unwrap();
+        assert_eq!(constant_of(thornton).unwrap().0, "v_yield");
+        assert!(fitted_ids().contains(&"kelvin-voigt") && !fitted_ids().contains(&"quasistatic"));
+        let bad = FittedLaw::new(Candidate::ConstantE, 1.5).validate();
         assert!(
             bad.unwrap_err()
                 .to_string()

@@ -65,7 +65,7 @@ fn restitution_set(
     seed: u64,
 ) -> String {
     let scene = scene(scene_name);
-    let (key, _, unit) = fit.kind.constant();
+    let (key, _, unit) = fit.constant();
     let mut out = String::new();
     let _ = writeln!(out, "# SYNTHETIC data, not measurements: {about}");
     let _ = writeln!(

@@ -3,7 +3,7 @@
 
 use toml::{Table, Value};
 
-use crate::model::scene_fit::{FittedKind, FittedLaw};
+use crate::model::scene_fit::{FittedLaw, fitted_ids, fitted_kind};
 
 use super::decode::Decoder;
 use super::document::{Problem, SceneFileError, ValueIssue};
@@ -28,16 +28,16 @@ impl Decoder<'_> {
         let id = self
             .optional_string(table, "fit", "law")?
             .ok_or_else(|| self.missing_key("fit.law", " (the fitted law's id, or constant-e)"))?;
-        let kind = FittedKind::from_id(id).ok_or_else(|| {
+        let kind = fitted_kind(id).ok_or_else(|| {
             self.bad_value(
                 "fit.law",
                 ValueIssue::UnknownFitLaw {
                     name: id.to_string(),
-                    known: FittedKind::ids(),
+                    known: fitted_ids(),
                 },
             )
         })?;
-        let (key, _, unit) = kind.constant();
+        let (key, _, unit) = FittedLaw::new(kind, 0.0).constant();
         if let Some(other) = table
             .keys()
             .find(|k| !WORDS.contains(&k.as_str()) && k.as_str() != key)
@@ -82,7 +82,7 @@ fn why(unit: &str) -> &'static str {
 /// The `[fit]` table of `fit` as TOML, with the unit of its constant.
 pub fn fit_table(fit: &FittedLaw) -> String {
     let quote = |s: &str| Value::String(s.to_string()).to_string();
-    let (key, symbol, unit) = fit.kind.constant();
+    let (key, symbol, unit) = fit.constant();
     let unit = if unit == "1" {
         String::new()
     } else {
@@ -129,7 +129,10 @@ mod tests {
         let text = with_fit("[fit]\nlaw = \"hunt-crossley\"\na = 2.5\nsource = \"d.csv\"\n");
         let scene = parse(&text).unwrap();
         let fit = scene.fit.clone().unwrap();
-        assert_eq!(fit.kind, FittedKind::Law(ForceModel::HuntCrossley));
+        assert_eq!(
+            fit.kind,
+            crate::model::fit::Candidate::Law(ForceModel::HuntCrossley)
+        );
         assert_eq!((fit.value, fit.source.as_deref()), (2.5, Some("d.csv")));
         // Fig. 5's file says e = 0.6; the fit says what e is at v0 = 0.3 m/s.
         let e = hunt_crossley_restitution(2.5 * 0.3);
