@@ -54,6 +54,10 @@ pub enum Command {
     /// Contact parameters for a simulation engine: its input fragment, calibrated so its realised
     /// restitution at v₀ is the scene's, and what the engine will really give.
     Translate(TranslateArgs),
+    /// Fit every law (or --law …) to measured restitution e(v₀) of a CSV file, rank the laws by an
+    /// information criterion, say whether the data can tell them apart; --write-scene puts the
+    /// fitted law in a scene that solve, translate and the explorer use.
+    Fit(FitArgs),
     /// Write a chart as the explorer draws it to an SVG or PNG figure.
     Plot(PlotArgs),
     /// Simulate a system scene (its `[system]` table): impacts, detected period, time history.
@@ -62,6 +66,45 @@ pub enum Command {
     Orbit(OrbitArgs),
     /// A brute-force bifurcation diagram of a system over a scene or system key (CSV streamed).
     Bifurcation(BifurcationArgs),
+}
+
+/// Options of `hertz-tui fit`.
+#[derive(Debug, Args)]
+pub struct FitArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// The data: a CSV of v, e (and optionally sd) with units in the header, e.g. `v (m/s), e, sd`
+    /// (docs/fitting.md).
+    #[arg(long, value_name = "FILE")]
+    pub data: std::path::PathBuf,
+    /// A law to fit: constant-e or a law id (repeatable; default every law with a material
+    /// constant, one per distinct e(v)).
+    #[arg(long = "law", value_name = "LAW")]
+    pub laws: Vec<String>,
+    /// The information criterion that ranks the laws: aicc or bic.
+    #[arg(long, value_name = "C", default_value = "aicc")]
+    pub criterion: crate::model::fit::Criterion,
+    /// Confidence level of the parameters' intervals.
+    #[arg(long, value_name = "P", default_value_t = 0.95, value_parser = level)]
+    pub level: f64,
+    /// Output format: table (ranking, verdict, residuals), json, or csv (the ranking).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Write the scene with the best fitted law (or the one --law names) as its [fit] to OUT.
+    #[arg(long, value_name = "OUT")]
+    pub write_scene: Option<std::path::PathBuf>,
+    /// Also each simulation engine's realised e(v₀), calibrated at the scene's v₀, against the
+    /// data: which engine can reproduce these measurements.
+    #[arg(long)]
+    pub engines: bool,
+}
+
+/// A confidence level in (0, 1).
+fn level(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 && x < 1.0 => Ok(x),
+        _ => Err(format!("{s} must be a confidence level in (0, 1), e.g. 0.95")),
+    }
 }
 
 /// Options of `hertz-tui restitution`.
@@ -287,6 +330,10 @@ pub struct TranslateArgs {
     /// Also write the engine's runnable script to FILE (run it as the output says).
     #[arg(long, value_name = "FILE")]
     pub script: Option<std::path::PathBuf>,
+    /// Also the engine's realised e(v₀), its constants calibrated at the scene's v₀, against the
+    /// measured restitution in FILE (the CSV of `hertz-tui fit`): can it reproduce them?
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
     /// Relative tolerance the printed time step keeps on e, F_max and the contact time (default
     /// 0.01).
     #[arg(long, value_name = "T", default_value_t = crate::model::engine::run::DEFAULT_TOLERANCE)]
