@@ -192,7 +192,7 @@ pub fn restitution_chart(
     }
 }
 
-/// Residuals e_measured − e_law at each measured v₀, one line per law through its points, a rule
+/// Residuals e_law − e_measured at each measured v₀, one line per law through its points, a rule
 /// at 0 and, with standard deviations, error bars around 0.
 pub fn residual_chart(
     data: &[Point],
@@ -231,7 +231,7 @@ pub fn residual_chart(
     }
     series.extend(curve_series(residuals, &x, &y));
     Chart {
-        title: "residuals e measured − e law".to_string(),
+        title: "residuals e law − e measured".to_string(),
         x: x.chart_axis(format!("v₀ [{unit}]")),
         y: y.chart_axis("residual".to_string()),
         series,

@@ -103,7 +103,9 @@ pub struct FitArgs {
 fn level(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(x) if x > 0.0 && x < 1.0 => Ok(x),
-        _ => Err(format!("{s} must be a confidence level in (0, 1), e.g. 0.95")),
+        _ => Err(format!(
+            "{s} must be a confidence level in (0, 1), e.g. 0.95"
+        )),
     }
 }
 
@@ -143,6 +145,12 @@ pub enum ChartChoice {
     ImpactMap,
     /// A system scene's bifurcation diagram over --param from --from to --to (--points values).
     Bifurcation,
+    /// Measured e(v₀) of --data with error bars and every fitted law's curve (the laws --model
+    /// names and constant e, default every fittable law), and the residuals.
+    Fit,
+    /// Measured e(v₀) of --data against each engine's realised e(v₀), the engine's constants
+    /// calibrated at v₀ to the best fit's e.
+    FitEngines,
 }
 
 /// What a sweep chart shows against the swept key.
@@ -209,6 +217,9 @@ pub struct PlotArgs {
     pub contact: ContactArgs,
     #[command(flatten)]
     pub run: RunArgs,
+    /// fit and fit-engines: the measured restitution (the CSV of `hertz-tui fit`).
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
     /// The figure file: .svg (vector) or .png.
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: std::path::PathBuf,

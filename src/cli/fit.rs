@@ -17,8 +17,8 @@ use crate::model::fit::{
     fit_restitution,
 };
 use crate::model::presets::Registry;
-use crate::model::scene_fit::FittedLaw;
 use crate::model::scene_file::to_toml_with_system;
+use crate::model::scene_fit::FittedLaw;
 
 use super::args::{FitArgs, Format};
 use super::error::CliError;
@@ -46,7 +46,11 @@ fn chosen(laws: &[String]) -> Result<Vec<Candidate>, CliError> {
     for id in laws {
         let candidate = Candidate::from_id(id).ok_or_else(|| {
             let ids: Vec<&str> = std::iter::once(Candidate::ConstantE)
-                .chain(candidates().into_iter().filter(|c| *c != Candidate::ConstantE))
+                .chain(
+                    candidates()
+                        .into_iter()
+                        .filter(|c| *c != Candidate::ConstantE),
+                )
                 .map(Candidate::id)
                 .collect();
             CliError::Usage(format!(
@@ -165,7 +169,10 @@ fn write_scene(
     let system = registry.scene_system(name, &args.source.overrides)?;
     let text = to_toml_with_system(fitted, description.as_deref(), Some(&view), system.as_ref());
     std::fs::write(out, text).map_err(|e| {
-        CliError::Usage(format!("--write-scene: cannot write {}: {e}", out.display()))
+        CliError::Usage(format!(
+            "--write-scene: cannot write {}: {e}",
+            out.display()
+        ))
     })?;
     Ok(out.display().to_string())
 }
@@ -311,9 +318,11 @@ fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> S
         "Residuals of {} (e law − e measured):\n",
         best.candidate
     ));
-    let mut rows = vec![["v0 (m/s)", "e measured", "sd", "e law", "residual"]
-        .map(String::from)
-        .to_vec()];
+    let mut rows = vec![
+        ["v0 (m/s)", "e measured", "sd", "e law", "residual"]
+            .map(String::from)
+            .to_vec(),
+    ];
     for (p, r) in data.points.iter().zip(&best.residuals) {
         rows.push(vec![
             given(p.v),
@@ -347,7 +356,13 @@ fn render_csv(report: &FitReport) -> String {
     let mut out = String::from(
         "rank,law,parameter,unit,value,std_error,ci_low,ci_high,level,rss,chi2,aic,aicc,bic,delta,weight\n",
     );
-    let opt = |x: f64| if x.is_finite() { x.to_string() } else { String::new() };
+    let opt = |x: f64| {
+        if x.is_finite() {
+            x.to_string()
+        } else {
+            String::new()
+        }
+    };
     for (i, f) in report.fits.iter().enumerate() {
         let p = &f.params[0];
         out.push_str(&format!(
@@ -392,7 +407,11 @@ pub struct EngineAgainstData {
 
 /// Each engine translated for `scene` (its constants calibrated at v₀ to the scene's e) and
 /// evaluated at the data's velocities.
-pub fn engines_against(scene: &Scene, data: &RestitutionData, noise: f64) -> Vec<EngineAgainstData> {
+pub fn engines_against(
+    scene: &Scene,
+    data: &RestitutionData,
+    noise: f64,
+) -> Vec<EngineAgainstData> {
     ENGINES
         .iter()
         .map(|e| engine_against(e.id, scene, data, noise))
@@ -440,9 +459,11 @@ pub fn engine_against(
 
 /// The engines' table: RMS residual and the answer in words.
 pub fn render_engines(engines: &[EngineAgainstData]) -> String {
-    let mut rows = vec![["engine", "its law", "RMS e − data", "these measurements"]
-        .map(String::from)
-        .to_vec()];
+    let mut rows = vec![
+        ["engine", "its law", "RMS e − data", "these measurements"]
+            .map(String::from)
+            .to_vec(),
+    ];
     for e in engines {
         rows.push(match (&e.error, e.rms, e.reproduces) {
             (None, Some(rms), Some(ok)) => vec![

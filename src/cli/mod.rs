@@ -10,6 +10,7 @@ mod layout;
 mod list;
 pub mod orbit;
 pub mod plot;
+mod plot_fit;
 mod plot_system;
 mod report;
 pub mod restitution;

@@ -87,9 +87,11 @@ fn render_against(data: &RestitutionData, row: &EngineAgainstData) -> String {
     let source = data.source.as_deref().unwrap_or("the data");
     let mut out = format!("Against {source}:\n");
     if !row.e.is_empty() {
-        let mut rows = vec![["v0 (m/s)", "e measured", "e engine", "difference"]
-            .map(String::from)
-            .to_vec()];
+        let mut rows = vec![
+            ["v0 (m/s)", "e measured", "e engine", "difference"]
+                .map(String::from)
+                .to_vec(),
+        ];
         for (p, e) in data.points.iter().zip(&row.e) {
             rows.push(vec![
                 significant(p.v, 4, Zeros::Trim),

@@ -109,7 +109,11 @@ pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
 
 /// [`translate`] with [`Translation::e_of_v`] at `velocities` (m/s, e.g. those of measured
 /// restitution): the engine's constants calibrated at the scene's v₀, held at every velocity.
-pub fn translate_at(id: &str, scene: &Scene, velocities: &[f64]) -> Result<Translation, EngineError> {
+pub fn translate_at(
+    id: &str,
+    scene: &Scene,
+    velocities: &[f64],
+) -> Result<Translation, EngineError> {
     let engine = find(id)?;
     let mut engine_scene = EngineScene::new(scene)?;
     engine_scene.velocities = velocities.to_vec();
