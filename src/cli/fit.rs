@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use crate::format::csv::field;
 use crate::format::fit_csv::parse_restitution_csv;
-use crate::format::{Zeros, significant};
+use crate::format::{Zeros, round_trip, significant};
 use crate::model::Scene;
 use crate::model::engine::{self, ENGINES};
 use crate::model::fit::{
@@ -270,9 +270,10 @@ fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> S
     let level = report.fits[0].params[0].level;
     let misfit = if report.weighted { "χ²" } else { "RSS" };
     let mut out = format!(
-        "Fit of e(v0) to {}: {} points, v0 = {} to {} m/s{}; k, n, m from {}\n",
+        "Fit of e(v0) to {}: {} point{}, v0 = {} to {} m/s{}; k, n, m from {}\n",
         output.data,
         output.points,
+        if output.points == 1 { "" } else { "s" },
         given(output.v_range.0),
         given(output.v_range.1),
         if report.weighted {
@@ -371,13 +372,13 @@ fn render_csv(report: &FitReport) -> String {
             f.candidate,
             p.spec.key,
             field(p.spec.unit),
-            p.value,
+            round_trip(p.value),
             opt(p.std_error),
             opt(p.ci.0),
             opt(p.ci.1),
-            p.level,
-            f.rss,
-            f.chi2.map_or(String::new(), |x| x.to_string()),
+            round_trip(p.level),
+            round_trip(f.rss),
+            f.chi2.map_or(String::new(), opt),
             opt(f.aic),
             opt(f.aicc),
             opt(f.bic),
