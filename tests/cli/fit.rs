@@ -147,7 +147,7 @@ fn the_generating_law_ranks_first_and_its_interval_covers_the_truth() {
 }
 
 #[test]
-fn noise_free_data_is_recovered_to_1e_6_and_the_level_widens_nothing_it_should_not() {
+fn noise_free_data_is_recovered_to_1e_6_through_the_cli() {
     // e(v) of Hunt–Crossley with a = 0.7 s/m on Fig. 5's scene, at full precision.
     let scene = Registry::builtin()
         .unwrap()
@@ -404,6 +404,36 @@ fn csv_has_a_row_per_law_and_the_figure_draws_every_fitted_law() {
     assert_eq!(lines.len(), 3);
     assert!(lines[1].starts_with("1,hunt-crossley,a,s/m,"));
     assert!(!csv.contains("NaN"));
+    // --level reaches the intervals: a (log scale) has ln(hi/lo) ∝ the quantile, the normal one
+    // since the data gives its sd: z(0.84)/z(0.975) = 0.99446/1.95996 (t with 15 degrees of
+    // freedom would give 0.474).
+    let log_width = |csv: &str| {
+        let cells: Vec<f64> = csv
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .skip(6)
+            .take(2)
+            .map(|c| c.parse().unwrap())
+            .collect();
+        (cells[1] / cells[0]).ln()
+    };
+    let narrow = ok(&[
+        "fit",
+        "--scene",
+        "steel-sphere-r10-plate",
+        "--data",
+        &data("steel-hunt-crossley.csv"),
+        "--law",
+        "hunt-crossley",
+        "--format",
+        "csv",
+        "--level",
+        "0.68",
+    ]);
+    let ratio = log_width(&narrow) / log_width(&csv);
+    assert!((ratio - 0.99446 / 1.95996).abs() < 1e-4, "{ratio}");
 
     let svg = temp("fit.svg");
     let s = svg.to_str().unwrap();
