@@ -401,7 +401,8 @@ pub struct ContactArgs {
     #[arg(long, value_name = "MODEL", default_value = "hunt-crossley")]
     pub law: ForceModel,
     /// How the compliant law's damping is set: per-impact (from each impact's incoming speed),
-    /// calibrated (to realise the scene's e), or a number (the law's own constant).
+    /// calibrated (to realise the scene's e), fitted (the scene's [fit] constant, for the law it
+    /// names), or a number (the law's own constant).
     #[arg(long, value_name = "HOW", default_value = "per-impact", value_parser = damping_choice)]
     pub damping: DampingChoice,
 }
@@ -411,6 +412,8 @@ pub struct ContactArgs {
 pub enum DampingChoice {
     PerImpact,
     Calibrated,
+    /// The material constant of the scene's `[fit]`.
+    Fitted,
     Constant(f64),
 }
 
@@ -418,10 +421,11 @@ fn damping_choice(s: &str) -> Result<DampingChoice, String> {
     match s {
         "per-impact" => Ok(DampingChoice::PerImpact),
         "calibrated" => Ok(DampingChoice::Calibrated),
+        "fitted" => Ok(DampingChoice::Fitted),
         _ => match s.parse::<f64>() {
             Ok(x) if x.is_finite() && x >= 0.0 => Ok(DampingChoice::Constant(x)),
             _ => Err(format!(
-                "\"{s}\" is not per-impact, calibrated or a finite number ≥ 0"
+                "\"{s}\" is not per-impact, calibrated, fitted or a finite number ≥ 0"
             )),
         },
     }
