@@ -18,6 +18,7 @@ pub mod cylinder;
 pub mod engine;
 pub mod error;
 pub mod exact;
+pub mod fit;
 pub mod force;
 pub mod impact;
 pub mod material;
