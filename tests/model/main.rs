@@ -10,6 +10,7 @@ mod dry_friction_cutoff;
 mod engine_runs;
 mod engines;
 mod engines_vs_laws;
+mod fit_trace;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;

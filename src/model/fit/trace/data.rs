@@ -92,6 +92,22 @@ pub enum TraceDataError {
         /// The least number.
         needed: usize,
     },
+    /// Fewer samples than a law's fit has parameters, plus one (the residual variance needs a
+    /// degree of freedom).
+    #[error(
+        "{file}: {points} samples cannot determine the {params} parameters of {law} and leave a degree of freedom: give at least {} samples or free fewer parameters",
+        params + 1
+    )]
+    TooFewForLaw {
+        /// The file, or `the trace`.
+        file: String,
+        /// The samples given.
+        points: usize,
+        /// The law's parameters in this fit.
+        params: usize,
+        /// The law.
+        law: &'static str,
+    },
 }
 
 /// A validated trace: at least [`TraceData::MIN_POINTS`] samples, finite, times strictly
