@@ -154,6 +154,7 @@ fn freed_k_n_and_v0_are_fitted_back_too() {
                 ("k,n", TraceQuantity::Force),
                 ("v0", TraceQuantity::Force),
                 ("k,n,v0", TraceQuantity::Displacement),
+                ("k,n,v0", TraceQuantity::Force),
             ]
         } else {
             &[
@@ -308,4 +309,33 @@ fn too_short_traces_and_unknown_parameters_are_refused_by_name() {
         fit_trace_params(&scene(0.5), &data, &[], &TraceFitOptions::default()),
         Err(FitError::NoCandidates)
     ));
+}
+
+/// Every law of the table fits a Hunt–Crossley trace or says why (none fails here); the nine
+/// Hunt–Crossley rows, one law once χ is fitted (eq 19), tie first and are named identical.
+#[test]
+fn every_law_fits_a_trace_and_the_hunt_crossley_rows_tie() {
+    let model = ForceModel::HuntCrossley;
+    let base = scene(0.7);
+    let data = trace(
+        model,
+        &truth(model, 0.7, 20e-6),
+        TraceQuantity::Force,
+        &times(60),
+        &base,
+    );
+    let report =
+        fit_trace_params(&base, &data, &ForceModel::ALL, &TraceFitOptions::default()).unwrap();
+    assert!(report.failed.is_empty(), "{:?}", report.failed);
+    assert_eq!(report.fits.len(), ForceModel::ALL.len());
+    let family: Vec<_> = ForceModel::ALL
+        .into_iter()
+        .filter(|m| m.spec().chi.is_some())
+        .map(hertz_tui::model::fit::Candidate::Law)
+        .collect();
+    assert_eq!(family.len(), 9);
+    let first = &report.verdict.groups[0];
+    assert_eq!(first.members, family);
+    assert_eq!(first.identical, family[1..]);
+    assert!(report.fits[9].delta > 100.0, "{:?}", report.fits[9]);
 }

@@ -8,8 +8,11 @@ use crate::model::force::{AnyLaw, ForceModel, ImpactParams};
 use super::forward::TraceParams;
 use super::options::FreeParams;
 
+/// The stiffness k of F = k·xⁿ (eq 1), on a log scale.
 const K: ParamSpec = ParamSpec::positive("k", "k", "N/m^n");
+/// The exponent n of eq 1: at least 1 (a law that stiffens with x), at most 4.
 const N: ParamSpec = ParamSpec::bounded("n", "n", "1", 1.0, 4.0);
+/// The impact velocity, on a log scale.
 const V0: ParamSpec = ParamSpec::positive("v₀", "v0", "m/s");
 
 /// The parameters of one law's trace fit, in θ order: k, n, v₀ where freed, the damping where
