@@ -339,3 +339,147 @@ fn every_law_fits_a_trace_and_the_hunt_crossley_rows_tie() {
     assert_eq!(first.identical, family[1..]);
     assert!(report.fits[9].delta > 100.0, "{:?}", report.fits[9]);
 }
+
+/// A trace written in µs and kN (or µm) and read back by the CSV reader fits as the SI one.
+#[test]
+fn a_trace_read_from_csv_in_engineering_units_fits_the_same() {
+    let model = ForceModel::HuntCrossley;
+    let base = scene(0.7);
+    let p = truth(model, 0.7, 20e-6);
+    let ts = times(50);
+    for (quantity, header, per) in [
+        (TraceQuantity::Force, "t (us), F (kN)", 1e3),
+        (TraceQuantity::Displacement, "time [µs], x [um]", 1e-6),
+    ] {
+        let data = trace(model, &p, quantity, &ts, &base);
+        let mut text = format!("# synthetic, noise-free\n{header}\n");
+        for s in &data.samples {
+            text.push_str(&format!("{:e}, {:e}\n", s.t * 1e6, s.value / per));
+        }
+        let read = parse_trace_csv(&text, "drop.csv").unwrap();
+        assert_eq!(read.quantity, quantity);
+        let report = fit_trace_params(&base, &read, &[model], &TraceFitOptions::default()).unwrap();
+        let err = errors(&base, &report.fits[0], &p);
+        assert!(err.iter().all(|&e| e < 1e-6), "{quantity:?}: {err:?}");
+    }
+}
+
+/// A gauge that reads zero out of contact (`Outside::Zero`) is fitted back under that reading,
+/// and is not the free-flight reading: fitted as free flight, it misfits by far more.
+#[test]
+fn a_displacement_gauge_that_reads_zero_out_of_contact() {
+    use hertz_tui::model::fit::trace::Outside;
+    let model = ForceModel::with_id("hertz-viscous");
+    let base = scene(0.5);
+    let p = truth(model, 0.5, 20e-6);
+    let ts = times(60);
+    let zero = TraceFitOptions {
+        outside: Outside::Zero,
+        ..TraceFitOptions::default()
+    };
+    let values = trace_forward(
+        &base,
+        model,
+        &p,
+        TraceQuantity::Displacement,
+        Outside::Zero,
+        &ts,
+        &zero.solve,
+    )
+    .unwrap();
+    assert!(values[0] == 0.0 && *values.last().unwrap() == 0.0);
+    let data =
+        TraceData::from_pairs(TraceQuantity::Displacement, ts.iter().copied().zip(values)).unwrap();
+    let fit = fit_trace_params(&base, &data, &[model], &zero).unwrap();
+    let err = errors(&base, &fit.fits[0], &p);
+    assert!(err.iter().all(|&e| e < 1e-6), "{err:?}");
+    let flight = fit_trace_params(&base, &data, &[model], &TraceFitOptions::default()).unwrap();
+    assert!(
+        flight.fits[0].rss > 1e6 * fit.fits[0].rss,
+        "{} vs {}",
+        flight.fits[0].rss,
+        fit.fits[0].rss
+    );
+}
+
+/// The forward model against the closed form of the damped linear oscillator (docs/physics.md
+/// §6.3): Kelvin–Voigt with tension allowed, contact from t₀ to t₀ + π/ω_d, free flight at v₀
+/// before and at v_out = v₀·exp(−ζω₀π/ω_d) after, within 1e-8 of the peak.
+#[test]
+fn the_forward_model_is_the_damped_oscillator_on_kelvin_voigt() {
+    use hertz_tui::model::fit::trace::Outside;
+    use hertz_tui::model::force::kelvin_voigt::KelvinVoigt;
+    let model = ForceModel::with_id("kelvin-voigt-tension");
+    let base = scene(0.6);
+    let t0 = 20e-6;
+    let p = truth(model, 0.6, t0);
+    let (m, v0) = (base.mass, base.v0);
+    let (k, c) = (KelvinVoigt::stiffness_of(&base), p.damping.unwrap());
+    let w0 = (k / m).sqrt();
+    let zeta = c / (2.0 * (m * k).sqrt());
+    let wd = w0 * (1.0 - zeta * zeta).sqrt();
+    let end = std::f64::consts::PI / wd;
+    let v_out = v0 * (-zeta * w0 * end).exp();
+    let x = |tau: f64| {
+        if tau < 0.0 {
+            v0 * tau
+        } else if tau > end {
+            -v_out * (tau - end)
+        } else {
+            v0 / wd * (-zeta * w0 * tau).exp() * (wd * tau).sin()
+        }
+    };
+    let v = |tau: f64| {
+        v0 * (-zeta * w0 * tau).exp() * ((wd * tau).cos() - zeta * w0 / wd * (wd * tau).sin())
+    };
+    let f = |tau: f64| {
+        if (0.0..=end).contains(&tau) {
+            k * x(tau) + c * v(tau)
+        } else {
+            0.0
+        }
+    };
+    // Avoid the instants where F jumps (first touch, separation): a sample there is either side.
+    let ts: Vec<f64> = times(97)
+        .into_iter()
+        .filter(|t| (t - t0).abs() > 1e-9 && (t - t0 - end).abs() > 1e-9)
+        .collect();
+    let opts = TraceFitOptions::default();
+    let forces = trace_forward(
+        &base,
+        model,
+        &p,
+        TraceQuantity::Force,
+        Outside::FreeFlight,
+        &ts,
+        &opts.solve,
+    )
+    .unwrap();
+    let xs = trace_forward(
+        &base,
+        model,
+        &p,
+        TraceQuantity::Displacement,
+        Outside::FreeFlight,
+        &ts,
+        &opts.solve,
+    )
+    .unwrap();
+    let (f_peak, x_peak) = (forces.iter().copied().fold(0.0, f64::max), v0 / w0);
+    for (i, &t) in ts.iter().enumerate() {
+        let tau = t - t0;
+        assert!(
+            (forces[i] - f(tau)).abs() < 1e-8 * f_peak,
+            "F at {t:e}: {} vs {}",
+            forces[i],
+            f(tau)
+        );
+        assert!(
+            (xs[i] - x(tau)).abs() < 1e-8 * x_peak,
+            "x at {t:e}: {} vs {}",
+            xs[i],
+            x(tau)
+        );
+    }
+    assert!(ts.iter().any(|t| t - t0 > end) && ts[0] < t0);
+}
