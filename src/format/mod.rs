@@ -4,6 +4,7 @@
 //! ([`recommendation`]). Neither `cli` nor `ui` keeps its own copy.
 
 pub mod csv;
+pub mod fit_csv;
 mod number;
 pub mod recommendation;
 mod shortest_exp;
