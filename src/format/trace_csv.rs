@@ -1,36 +1,43 @@
 //! The trace CSV at the edge: a force or displacement trace over one impact, `t, F` or `t, x`, with
 //! units in the header (`t (ms), F (N)`, `t [us], x [um]`; none means SI) read by
-//! [`crate::format::units`], into the model's [`TraceData`] in SI. Lines starting with `#` and
-//! blank lines are skipped; other columns (the `v` of `solve --format csv`) are ignored. Every
+//! [`crate::format::units`], into the model's [`TraceData`] in SI. `#` starts a comment and
+//! blank lines are skipped (`#` starts a comment anywhere); other columns (the `v` of `solve --format csv`) are ignored. Every
 //! error names the file and, where there is one, the line (docs/fitting.md, Traces).
+
+use std::path::Path;
 
 use thiserror::Error;
 
 use crate::format::units::{self, METRE, NEWTON, SECOND, Unit};
 use crate::model::fit::trace::{TraceData, TraceDataError, TraceQuantity, TraceSample};
 
-/// Why a trace file was refused: the file, the line and what is wrong there.
+/// A trace file that could not be read, with the file and the line (0: the file as a whole), as
+/// [`crate::format::fit_csv::FitCsvError`] says it: `file:line: message`.
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum TraceCsvError {
-    /// The text itself: no header, a column missing, a unit or a number that does not read.
-    #[error("{file}: line {line}: {message}")]
-    Syntax {
-        /// The file, as given.
-        file: String,
-        /// The line, 1-based.
-        line: usize,
-        /// What is wrong, with the text read.
-        message: String,
-    },
-    /// The samples read but make no trace (NaN, times not increasing, no contact, too few).
-    #[error("{file}: {source}")]
-    Data {
-        /// The file, as given.
-        file: String,
-        /// The model's reason, with its line where it has one.
-        #[source]
-        source: TraceDataError,
-    },
+#[error("{file}{}: {message}", if *.line > 0 { format!(":{}", .line) } else { String::new() })]
+pub struct TraceCsvError {
+    /// The file as the user named it.
+    pub file: String,
+    /// The 1-based line, 0 for the whole file.
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl TraceCsvError {
+    /// The model's refusal of the samples with the file named (its "line N: " said as file:N).
+    pub fn of_data(file: &str, error: &TraceDataError) -> Self {
+        let line = error.line();
+        let message = error.to_string();
+        let message = message
+            .strip_prefix(&format!("line {line}: "))
+            .map_or(message.clone(), str::to_string);
+        TraceCsvError {
+            file: file.to_string(),
+            line,
+            message,
+        }
+    }
 }
 
 /// A header column this reader knows: which, where, and its unit's size in SI.
@@ -59,13 +66,13 @@ fn name_and_unit(cell: &str) -> (String, Option<&str>) {
     (cell.to_lowercase(), None)
 }
 
-/// The lines that carry data or the header: (1-based line number, text), comments and blank
-/// lines left out.
+/// The lines that carry data or the header: (1-based line number, text before any `#`
+/// comment), blank lines left out.
 fn content_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
     text.lines()
         .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
+        .map(|(i, l)| (i + 1, l.find('#').map_or(l, |c| &l[..c]).trim()))
+        .filter(|(_, l)| !l.is_empty())
 }
 
 /// The columns of a header: time, force, displacement, each if present with its unit (an
@@ -127,7 +134,7 @@ fn parse(
     file: &str,
     wanted: Option<TraceQuantity>,
 ) -> Result<TraceData, TraceCsvError> {
-    let syntax = |line: usize, message: String| TraceCsvError::Syntax {
+    let syntax = |line: usize, message: String| TraceCsvError {
         file: file.to_string(),
         line,
         message,
@@ -135,7 +142,7 @@ fn parse(
     let mut lines = content_lines(text);
     let Some((header_line, header)) = lines.next() else {
         return Err(syntax(
-            text.lines().count().max(1),
+            0,
             "no header: expected a line like `t (ms), F (N)` or `t (us), x (um)`".into(),
         ));
     };
@@ -196,19 +203,27 @@ fn parse(
             line,
         });
     }
-    TraceData::new(quantity, samples, Some(file.to_string())).map_err(|source| {
-        TraceCsvError::Data {
-            file: file.to_string(),
-            source,
-        }
-    })
+    TraceData::new(quantity, samples, Some(file.to_string()))
+        .map_err(|e| TraceCsvError::of_data(file, &e))
+}
+
+/// Reads a trace from the file at `path` ([`parse_trace_csv`]).
+pub fn read_trace_csv(path: &Path) -> Result<TraceData, TraceCsvError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| TraceCsvError {
+        file: file.clone(),
+        line: 0,
+        message: e.to_string(),
+    })?;
+    parse_trace_csv(&text, &file)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    const FORCE: &str = "# synthetic\nt (ms), F (kN)\n0, 0\n0.01, 0.2\n0.02, 0.4\n0.03, 0\n";
+    const FORCE: &str =
+        "# synthetic\nt (ms), F (kN)\n0, 0\n0.01, 0.2  # rising\n0.02, 0.4\n0.03, 0\n";
 
     #[test]
     fn units_in_the_header_convert_to_si() {
@@ -238,36 +253,32 @@ mod tests {
         let err = |text: &str| parse_trace_csv(text, "d.csv").unwrap_err().to_string();
         assert_eq!(
             err("time (s), v\n0,1\n"),
-            "d.csv: line 1: no force or displacement column in `time (s), v`: name one F (force) or x (displacement), e.g. `F (N)`"
+            "d.csv:1: no force or displacement column in `time (s), v`: name one F (force) or x (displacement), e.g. `F (N)`"
         );
-        assert!(err("F (N)\n1\n").starts_with("d.csv: line 1: no time column"));
+        assert!(err("F (N)\n1\n").starts_with("d.csv:1: no time column"));
         assert!(
             err("t (fortnights), F\n")
-                .starts_with("d.csv: line 1: column 't (fortnights)': unknown unit")
+                .starts_with("d.csv:1: column 't (fortnights)': unknown unit")
         );
         assert_eq!(
             err("t,F\n0,0\n1,2,3\n"),
-            "d.csv: line 3: 3 fields where the header has 2"
+            "d.csv:3: 3 fields where the header has 2"
         );
-        assert_eq!(
-            err("t,F\n0,0\n1,abc\n"),
-            "d.csv: line 3: F 'abc' is not a number"
-        );
+        assert_eq!(err("t,F\n0,0\n1,abc\n"), "d.csv:3: F 'abc' is not a number");
         assert_eq!(
             err("t,F\n0,0\n1,NaN\n2,1\n"),
-            "d.csv: line 3: F is NaN, not a finite number"
+            "d.csv:3: F is NaN, not a finite number"
         );
         assert!(
-            err("t,F\n0,0\n# gap\n2,1\n1,1\n")
-                .starts_with("d.csv: line 5: t = 1e0 s does not increase")
+            err("t,F\n0,0\n# gap\n2,1\n1,1\n").starts_with("d.csv:5: t = 1e0 s does not increase")
         );
         assert!(err("t,F\n0,0\n1,0\n2,-0.1\n").starts_with("d.csv: no contact in the trace"));
-        assert!(err("").starts_with("d.csv: line 1: no header"));
+        assert!(err("").starts_with("d.csv: no header"));
         assert!(
             parse_trace_csv_as("t,F\n0,0\n1,1\n2,0\n", "d.csv", TraceQuantity::Displacement)
                 .unwrap_err()
                 .to_string()
-                .starts_with("d.csv: line 1: no displacement column")
+                .starts_with("d.csv:1: no displacement column")
         );
     }
 }

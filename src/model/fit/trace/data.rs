@@ -110,6 +110,20 @@ pub enum TraceDataError {
     },
 }
 
+impl TraceDataError {
+    /// The line the error is about, 0 when it concerns the whole trace.
+    pub fn line(&self) -> usize {
+        match self {
+            TraceDataError::NotFinite { line, .. } | TraceDataError::NotMonotone { line, .. } => {
+                *line
+            }
+            TraceDataError::NoContact { .. }
+            | TraceDataError::TooFewPoints { .. }
+            | TraceDataError::TooFewForLaw { .. } => 0,
+        }
+    }
+}
+
 /// A validated trace: at least [`TraceData::MIN_POINTS`] samples, finite, times strictly
 /// increasing, and some contact (a positive value).
 #[derive(Debug, Clone, PartialEq, Serialize)]
