@@ -483,3 +483,54 @@ fn the_forward_model_is_the_damped_oscillator_on_kelvin_voigt() {
     }
     assert!(ts.iter().any(|t| t - t0 > end) && ts[0] < t0);
 }
+
+/// Kelvin–Voigt's force jumps to c·v₀ at first touch: t₀'s interval is widened by the sampling
+/// (a uniform quantisation error, Δ/√12, added in quadrature), not the linearisation's step
+/// function; a law that jumps nowhere keeps its linearised interval. Thornton on a sphere fixes
+/// n = 3/2 and refuses it freed.
+#[test]
+fn t0_of_a_force_that_jumps_is_located_to_the_sampling() {
+    let ts = times(60);
+    let spacing = ts[1] - ts[0];
+    for (id, jumps) in [("kelvin-voigt", true), ("hunt-crossley", false)] {
+        let model: ForceModel = id.parse().unwrap();
+        let base = scene(0.6);
+        let p = truth(model, 0.6, 20e-6);
+        let data = trace(model, &p, TraceQuantity::Force, &ts, &base);
+        let report = fit_trace_params(&base, &data, &[model], &TraceFitOptions::default()).unwrap();
+        let t0 = report.fits[0].params.last().unwrap();
+        assert_eq!(t0.spec.key, "t0");
+        let floor = spacing / 12f64.sqrt();
+        assert_eq!(
+            t0.std_error >= floor,
+            jumps,
+            "{id}: {t0:?}, Δ/√12 = {floor:e}"
+        );
+        if jumps {
+            assert!(t0.std_error < 1.001 * floor, "{t0:?}");
+            assert!(
+                t0.ci.0 < 20e-6 - spacing / 4.0 && 20e-6 + spacing / 4.0 < t0.ci.1,
+                "{t0:?}"
+            );
+        }
+    }
+    let thornton = ForceModel::with_id("thornton");
+    let base = scene(0.6);
+    let data = trace(
+        ForceModel::HuntCrossley,
+        &truth(ForceModel::HuntCrossley, 0.6, 20e-6),
+        TraceQuantity::Force,
+        &ts,
+        &base,
+    );
+    let opts = TraceFitOptions {
+        free: "n".parse().unwrap(),
+        ..TraceFitOptions::default()
+    };
+    let err = fit_trace_params(&base, &data, &[thornton], &opts).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("no law could be fitted: thornton: thornton cannot be fitted: n cannot be freed: Thornton (1997)"),
+        "{err}"
+    );
+}

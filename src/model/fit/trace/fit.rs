@@ -11,7 +11,7 @@ use crate::model::impact::{ImpactSolution, SolveOptions};
 use crate::model::scene::Scene;
 
 use super::data::{TraceData, TraceDataError, TraceQuantity};
-use super::forward::{TraceParams, sample_trace, solve_trace_impact};
+use super::forward::{TraceParams, force_at_touch, sample_trace, solve_trace_impact};
 use super::layout::Layout;
 use super::options::{FreeParams, TRACE_FLOOR, TraceFitOptions};
 use super::rank::{rank, verdict};
@@ -221,7 +221,7 @@ fn fit_one(
     };
     let result = least_squares(&problem, &opts.fit.lsq)
         .map_err(|source| FitError::Lsq { candidate, source })?;
-    Ok(law_fit(
+    let mut fit = law_fit(
         candidate,
         &specs,
         &result,
@@ -231,7 +231,34 @@ fn fit_one(
         },
         t_scale,
         last,
-    ))
+    );
+    let p = layout.params(base, &fit.theta());
+    if data.quantity == TraceQuantity::Force
+        && force_at_touch(base, model, &p).is_ok_and(|f| f.abs() > 0.0)
+    {
+        quantise_t0(&mut fit.params[last], &times, result.quantile);
+    }
+    Ok(fit)
+}
+
+/// Widens t₀'s interval by the sampling where the force jumps at first touch: the residuals are
+/// then a step function of t₀ wherever no sample crosses the jump, so that the linearised
+/// interval says nothing of where between its two samples the jump lies. The jump's time is
+/// taken as uniform over that spacing Δ, variance Δ²/12 (the quantisation error), added to the
+/// linearised variance; the interval is t₀ ± q·se with the engine's quantile q.
+fn quantise_t0(t0: &mut FittedParam, times: &[f64], quantile: f64) {
+    let i = times
+        .partition_point(|&t| t < t0.value)
+        .clamp(1, times.len() - 1);
+    let spacing = times[i] - times[i - 1];
+    let linear = if t0.std_error.is_finite() {
+        t0.std_error
+    } else {
+        0.0
+    };
+    let se = linear.hypot(spacing / 12f64.sqrt());
+    t0.std_error = se;
+    t0.ci = (t0.value - quantile * se, t0.value + quantile * se);
 }
 
 /// The engine's result as a [`LawFit`] in SI: `to_si(j, x)` maps parameter j's value back.

@@ -4,7 +4,8 @@
 
 use serde::Serialize;
 
-use crate::model::force::{ForceModel, ImpactParams};
+use crate::model::error::ModelError;
+use crate::model::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams, Phase};
 use crate::model::impact::{ImpactError, ImpactSolution, SolveOptions, solve_law};
 use crate::model::power_law::PowerLaw;
 
@@ -45,16 +46,30 @@ pub fn solve_trace_impact(
     p: &TraceParams,
     opts: &SolveOptions,
 ) -> Result<ImpactSolution, ImpactError> {
+    solve_law(&law_of(base, model, p)?, opts)
+}
+
+/// The force the law of `p` exerts at first touch (x = 0, ẋ = v₀), N: nonzero where it jumps
+/// there (Kelvin–Voigt's c·v₀), which a sampled trace can place only between two samples.
+pub fn force_at_touch(
+    base: &ImpactParams,
+    model: ForceModel,
+    p: &TraceParams,
+) -> Result<f64, ImpactError> {
+    Ok(law_of(base, model, p)?.phase_force(0.0, p.v0, Phase::Loading))
+}
+
+/// The law of `p` on the scene `base` (mass, contact, e and x_pl kept).
+fn law_of(base: &ImpactParams, model: ForceModel, p: &TraceParams) -> Result<AnyLaw, ModelError> {
     let params = ImpactParams {
         law: PowerLaw::new(p.k, p.n)?,
         v0: p.v0,
         ..*base
     };
-    let law = match p.damping {
-        Some(d) => model.law_with_damping(&params, d)?,
-        None => model.law(&params)?,
-    };
-    solve_law(&law, opts)
+    match p.damping {
+        Some(d) => model.law_with_damping(&params, d),
+        None => model.law(&params),
+    }
 }
 
 /// `quantity` of the solved impact of `p` at each of `times` (s, recording clock), contact

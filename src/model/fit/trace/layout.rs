@@ -1,5 +1,6 @@
 //! The parameters of one law's trace fit, in θ order, and θ as the forward model's inputs.
 
+use crate::model::PowerLaw;
 use crate::model::fit::Candidate;
 use crate::model::fit::lsq::ParamSpec;
 use crate::model::force::table::Family;
@@ -58,15 +59,50 @@ impl Layout {
     /// Why these free parameters cannot all be determined by any trace of this law, if so:
     /// Kelvin–Voigt's F = K·x + c·ẋ sees k and n only through its one spring K = m·(π/t_c)²
     /// (docs/physics.md §6.3), so that freeing both leaves a line of (k, n) with the same trace.
+    ///
+    /// A law that fixes k or n by its bodies (Thornton's on a point contact is Hertz's sphere,
+    /// n = 3/2, docs/physics.md §6.6) refuses them freed: it is built here with each freed one
+    /// moved by a millionth, and its refusal is the reason.
     pub(super) fn unidentifiable(&self, base: &ImpactParams) -> Option<String> {
         let linear = matches!(
             self.model.law(base),
             Ok(AnyLaw::KelvinVoigt(_) | AnyLaw::KelvinVoigtTension(_))
         );
-        (linear && self.free.k && self.free.n).then(|| {
-            "its force K·x + c·ẋ depends on k and n only through K = m·(π/t_c)²: free k or n, not both"
-                .to_string()
-        })
+        if linear && self.free.k && self.free.n {
+            return Some(
+                "its force K·x + c·ẋ depends on k and n only through K = m·(π/t_c)²: free k or n, not both"
+                    .to_string(),
+            );
+        }
+        for (on, key, moved) in [
+            (
+                self.free.k,
+                "k",
+                PowerLaw {
+                    k: base.law.k * (1.0 + 1e-6),
+                    ..base.law
+                },
+            ),
+            (
+                self.free.n,
+                "n",
+                PowerLaw {
+                    n: base.law.n * (1.0 + 1e-6),
+                    ..base.law
+                },
+            ),
+        ] {
+            if let (true, Err(e)) = (
+                on,
+                self.model.law(&ImpactParams {
+                    law: moved,
+                    ..*base
+                }),
+            ) {
+                return Some(format!("{key} cannot be freed: {e}"));
+            }
+        }
+        None
     }
 
     pub(super) fn len(&self) -> usize {

@@ -23,5 +23,7 @@ mod start;
 
 pub use data::{TraceData, TraceDataError, TraceQuantity, TraceSample};
 pub use fit::{fit_trace, fit_trace_params, fitted_trace_params, predict_trace};
-pub use forward::{Outside, TraceParams, sample_trace, solve_trace_impact, trace_forward};
+pub use forward::{
+    Outside, TraceParams, force_at_touch, sample_trace, solve_trace_impact, trace_forward,
+};
 pub use options::{FreeParams, TRACE_FLOOR, TraceFitOptions};
