@@ -147,7 +147,8 @@ pub struct LsqOptions {
     pub xtol: f64,
     /// Converged when |Jᵀr|∞ ≤ gtol·(RSS + tiny), the gradient relative to the misfit.
     pub gtol: f64,
-    /// Converged when an accepted step lowers RSS by less than ftol relative.
+    /// Converged when an accepted step lowers RSS by less than ftol relative, or a rejected one
+    /// was predicted to lower it by less.
     pub ftol: f64,
     /// Jacobian estimate.
     pub difference: Difference,
@@ -161,9 +162,9 @@ impl Default for LsqOptions {
     fn default() -> Self {
         LsqOptions {
             max_iterations: 200,
-            xtol: 1e-12,
+            xtol: 1e-10,
             gtol: 1e-14,
-            ftol: 1e-15,
+            ftol: 1e-12,
             difference: Difference::Central,
             step: 1e-6,
             level: 0.95,
@@ -417,6 +418,12 @@ pub fn least_squares(problem: &LsqProblem, opts: &LsqOptions) -> Result<LsqResul
                 }
                 if small_step {
                     break Convergence::Step;
+                }
+                // The linear model promised next to nothing: what is left is the residual
+                // function's own rounding (a solver's tolerance), not a minimum to approach.
+                let predicted = -(2.0 * step.dot(&jtr) + step.dot(&(&jtj * &step)));
+                if predicted <= opts.ftol * rss {
+                    break Convergence::Residual;
                 }
                 lambda *= 10.0;
             }

@@ -20,6 +20,8 @@
 //!   and a structured [`Verdict`] (worded by `crate::format::fit_verdict`).
 //!   [`LawFit::predict`] evaluates a fitted law at any v.
 //! - The engine: [`lsq::least_squares`] on an [`lsq::LsqProblem`], shared with trace fits.
+//! - Traces: [`trace::fit_trace`] fits laws to one force or displacement trace through the same
+//!   engine and report (docs/fitting.md, Traces).
 //!
 //! ```
 //! use hertz_tui::model::fit::{Candidate, FitOptions, RestitutionData, fit_restitution, restitution_model};
@@ -45,8 +47,10 @@
 pub mod candidate;
 pub mod criterion;
 pub mod data;
+pub mod group;
 pub mod lsq;
 pub mod restitution;
+pub mod trace;
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -116,6 +120,9 @@ pub enum FitError {
     /// No candidate could be fitted; each one's reason.
     #[error("no law could be fitted: {}", .0.iter().map(|(c, m)| format!("{c}: {m}")).collect::<Vec<_>>().join("; "))]
     NothingFitted(Vec<(Candidate, String)>),
+    /// The trace was refused (too few samples for a law's parameters; see [`trace`]).
+    #[error(transparent)]
+    Trace(#[from] trace::TraceDataError),
     /// No candidates were given.
     #[error("no candidate laws to fit")]
     NoCandidates,
@@ -252,49 +259,93 @@ pub fn fit_restitution_params(
     candidates: &[Candidate],
     opts: &FitOptions,
 ) -> Result<FitReport, FitError> {
-    if candidates.is_empty() {
-        return Err(FitError::NoCandidates);
-    }
-    for p in &data.points {
-        p.validate()?;
-    }
-    let fit = |c: &Candidate| (*c, fit_one(params, data, *c, opts));
-    let results: Vec<(Candidate, Result<LawFit, FitError>)> = if opts.parallel {
-        candidates.par_iter().map(fit).collect()
-    } else {
-        candidates.iter().map(fit).collect()
-    };
-    let mut fits = Vec::new();
-    let mut failed = Vec::new();
-    for (c, r) in results {
-        match r {
-            Ok(f) => fits.push(f),
-            Err(e) => failed.push((c, e.to_string())),
-        }
-    }
-    if fits.is_empty() {
-        return Err(FitError::NothingFitted(failed));
-    }
-    rank(&mut fits, opts.criterion, candidates);
-    let verdict = verdict(params, data, &fits, opts.criterion);
-    let indistinguishable = verdict.groups.iter().map(|g| g.members.clone()).collect();
-    Ok(FitReport {
-        fits,
-        failed,
-        criterion: opts.criterion,
-        indistinguishable,
-        verdict,
-        weighted: data.weighted(),
-    })
+    Fitter::new(params, candidates)?.fit(data, opts)
 }
 
-/// Fits one candidate.
+/// The candidates' forward models on one scene, kept between fits: a refit (new data, an edit)
+/// reuses their tables of g(ψ) instead of solving them again.
+#[derive(Debug, Clone)]
+pub struct Fitter {
+    params: ImpactParams,
+    forwards: Vec<(Candidate, Result<Forward, FitError>)>,
+}
+
+impl Fitter {
+    /// The forward models of `candidates` on the scene's impact `params`; a candidate that cannot
+    /// be modelled is reported as failed by every fit.
+    pub fn new(params: &ImpactParams, candidates: &[Candidate]) -> Result<Self, FitError> {
+        if candidates.is_empty() {
+            return Err(FitError::NoCandidates);
+        }
+        params.validate()?;
+        Ok(Fitter {
+            params: *params,
+            forwards: candidates
+                .iter()
+                .map(|&c| (c, Forward::new(params, c)))
+                .collect(),
+        })
+    }
+
+    /// Fits every candidate to `data` and ranks them.
+    pub fn fit(&self, data: &RestitutionData, opts: &FitOptions) -> Result<FitReport, FitError> {
+        for p in &data.points {
+            p.validate()?;
+        }
+        let fit = |(c, f): &(Candidate, Result<Forward, FitError>)| {
+            (*c, f.clone().and_then(|f| fit_one(&f, data, opts)))
+        };
+        let results: Vec<(Candidate, Result<LawFit, FitError>)> = if opts.parallel {
+            self.forwards.par_iter().map(fit).collect()
+        } else {
+            self.forwards.iter().map(fit).collect()
+        };
+        let mut fits = Vec::new();
+        let mut failed = Vec::new();
+        for (c, r) in results {
+            match r {
+                Ok(f) => fits.push(f),
+                Err(e) => failed.push((c, e.to_string())),
+            }
+        }
+        if fits.is_empty() {
+            return Err(FitError::NothingFitted(failed));
+        }
+        let order: Vec<Candidate> = self.forwards.iter().map(|(c, _)| *c).collect();
+        rank(&mut fits, opts.criterion, &order);
+        let verdict = verdict(self, data, &fits, opts.criterion);
+        let indistinguishable = verdict.groups.iter().map(|g| g.members.clone()).collect();
+        Ok(FitReport {
+            fits,
+            failed,
+            criterion: opts.criterion,
+            indistinguishable,
+            verdict,
+            weighted: data.weighted(),
+        })
+    }
+
+    /// The forward model of `candidate`, if it is one of this fitter's.
+    pub fn forward(&self, candidate: Candidate) -> Option<&Forward> {
+        self.forwards
+            .iter()
+            .find(|(c, _)| *c == candidate)
+            .and_then(|(_, f)| f.as_ref().ok())
+    }
+
+    /// The scene's impact parameters.
+    pub fn params(&self) -> &ImpactParams {
+        &self.params
+    }
+}
+
+/// Fits one candidate through its forward model.
 pub fn fit_one(
-    params: &ImpactParams,
+    forward: &Forward,
     data: &RestitutionData,
-    candidate: Candidate,
     opts: &FitOptions,
 ) -> Result<LawFit, FitError> {
+    let candidate = forward.candidate();
     let specs = candidate.params().map_err(|reason| FitError::Unfittable {
         candidate,
         reason: reason.to_string(),
@@ -308,7 +359,6 @@ pub fn fit_one(
         }
         .into());
     }
-    let forward = Forward::new(params, candidate)?;
     // Sorted by v so that repeats are solved once; `order` maps back to the data's order.
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| data.points[a].v.total_cmp(&data.points[b].v));
@@ -328,7 +378,7 @@ pub fn fit_one(
             .map(|((m, e), w)| (m - e) * w)
             .collect())
     };
-    let start = start(&forward, &vs, &es)?;
+    let start = start(forward, &vs, &es)?;
     let problem = LsqProblem {
         params: &specs,
         start,
@@ -414,7 +464,7 @@ const GAP_GRID: usize = 48;
 /// law joins the group of the best-ranked law still ungrouped when their Δ < 2, or when their
 /// curves stay within the noise of each other over the data's velocity range.
 fn verdict(
-    params: &ImpactParams,
+    fitter: &Fitter,
     data: &RestitutionData,
     fits: &[LawFit],
     criterion: Criterion,
@@ -440,9 +490,9 @@ fn verdict(
     let curves: Vec<Option<Vec<f64>>> = fits
         .par_iter()
         .map(|f| {
-            Forward::new(params, f.candidate)
-                .and_then(|fw| fw.curve(&f.theta(), &grid))
-                .ok()
+            fitter
+                .forward(f.candidate)
+                .and_then(|fw| fw.curve(&f.theta(), &grid).ok())
         })
         .collect();
     let gap = |i: usize, j: usize| -> f64 {

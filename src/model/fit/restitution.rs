@@ -8,6 +8,8 @@
 //! dry friction), with Adams' depth d held at the scene's value as a model constant.
 #![warn(missing_docs)]
 
+use rayon::prelude::*;
+
 use crate::model::ModelError;
 use crate::model::calibrate::{calibrate_with, hunt_crossley_chi, hunt_crossley_restitution};
 use crate::model::force::adams_impact::AdamsImpact;
@@ -18,6 +20,7 @@ use crate::model::impact::{ImpactError, MethodChoice, SolveOptions, solve_law};
 
 use super::FitError;
 use super::candidate::Candidate;
+use super::group::GroupTable;
 
 /// The solver tolerance of the forward model: its e is within about 1e-10 of the truth, well
 /// inside any measurement and below the 1e-9 floor the criteria put on residuals.
@@ -37,6 +40,12 @@ enum Kind {
     Thornton,
     /// e independent of v (§6.2): one solve at the scene's v₀ per θ.
     VelocityFree,
+    /// F = k·xⁿ⁻¹·(x + A·ẋ) with A = θ/`per_unit`: e = g(ψ), ψ = A·v/x_e(v), tabulated
+    /// ([`GroupTable`]).
+    Group {
+        /// θ per unit of A: 1 for Kuwabara–Kono's A, k for the proposed model's b.
+        per_unit: f64,
+    },
     /// One solve per v; Adams' depth d fixed at `depth`, m.
     Solver {
         /// Adams IMPACT's d, held at the scene's value.
@@ -44,13 +53,15 @@ enum Kind {
     },
 }
 
-/// The forward model of one candidate on one scene, built once per fit: e at (θ, v).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The forward model of one candidate on one scene, built once per fit: e at (θ, v). Clones
+/// share its table of g(ψ) (Kuwabara–Kono, the proposed model).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Forward {
     candidate: Candidate,
     params: ImpactParams,
     kind: Kind,
     opts: SolveOptions,
+    table: GroupTable,
 }
 
 impl Forward {
@@ -74,6 +85,15 @@ impl Forward {
                     Kind::Thornton
                 } else if model.name().starts_with("hertz-viscous") {
                     Kind::VelocityFree
+                } else if model == ForceModel::Proposed || model.name().starts_with("kuwabara-kono")
+                {
+                    Kind::Group {
+                        per_unit: if model == ForceModel::Proposed {
+                            params.law.k
+                        } else {
+                            1.0
+                        },
+                    }
                 } else if model == ADAMS {
                     Kind::Solver {
                         depth: Some(AdamsImpact::default_depth(params)),
@@ -92,6 +112,7 @@ impl Forward {
                 rtol: SOLVE_RTOL,
                 ..SolveOptions::default()
             },
+            table: GroupTable::default(),
         })
     }
 
@@ -143,27 +164,81 @@ impl Forward {
             Kind::HuntCrossley => Ok(hunt_crossley_restitution(d * v)),
             Kind::Thornton => Ok(Thornton::restitution_of(&self.at(v), d)),
             Kind::VelocityFree => self.solve(self.params.v0, d),
+            Kind::Group { per_unit } => {
+                let psi = d / per_unit * v / self.x_e(v);
+                let solve = |psi: f64| self.e_of_group(psi, per_unit).ok();
+                match self.table.value(psi, &solve) {
+                    Some(e) => Ok(e),
+                    None => self.solve(v, d),
+                }
+            }
             Kind::Solver { .. } => self.solve(v, d),
         }
     }
 
-    /// e at every velocity of `vs` with `theta`; a velocity repeated in `vs` is solved once.
+    /// e at (θ, v) by the solver itself, never from the table: the reference the table is
+    /// tested against.
+    pub fn e_solved(&self, theta: &[f64], v: f64) -> Result<f64, FitError> {
+        match (self.kind, theta.first()) {
+            (Kind::Group { .. }, Some(&d)) => self.solve(v, d),
+            _ => self.e(theta, v),
+        }
+    }
+
+    /// The elastic x_max at v (eq 5), m.
+    fn x_e(&self, v: f64) -> f64 {
+        self.params.law.max_approach(self.params.mass, v)
+    }
+
+    /// g(ψ) solved at the scene's v₀: A = ψ·x_e(v₀)/v₀.
+    fn e_of_group(&self, psi: f64, per_unit: f64) -> Result<f64, FitError> {
+        let v0 = self.params.v0;
+        let e = self.solve(v0, psi * self.x_e(v0) / v0 * per_unit)?;
+        if e > 0.0 {
+            Ok(e)
+        } else {
+            Err(FitError::Solve {
+                candidate: self.candidate,
+                v: v0,
+                value: psi,
+                message: "no rebound".into(),
+            })
+        }
+    }
+
+    /// Panels of the g(ψ) table built so far (0 for a law without one).
+    pub fn table_panels(&self) -> usize {
+        self.table.panels()
+    }
+
+    /// e at every velocity of `vs` with `theta`; a velocity repeated in `vs` is solved once, and
+    /// a law that needs one solve per velocity solves them in parallel (rayon).
     pub fn curve(&self, theta: &[f64], vs: &[f64]) -> Result<Vec<f64>, FitError> {
         if self.kind == Kind::VelocityFree {
             let e = self.e(theta, self.params.v0)?;
             return Ok(vec![e; vs.len()]);
         }
-        let mut out = Vec::with_capacity(vs.len());
-        let mut last: Option<(f64, f64)> = None;
-        for &v in vs {
-            let e = match last {
-                Some((lv, le)) if lv == v => le,
-                _ => self.e(theta, v)?,
-            };
-            last = Some((v, e));
-            out.push(e);
-        }
-        Ok(out)
+        let mut distinct: Vec<f64> = vs.to_vec();
+        distinct.sort_by(f64::total_cmp);
+        distinct.dedup();
+        let es: Vec<f64> = if matches!(self.kind, Kind::Solver { .. }) && distinct.len() >= 8 {
+            distinct
+                .par_iter()
+                .map(|&v| self.e(theta, v))
+                .collect::<Result<_, _>>()?
+        } else {
+            distinct
+                .iter()
+                .map(|&v| self.e(theta, v))
+                .collect::<Result<_, _>>()?
+        };
+        Ok(vs
+            .iter()
+            .map(|v| {
+                let i = distinct.partition_point(|d| d < v);
+                es[i]
+            })
+            .collect())
     }
 
     /// One impact solve: its e_out; a bilateral law damped beyond critical never separates, a
