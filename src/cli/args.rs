@@ -90,6 +90,9 @@ pub struct FitArgs {
     /// Output format: table (ranking, verdict, residuals), json, or csv (the ranking).
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
+    /// Table: the best law's residual at every point (default: their RMS and the largest).
+    #[arg(long)]
+    pub residuals: bool,
     /// Write the scene with the best fitted law (or the one --law names) as its [fit] to OUT.
     #[arg(long, value_name = "OUT")]
     pub write_scene: Option<std::path::PathBuf>,

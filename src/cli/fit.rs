@@ -222,7 +222,7 @@ pub fn run(args: &FitArgs, registry: &Registry) -> Result<String, CliError> {
         wrote,
     };
     match args.format {
-        Format::Table => Ok(render_table(&output, &data, &fitted)),
+        Format::Table => Ok(render_table(&output, &data, &fitted, args.residuals)),
         Format::Json => super::json(&output),
         Format::Csv => Ok(render_csv(&output.report)),
     }
@@ -380,7 +380,12 @@ fn support(delta: f64) -> &'static str {
     }
 }
 
-fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> String {
+fn render_table(
+    output: &FitOutput,
+    data: &RestitutionData,
+    fitted: &Scene,
+    every_residual: bool,
+) -> String {
     let report = &output.report;
     let mut out = format!(
         "Fit of e(v0) to {}: {} point{}, v0 = {} to {} m/s{}; k, n, m from {}\n",
@@ -399,10 +404,52 @@ fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> S
     out.push_str(&ranking(report));
     out.push_str(&format!("{}\n", output.verdict_text));
     let best = &report.fits[0];
-    out.push_str(&format!(
-        "Residuals of {} (e law − e measured):\n",
-        best.candidate
-    ));
+    if !every_residual {
+        out.push_str(&residual_summary(best, data));
+    } else {
+        out.push_str(&format!(
+            "Residuals of {} (e law − e measured):\n",
+            best.candidate
+        ));
+        out.push_str(&residual_rows(best, data));
+    }
+    out.push_str(&scene_line(fitted));
+    if !output.engines.is_empty() {
+        out.push_str(&render_engines(&output.engines));
+    }
+    if let Some(path) = &output.wrote {
+        out.push_str(&format!("wrote {path}\n"));
+    }
+    out
+}
+
+/// `Residuals of … (e law − e measured): RMS …, largest … at v0 = … m/s`.
+fn residual_summary(best: &LawFit, data: &RestitutionData) -> String {
+    let n = best.residuals.len().max(1) as f64;
+    let rms = (best.residuals.iter().map(|r| r * r).sum::<f64>() / n).sqrt();
+    let largest = best
+        .residuals
+        .iter()
+        .zip(&data.points)
+        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+    let mut out = format!(
+        "Residuals of {} (e law − e measured): RMS {}",
+        best.candidate,
+        num(rms)
+    );
+    if let Some((r, p)) = largest {
+        out.push_str(&format!(
+            ", largest {} at v0 = {} m/s (each: --residuals)",
+            num(*r),
+            given(p.v)
+        ));
+    }
+    out.push('\n');
+    out
+}
+
+/// The best law's residual at every point.
+fn residual_rows(best: &LawFit, data: &RestitutionData) -> String {
     let mut rows = vec![
         ["v0 (m/s)", "e measured", "sd", "e law", "residual"]
             .map(String::from)
@@ -417,15 +464,7 @@ fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> S
             num(*r),
         ]);
     }
-    out.push_str(&columns(&rows, "  "));
-    out.push_str(&scene_line(fitted));
-    if !output.engines.is_empty() {
-        out.push_str(&render_engines(&output.engines));
-    }
-    if let Some(path) = &output.wrote {
-        out.push_str(&format!("wrote {path}\n"));
-    }
-    out
+    columns(&rows, "  ")
 }
 
 /// The ranking of a trace fit, the verdict and what the scene would carry.
