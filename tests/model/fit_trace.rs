@@ -3,6 +3,8 @@
 //! their law first; with noise the confidence intervals cover the truth at their nominal rate
 //! over seeded draws; bad traces are refused naming the file.
 
+use rayon::prelude::*;
+
 use hertz_tui::format::trace_csv::parse_trace_csv;
 use hertz_tui::model::fit::trace::{
     FreeParams, TraceData, TraceFitOptions, TraceParams, TraceQuantity, fit_trace_params,
@@ -247,29 +249,36 @@ fn confidence_intervals_cover_the_truth_at_their_nominal_rate() {
     .unwrap();
     let sigma = 0.01 * clean.iter().copied().fold(0.0, f64::max);
     let a_true = p.damping.unwrap() / p.v0;
+    // The draws in seed order, then fitted in parallel (the same counts on any thread count).
     let mut normal = Normal(23);
-    let mut covered = [0usize; 2];
-    for draw in 0..DRAWS {
-        let noisy = clean.iter().map(|f| f + sigma * normal.next());
-        let data =
-            TraceData::from_pairs(TraceQuantity::Force, ts.iter().copied().zip(noisy)).unwrap();
-        let opts = TraceFitOptions {
-            fit: hertz_tui::model::fit::FitOptions {
-                parallel: false,
-                ..opts.fit
-            },
-            ..opts
-        };
-        let report = fit_trace_params(&base, &data, &[model], &opts)
-            .unwrap_or_else(|e| panic!("draw {draw}: {e}"));
-        let fit = &report.fits[0];
-        for (i, (param, truth)) in fit.params.iter().zip([a_true, t0]).enumerate() {
-            assert_eq!(param.level, 0.95);
-            if param.ci.0 <= truth && truth <= param.ci.1 {
-                covered[i] += 1;
-            }
-        }
-    }
+    let draws: Vec<Vec<f64>> = (0..DRAWS)
+        .map(|_| clean.iter().map(|f| f + sigma * normal.next()).collect())
+        .collect();
+    let opts = TraceFitOptions {
+        fit: hertz_tui::model::fit::FitOptions {
+            parallel: false,
+            ..opts.fit
+        },
+        ..opts
+    };
+    let hits: Vec<[bool; 2]> = draws
+        .par_iter()
+        .enumerate()
+        .map(|(draw, noisy)| {
+            let data = TraceData::from_pairs(
+                TraceQuantity::Force,
+                ts.iter().copied().zip(noisy.iter().copied()),
+            )
+            .unwrap();
+            let report = fit_trace_params(&base, &data, &[model], &opts)
+                .unwrap_or_else(|e| panic!("draw {draw}: {e}"));
+            let params = &report.fits[0].params;
+            assert!(params.iter().all(|p| p.level == 0.95));
+            let truths = [a_true, t0];
+            [0, 1].map(|i| params[i].ci.0 <= truths[i] && truths[i] <= params[i].ci.1)
+        })
+        .collect();
+    let covered = [0, 1].map(|i| hits.iter().filter(|h| h[i]).count());
     for (i, name) in ["a", "t0"].iter().enumerate() {
         assert!(
             (180..=198).contains(&covered[i]),
