@@ -318,6 +318,19 @@ fn too_short_traces_and_unknown_parameters_are_refused_by_name() {
         fit_trace_params(&scene(0.5), &data, &[], &TraceFitOptions::default()),
         Err(FitError::NoCandidates)
     ));
+    // A trace built by hand past the checks (public fields) is checked again, never indexed.
+    let emptied = TraceData {
+        samples: Vec::new(),
+        ..data
+    };
+    let err = fit_trace_params(
+        &scene(0.5),
+        &emptied,
+        &[ForceModel::HuntCrossley],
+        &TraceFitOptions::default(),
+    )
+    .unwrap_err();
+    assert_eq!(err.to_string(), "0 samples: fewer than the 3 a trace needs");
 }
 
 /// Every law of the table fits a Hunt–Crossley trace or says why (none fails here); the nine
