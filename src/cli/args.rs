@@ -19,7 +19,8 @@ pub struct Cli {
     /// [default: the config file's `scene`, else fig5-steel-sphere-r10-plate].
     #[arg(long, value_name = "NAME|PATH")]
     pub scene: Option<String>,
-    /// Override a key of the explorer's scene by its dotted path, e.g. impact.v0=0.5 (repeatable).
+    /// Override a key of the explorer's scene by its dotted path, e.g. impact.v0=0.5,
+    /// system.gap=0.5mm (repeatable; a number in SI or with its unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
     /// How the explorer draws chart points; dot or block for fonts without braille.
@@ -178,7 +179,8 @@ pub struct PlotArgs {
     /// A preset name or scene file; repeat it with --chart sweep for one line per scene.
     #[arg(long, value_name = "NAME|PATH", required = true)]
     pub scene: Vec<String>,
-    /// Override a key of every scene by its dotted path (repeatable).
+    /// Override a key of every scene by its dotted path (repeatable; a number in SI or with its
+    /// unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
     /// The chart.
@@ -237,8 +239,9 @@ pub struct SceneSelection {
     /// A preset name (see `hertz-tui list`) or the path of a scene file.
     #[arg(long, value_name = "NAME|PATH")]
     pub scene: String,
-    /// Override a scene key by its dotted path (repeatable): impact.v0=0.5, body1.radius=0.02,
-    /// body1.shape=plane, body1.material=aluminium-alloy, body1.material.youngs_modulus=7e10.
+    /// Override a scene key by its dotted path (repeatable): impact.v0=0.5, body1.radius=12mm,
+    /// body1.shape=plane, body1.material=aluminium-alloy, body1.material.youngs_modulus=70GPa,
+    /// system.frequency=20Hz (a number in SI or with its unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
 }

@@ -335,6 +335,81 @@ fn bad_input_is_named_by_its_key_and_prints_nothing_else() {
     assert!(e.contains("max_impacts = 50"), "{e}");
 }
 
+#[test]
+fn set_takes_units_and_a_unit_of_another_quantity_is_named_by_its_key() {
+    // The same runs, byte for byte, whether the keys are given in SI or in units.
+    let si = ok(&[
+        "system",
+        "--scene",
+        "impact-oscillator",
+        "--recorded",
+        "3",
+        "--format",
+        "json",
+        "--set",
+        "system.gap=0.0005",
+        "--set",
+        "system.stiffness=10000",
+        "--set",
+        "system.frequency=20",
+        "--set",
+        "system.forcing_amplitude=0.5",
+    ]);
+    let units = ok(&[
+        "system",
+        "--scene",
+        "impact-oscillator",
+        "--recorded",
+        "3",
+        "--format",
+        "json",
+        "--set",
+        "system.gap=0.5 mm",
+        "--set",
+        "system.stiffness=1e4 N/m",
+        "--set",
+        "system.frequency=20Hz",
+        "--set",
+        "system.forcing_amplitude=500 mN",
+    ]);
+    assert_eq!(si, units);
+    let report: Value = serde_json::from_str(&units).unwrap();
+    assert_eq!(report["frequency"], 20.0);
+    let ball = json(&[
+        "system",
+        "--scene",
+        "bouncing-ball",
+        "--recorded",
+        "1",
+        "--format",
+        "json",
+        "--set",
+        "system.amplitude=1.2mm",
+        "--set",
+        "system.frequency=0.025 kHz",
+    ]);
+    let omega = 2.0 * std::f64::consts::PI * 25.0;
+    let gamma = ball["groups"]["gamma"].as_f64().unwrap();
+    assert!(close(gamma, 0.0012 * omega * omega / G, 1e-12), "{gamma}");
+
+    for (set, key, expected) in [
+        ("system.frequency=20 kg", "system.frequency", "expected Hz"),
+        ("system.gap=0.5 N", "system.gap", "expected m"),
+        ("system.stiffness=3 N", "system.stiffness", "expected N/m"),
+        (
+            "system.forcing_amplitude=2 mm",
+            "system.forcing_amplitude",
+            "system.forcing = \"base\"",
+        ),
+    ] {
+        let e = refused(&["system", "--scene", "impact-oscillator", "--set", set]);
+        assert!(
+            e.starts_with(&format!("error: --set {key}: ")) && e.contains(expected),
+            "{set}: {e}"
+        );
+    }
+}
+
 fn out_file(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("hertz-tui-systems-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
