@@ -9,6 +9,7 @@
 
 pub mod continuation;
 pub mod figure;
+pub mod fit;
 pub mod kind;
 pub mod layout;
 pub mod map;

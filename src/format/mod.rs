@@ -9,6 +9,7 @@ mod number;
 pub mod recommendation;
 mod shortest_exp;
 pub mod sweep_csv;
+pub mod trace_csv;
 pub mod translation;
 pub mod units;
 pub mod verdict;

@@ -34,6 +34,7 @@ pub mod recommend;
 pub mod restitution;
 pub mod scene;
 pub mod scene_file;
+pub mod scene_fit;
 pub mod scene_key;
 pub mod scene_title;
 pub mod sphere;

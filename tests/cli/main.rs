@@ -2,6 +2,8 @@
 
 mod commands;
 mod continuation;
+mod fit;
+mod fit_data;
 mod laws;
 mod maps;
 mod plot;

@@ -20,6 +20,7 @@ mod fit_errors;
 mod fit_forward;
 mod fit_recovery;
 mod fit_selection;
+mod fit_trace;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;

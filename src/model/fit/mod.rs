@@ -24,6 +24,8 @@
 //!   sd is given) fails that law, listed in [`FitReport::failed`]; every law failing is
 //!   [`FitError::NothingFitted`].
 //! - The engine: [`lsq::least_squares`] on an [`lsq::LsqProblem`], shared with trace fits.
+//! - Traces: [`trace::fit_trace`] fits laws to one force or displacement trace through the same
+//!   engine and report (docs/fitting.md, Traces).
 //!
 //! ```
 //! use hertz_tui::model::fit::{Candidate, FitOptions, RestitutionData, fit_restitution, restitution_model};
@@ -52,6 +54,7 @@ pub mod data;
 pub mod group;
 pub mod lsq;
 pub mod restitution;
+pub mod trace;
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -124,6 +127,9 @@ pub enum FitError {
     /// No candidate could be fitted; each one's reason.
     #[error("no law could be fitted: {}", .0.iter().map(|(c, m)| format!("{c}: {m}")).collect::<Vec<_>>().join("; "))]
     NothingFitted(Vec<(Candidate, String)>),
+    /// The trace was refused (too few samples for a law's parameters; see [`trace`]).
+    #[error(transparent)]
+    Trace(#[from] trace::TraceDataError),
     /// No candidates were given.
     #[error("no candidate laws to fit")]
     NoCandidates,
