@@ -143,7 +143,7 @@ pub fn compute_file(args: &MapArgs, registry: &Registry) -> Result<MapFile, CliE
     let grid = grid(args)?;
     let options = options(args)?;
     let model: SystemModel = load_system(&args.source, registry)?;
-    let stops = contacts(&args.contact, &model);
+    let stops = contacts(&args.contact, &model)?;
     let shard = args.shard.unwrap_or(Shard::WHOLE);
     let run = format!(
         "transient={} recorded={} lyapunov={} period-tolerance={} lyapunov-tolerance={} max-periods={} max-impacts={}",
