@@ -32,8 +32,7 @@ pub fn key_of(name: &str) -> u64 {
 /// and the pattern leaves out its `off` dots of each period. Dots off the `size` grid are dropped.
 ///
 /// It runs once per sample of every curve of every chart in every frame (thousands a frame with
-/// every law checked), so the common cases are kept cheap: samples are about a dot apart, and a
-/// segment of one dot is its end point, with no division.
+/// every law checked), so it does no division and no call into libm per dot.
 pub fn trace(points: &[(f64, f64)], dash: Dash, size: (u16, u16), out: &mut Vec<(u16, u16)>) {
     let mut pen = Pen::new(dash, size);
     let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
@@ -47,18 +46,48 @@ pub fn trace(points: &[(f64, f64)], dash: Dash, size: (u16, u16), out: &mut Vec<
     pen.put(first, out);
     let mut from = first;
     for to in points {
-        // A line of single steps, as Bresenham's: one dot per step along the longer side; its
-        // last step lands on `to`.
+        // A line of single steps, as Bresenham's: one dot per step along the longer side, the
+        // other side's dot the nearest to the line (a tie away from `from`); the last is `to`.
         let (dx, dy) = (to.0 - from.0, to.1 - from.1);
         let steps = dx.abs().max(dy.abs());
-        for i in 1..steps {
-            let along = |d: i64| (d as f64 * i as f64 / steps as f64).round() as i64;
-            pen.put((from.0 + along(dx), from.1 + along(dy)), out);
-        }
-        if steps > 0 {
-            pen.put(to, out);
+        let (mut across, mut down) = (Along::new(dx, steps), Along::new(dy, steps));
+        for _ in 0..steps {
+            pen.put((from.0 + across.step(), from.1 + down.step()), out);
         }
         from = to;
+    }
+}
+
+/// One coordinate along a line of `steps` single steps that moves it by `d` (|d| ≤ `steps`): at
+/// step i it is round(d·i/steps), half away from zero, counted without a division: the count
+/// 2|d|·i + steps rolls over at every 2·steps.
+struct Along {
+    sign: i64,
+    rise: i64,
+    run: i64,
+    count: i64,
+    at: i64,
+}
+
+impl Along {
+    fn new(d: i64, steps: i64) -> Along {
+        Along {
+            sign: d.signum(),
+            rise: 2 * d.abs(),
+            run: 2 * steps,
+            count: steps,
+            at: 0,
+        }
+    }
+
+    /// The coordinate after one more step.
+    fn step(&mut self) -> i64 {
+        self.count += self.rise;
+        if self.count >= self.run {
+            self.count -= self.run;
+            self.at += 1;
+        }
+        self.sign * self.at
     }
 }
 
@@ -210,6 +239,29 @@ mod tests {
             [(0, 1), (1, 1), (2, 1)],
             "off the grid and NaN: no dot"
         );
+    }
+
+    /// Every dot of a line is the one the rounded division gives.
+    #[test]
+    fn lines_take_the_nearest_dot_at_every_step() {
+        let lines: [(i64, i64); 8] = [
+            (7, 3),
+            (-7, 3),
+            (3, -7),
+            (-5, -5),
+            (6, 3),
+            (-6, 3),
+            (4, 0),
+            (0, -4),
+        ];
+        for (dx, dy) in lines {
+            let steps = dx.abs().max(dy.abs());
+            let (mut across, mut down) = (Along::new(dx, steps), Along::new(dy, steps));
+            for i in 1..=steps {
+                let divided = |d: i64| (d as f64 * i as f64 / steps as f64).round() as i64;
+                assert_eq!((across.step(), down.step()), (divided(dx), divided(dy)));
+            }
+        }
     }
 
     #[test]
