@@ -6,8 +6,8 @@ use std::process::ExitCode;
 use clap::Parser;
 use hertz_tui::cli::{self, Cli, CliError, Marker};
 use hertz_tui::model::presets::DEFAULT_SCENE;
-use hertz_tui::ui::MarkerStyle;
 use hertz_tui::ui::config::Config;
+use hertz_tui::ui::{MarkerStyle, Opened};
 
 /// mimalloc rather than the system allocator: the explorer's frame builds and drops its strings,
 /// spans and sample vectors every edit, and glibc's malloc and free took 9 % of an edit cycle's
@@ -42,18 +42,16 @@ fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
         .clone()
         .or_else(|| config.scene.clone())
         .unwrap_or_else(|| DEFAULT_SCENE.to_string());
-    let scene = cli::load_registry().and_then(|registry| {
-        let scene = registry.scene_with(&source, &args.overrides)?;
-        Ok((scene, registry.scene_view(&source)?))
-    });
-    match scene {
-        Ok((scene, view)) => {
+    let opened = cli::load_registry()
+        .and_then(|registry| Ok(Opened::read(&registry, &source, &args.overrides)?));
+    match opened {
+        Ok(opened) => {
             let marker = match args.marker {
                 Marker::Braille => MarkerStyle::Braille,
                 Marker::Dot => MarkerStyle::Dot,
                 Marker::Block => MarkerStyle::Block,
             };
-            hertz_tui::ui::run(scene, view, &source, marker, config)?;
+            hertz_tui::ui::run(opened, &source, marker, config)?;
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => Ok(exit(Err(e))),

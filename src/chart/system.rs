@@ -140,35 +140,6 @@ impl Branch {
     }
 }
 
-const HERTZ: Unit = Unit {
-    symbol: "Hz",
-    aliases: &[],
-    si_per_unit: 1.0,
-    prefixable: true,
-    others: &[],
-};
-const NEWTON_PER_METRE: Unit = Unit {
-    symbol: "N/m",
-    aliases: &[],
-    si_per_unit: 1.0,
-    prefixable: false,
-    others: &[],
-};
-const NEWTON_SECOND_PER_METRE: Unit = Unit {
-    symbol: "N·s/m",
-    aliases: &[],
-    si_per_unit: 1.0,
-    prefixable: false,
-    others: &[],
-};
-const METRE_PER_SECOND_SQUARED: Unit = Unit {
-    symbol: "m/s²",
-    aliases: &[],
-    si_per_unit: 1.0,
-    prefixable: false,
-    others: &[],
-};
-
 impl DiagramAxes {
     /// A diagram of the impact speeds over `param` of `model` (the forcing amplitude is a force or
     /// a base motion by the model's forcing).
@@ -176,24 +147,29 @@ impl DiagramAxes {
         use crate::model::system::{Forcing, SystemKind};
         let (key, key_unit) = match param {
             Param::Scene(key) => (key_label(key).to_string(), key_unit(key)),
-            Param::System(key) => match key {
-                SystemKey::Amplitude => ("A".into(), units::METRE),
-                SystemKey::Gamma => ("Γ".into(), units::DIMENSIONLESS),
-                SystemKey::Frequency => ("f".into(), HERTZ),
-                SystemKey::Gravity => ("g".into(), METRE_PER_SECOND_SQUARED),
-                SystemKey::Stiffness => ("k".into(), NEWTON_PER_METRE),
-                SystemKey::DampingRatio => ("ζ".into(), units::DIMENSIONLESS),
-                SystemKey::Damping => ("c".into(), NEWTON_SECOND_PER_METRE),
-                SystemKey::ForcingAmplitude => match model.spec.kind {
+            Param::System(key) => {
+                let base = matches!(
+                    model.spec.kind,
                     SystemKind::ImpactOscillator {
                         forcing: Forcing::Base { .. },
                         ..
-                    } => ("B".into(), units::METRE),
-                    _ => ("F₀".into(), units::NEWTON),
-                },
-                SystemKey::Gap => ("gap".into(), units::METRE),
-                SystemKey::SecondGap => ("second gap".into(), units::METRE),
-            },
+                    }
+                );
+                let symbol = match key {
+                    SystemKey::Amplitude => "A",
+                    SystemKey::Gamma => "Γ",
+                    SystemKey::Frequency => "f",
+                    SystemKey::Gravity => "g",
+                    SystemKey::Stiffness => "k",
+                    SystemKey::DampingRatio => "ζ",
+                    SystemKey::Damping => "c",
+                    SystemKey::ForcingAmplitude if base => "B",
+                    SystemKey::ForcingAmplitude => "F₀",
+                    SystemKey::Gap => "gap",
+                    SystemKey::SecondGap => "second gap",
+                };
+                (symbol.to_string(), units::system_key_unit(key, base))
+            }
         };
         DiagramAxes {
             key,

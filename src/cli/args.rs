@@ -19,7 +19,8 @@ pub struct Cli {
     /// [default: the config file's `scene`, else fig5-steel-sphere-r10-plate].
     #[arg(long, value_name = "NAME|PATH")]
     pub scene: Option<String>,
-    /// Override a key of the explorer's scene by its dotted path, e.g. impact.v0=0.5 (repeatable).
+    /// Override a key of the explorer's scene by its dotted path, e.g. impact.v0=0.5,
+    /// system.gap=0.5mm (repeatable; a number in SI or with its unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
     /// How the explorer draws chart points; dot or block for fonts without braille.
@@ -62,6 +63,8 @@ pub enum Command {
     Orbit(OrbitArgs),
     /// A brute-force bifurcation diagram of a system over a scene or system key (CSV streamed).
     Bifurcation(BifurcationArgs),
+    /// Continue a system's periodic orbit in a key: stability, folds, period doublings, grazing.
+    Continue(super::continuation::ContinueArgs),
 }
 
 /// Options of `hertz-tui restitution`.
@@ -124,7 +127,8 @@ pub struct PlotArgs {
     /// A preset name or scene file; repeat it with --chart sweep for one line per scene.
     #[arg(long, value_name = "NAME|PATH", required = true)]
     pub scene: Vec<String>,
-    /// Override a key of every scene by its dotted path (repeatable).
+    /// Override a key of every scene by its dotted path (repeatable; a number in SI or with its
+    /// unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
     /// The chart.
@@ -180,8 +184,9 @@ pub struct SceneSelection {
     /// A preset name (see `hertz-tui list`) or the path of a scene file.
     #[arg(long, value_name = "NAME|PATH")]
     pub scene: String,
-    /// Override a scene key by its dotted path (repeatable): impact.v0=0.5, body1.radius=0.02,
-    /// body1.shape=plane, body1.material=aluminium-alloy, body1.material.youngs_modulus=7e10.
+    /// Override a scene key by its dotted path (repeatable): impact.v0=0.5, body1.radius=12mm,
+    /// body1.shape=plane, body1.material=aluminium-alloy, body1.material.youngs_modulus=70GPa,
+    /// system.frequency=20Hz (a number in SI or with its unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
 }
@@ -414,12 +419,13 @@ pub struct OrbitArgs {
     pub contact: ContactArgs,
     #[command(flatten)]
     pub run: RunArgs,
-    /// m: forcing periods per orbit period.
-    #[arg(long, value_name = "M", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub period: u32,
-    /// n: impacts per orbit period.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub impacts: u32,
+    /// m: forcing periods per orbit period (default: the period the run settles on after the
+    /// transient, or 1 without one or with --phase and --speed).
+    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub period: Option<u32>,
+    /// n: impacts per orbit period (default: as for --period).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub impacts: Option<u32>,
     /// Newton's first impact: its forcing phase ωt, rad (with --speed; default: from the
     /// attractor reached after the transient).
     #[arg(

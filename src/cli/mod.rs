@@ -3,6 +3,7 @@
 pub mod args;
 pub mod bench;
 pub mod bifurcation;
+pub mod continuation;
 pub mod error;
 mod in_order;
 mod layout;
@@ -74,6 +75,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             return Ok(out.flush()?);
         }
         Command::Bifurcation(args) => bifurcation::run(args, &registry)?,
+        Command::Continue(args) => continuation::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

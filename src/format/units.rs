@@ -4,6 +4,7 @@
 
 use crate::format::{self, Zeros};
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use crate::model::system::SystemKey;
 
 pub use crate::format::{
     ENGINEERING, FEMTO, GIGA, KILO, MEGA, MICRO, MILLI, NANO, NONE, PICO, Prefix, TERA,
@@ -102,6 +103,50 @@ pub const KG_PER_CUBIC_METRE: Unit = Unit {
     prefixable: false,
     others: &[("g/cm³", 1e3), ("g/cm3", 1e3), ("g/cc", 1e3)],
 };
+
+pub const HERTZ: Unit = Unit {
+    symbol: "Hz",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: true,
+    others: &[],
+};
+pub const NEWTON_PER_METRE: Unit = Unit {
+    symbol: "N/m",
+    aliases: &[],
+    si_per_unit: 1.0,
+    prefixable: false,
+    others: &[("N/mm", 1e3)],
+};
+pub const NEWTON_SECOND_PER_METRE: Unit = Unit {
+    symbol: "N·s/m",
+    aliases: &["N*s/m", "Ns/m", "N s/m"],
+    si_per_unit: 1.0,
+    prefixable: false,
+    others: &[],
+};
+pub const METRE_PER_SECOND_SQUARED: Unit = Unit {
+    symbol: "m/s²",
+    aliases: &["m/s2", "m/s^2"],
+    si_per_unit: 1.0,
+    prefixable: false,
+    others: &[],
+};
+
+/// The unit a `[system]` key is typed and shown in; the forcing amplitude is a length for a
+/// forcing by base motion (`base`), else a force.
+pub fn system_key_unit(key: SystemKey, base_motion: bool) -> Unit {
+    match key {
+        SystemKey::Amplitude | SystemKey::Gap | SystemKey::SecondGap => METRE,
+        SystemKey::Gamma | SystemKey::DampingRatio => DIMENSIONLESS,
+        SystemKey::Frequency => HERTZ,
+        SystemKey::Gravity => METRE_PER_SECOND_SQUARED,
+        SystemKey::Stiffness => NEWTON_PER_METRE,
+        SystemKey::Damping => NEWTON_SECOND_PER_METRE,
+        SystemKey::ForcingAmplitude if base_motion => METRE,
+        SystemKey::ForcingAmplitude => NEWTON,
+    }
+}
 
 /// Parses `text` as a quantity of `unit` and returns its SI value.
 ///

@@ -10,8 +10,11 @@ use std::str::FromStr;
 use thiserror::Error;
 use toml::{Table, Value};
 
+use crate::format::units::{self, Unit};
+
 use super::material::Material;
 use super::scene_file::{self, Document, KeyKind};
+use super::system::Param;
 
 /// One `KEY=VALUE` override; the key is checked against the scene schema when parsed.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -37,8 +40,12 @@ pub enum OverrideError {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ValueProblem {
     /// A numeric key given text that does not parse as a number.
-    #[error("\"{0}\" is not a number (e.g. 0.5, 2e11, 2.3e-6)")]
+    #[error("\"{0}\" is not a number (e.g. 0.5, 2e11, 2.3e-6, 10 mm)")]
     NotANumber(String),
+    /// A number given with a unit that is not the key's (`system.frequency=20 kg`), or that
+    /// overflows; the parser's reason, which names the units the key takes.
+    #[error("\"{given}\": {reason}")]
+    BadQuantity { given: String, reason: String },
     /// A shape that is not one of the scene schema's.
     #[error("unknown shape \"{0}\" (expected one of: sphere, cylinder, plane)")]
     UnknownShape(String),
@@ -57,7 +64,9 @@ pub enum ValueProblem {
 const KNOWN_KEYS: &str = "name, description, body1.shape, body1.radius, body1.length, body1.mass, \
      body1.material, body1.material.name, body1.material.youngs_modulus, \
      body1.material.poisson_ratio, body1.material.yield_stress, body1.material.density, the same \
-     for body2, impact.v0, impact.restitution, impact.plastic_indentation";
+     for body2, impact.v0, impact.restitution, impact.plastic_indentation, system.kind, \
+     system.amplitude, system.frequency, system.gravity, system.stiffness, system.damping_ratio, \
+     system.damping, system.forcing, system.forcing_amplitude, system.gap, system.second_gap";
 
 impl Override {
     /// An override of `key` with `value`; fails if the scene schema has no such key.
@@ -97,14 +106,29 @@ impl fmt::Display for Override {
     }
 }
 
-/// Applies `overrides` in order to `doc`; `materials` resolves material names.
+/// Applies `overrides` in order to `doc`; `materials` resolves material names. A number may carry
+/// its key's unit (`impact.v0=300 mm/s`, `system.frequency=20 Hz`); the table gets its SI value.
 pub fn apply(
     doc: &mut Document,
     overrides: &[Override],
     materials: &BTreeMap<String, Material>,
 ) -> Result<(), OverrideError> {
+    // The forcing amplitude is a force or a length by the forcing, which may be set after it.
+    let base_motion = overrides
+        .iter()
+        .rev()
+        .find(|o| o.key == "system.forcing")
+        .map(|o| o.value.trim_matches('"') == "base")
+        .unwrap_or_else(|| {
+            let forcing = doc
+                .table()
+                .get("system")
+                .and_then(|s| s.get("forcing"))
+                .and_then(Value::as_str);
+            forcing == Some("base")
+        });
     for o in overrides {
-        apply_one(doc, o, materials)?;
+        apply_one(doc, o, materials, base_motion)?;
         doc.mark_overridden(&o.key);
         if let Some(key) = o.key.strip_prefix("impact.") {
             given(doc.table_mut(), key);
@@ -137,11 +161,12 @@ fn apply_one(
     doc: &mut Document,
     o: &Override,
     materials: &BTreeMap<String, Material>,
+    base_motion: bool,
 ) -> Result<(), OverrideError> {
     let path: Vec<&str> = o.key.split('.').collect();
     let kind = scene_file::key_kind(&path)
         .ok_or_else(|| OverrideError::UnknownKey { key: o.key.clone() })?;
-    let value = parse_value(&o.key, &o.value, kind)?;
+    let value = parse_value(&o.key, &o.value, kind, base_motion)?;
     let (parents, leaf) = path.split_at(path.len() - 1);
     let mut table = doc.table_mut();
     for (depth, part) in parents.iter().enumerate() {
@@ -155,17 +180,55 @@ fn apply_one(
     Ok(())
 }
 
-/// The value of `raw` for a key of `kind`: numbers must parse, shapes must be known.
-fn parse_value(key: &str, raw: &str, kind: KeyKind) -> Result<Value, OverrideError> {
+/// The unit the value of numeric `key` may be given in (SI when bare).
+fn key_unit(key: &str, base_motion: bool) -> Unit {
+    match key.parse::<Param>() {
+        Ok(Param::System(k)) => units::system_key_unit(k, base_motion),
+        Ok(Param::Scene(k)) => units::key_unit(k),
+        // Every numeric key of the schema is one of those; a bare number is SI anyway.
+        Err(_) => units::DIMENSIONLESS,
+    }
+}
+
+/// The value of `raw` for a key of `kind`: numbers must parse (with the key's unit, if any),
+/// shapes must be known.
+fn parse_value(
+    key: &str,
+    raw: &str,
+    kind: KeyKind,
+    base_motion: bool,
+) -> Result<Value, OverrideError> {
     let unquoted = raw
         .strip_prefix('"')
         .and_then(|r| r.strip_suffix('"'))
         .unwrap_or(raw);
     match kind {
-        KeyKind::Number => unquoted
-            .parse::<f64>()
-            .map(Value::Float)
-            .map_err(|_| bad_value(key, ValueProblem::NotANumber(raw.to_string()))),
+        // A bare number reads as TOML would (inf and nan included, refused by the range checks).
+        KeyKind::Number => match unquoted.parse::<f64>() {
+            Ok(number) => Ok(Value::Float(number)),
+            Err(_)
+                if !unquoted
+                    .trim_start()
+                    .starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.')) =>
+            {
+                Err(bad_value(key, ValueProblem::NotANumber(raw.to_string())))
+            }
+            Err(_) => units::parse(unquoted, key_unit(key, base_motion))
+                .map(Value::Float)
+                .map_err(|reason| {
+                    let given = raw.to_string();
+                    let reason = match key {
+                        "system.forcing_amplitude" if base_motion => {
+                            format!("{reason}; a force F₀ needs system.forcing = \"force\"")
+                        }
+                        "system.forcing_amplitude" => format!(
+                            "{reason}; a base motion B in m needs system.forcing = \"base\""
+                        ),
+                        _ => reason,
+                    };
+                    bad_value(key, ValueProblem::BadQuantity { given, reason })
+                }),
+        },
         KeyKind::Text => Ok(Value::String(unquoted.to_string())),
         KeyKind::Shape => {
             if !scene_file::SHAPES.contains(&unquoted) {
@@ -323,6 +386,31 @@ plastic_indentation = 2.3e-6
         let err = scene_with(&["body1.shape=cylinder"]).unwrap_err();
         assert!(
             err.contains("missing key `body1.length` (a cylinder needs it)"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn numbers_take_their_keys_unit() {
+        let s = scene_with(&[
+            "impact.v0=300 mm/s",
+            "body1.radius=12mm",
+            "body1.mass=33 g",
+            "body1.material.youngs_modulus=70 GPa",
+            "body2.material.density=2.7 g/cm³",
+            "impact.restitution=55%",
+        ])
+        .unwrap();
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-15 * b.abs();
+        assert!(close(s.impact.v0, 0.3), "{}", s.impact.v0);
+        assert!(close(s.body1.shape.radius(), 0.012));
+        assert!(close(s.body1.mass.unwrap(), 0.033));
+        assert_eq!(s.body1.material.youngs_modulus, 7e10);
+        assert!(close(s.body2.material.density, 2700.0));
+        assert!(close(s.impact.restitution, 0.55));
+        let err = scene_with(&["body1.radius=1 kg"]).unwrap_err();
+        assert!(
+            err.starts_with("--set body1.radius: \"1 kg\": unknown unit 'kg' (expected m"),
             "{err}"
         );
     }

@@ -12,10 +12,11 @@ use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
 use crate::model::presets::kebab_case;
 use crate::model::recommend::{Recommendation, recommend_reusing};
-use crate::model::scene_file::SceneView;
+use crate::model::scene_file::{SceneView, system_table};
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::scene_title::{edits, retitled};
 use crate::model::study::runner::{StudyJob, StudySpec};
+use crate::model::system::SystemSpec;
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
 use crate::ui::studies::Studies;
@@ -225,6 +226,8 @@ pub struct App {
     pub(super) saved: Scene,
     /// The view (models, solver settings) as last loaded or saved, for resetting the solver rows.
     pub(super) saved_view: SceneView,
+    /// The `[system]` table as last loaded or saved, for the unsaved-changes mark.
+    pub(super) saved_system: Option<SystemSpec>,
     /// The preset the scene was loaded from or saved as, if any.
     pub preset: Option<String>,
     /// The description of that preset, kept when the scene is saved.
@@ -268,6 +271,48 @@ pub struct App {
     pub quit: bool,
 }
 
+/// [`retitled`] of a scene with its `[system]` table: the description names the keys of the
+/// table that were edited too, so that a preset's "Γ ≈ 1.61" does not describe another Γ.
+pub(crate) fn retitled_with_system(
+    (original, saved_system): (&Scene, Option<&SystemSpec>),
+    description: Option<&str>,
+    (edited, system): (&Scene, Option<&SystemSpec>),
+) -> (String, Option<String>) {
+    let (name, described) = retitled(original, description, edited);
+    let system = system_edits(saved_system, system);
+    if system.is_empty() {
+        return (name, described);
+    }
+    let changed: Vec<String> = edits(original, edited).into_iter().chain(system).collect();
+    let described = format!("edited from \"{}\": {}", original.name, changed.join(", "));
+    (name, Some(described))
+}
+
+/// What differs in `edited` from the `[system]` table `saved`: `system.gap = 0.0004`, each key
+/// with its new value as the scene file writes it.
+fn system_edits(saved: Option<&SystemSpec>, edited: Option<&SystemSpec>) -> Vec<String> {
+    if saved == edited {
+        return Vec::new();
+    }
+    let lines = |spec: Option<&SystemSpec>| -> Vec<String> {
+        spec.map(system_table)
+            .unwrap_or_default()
+            .lines()
+            .skip(1)
+            .map(|l| l.split('#').next().unwrap_or_default().trim().to_string())
+            .collect()
+    };
+    let before = lines(saved);
+    match edited {
+        None => vec!["[system] removed".to_string()],
+        Some(_) => lines(edited)
+            .into_iter()
+            .filter(|line| !before.contains(line))
+            .map(|line| format!("system.{line}"))
+            .collect(),
+    }
+}
+
 pub(super) fn model_index(model: ForceModel) -> usize {
     model.index()
 }
@@ -282,9 +327,28 @@ impl App {
         App::open(scene, view, registry, marker, theme)
     }
 
-    /// The explorer on `scene` as `view` asks (checked models, the first focused; solver settings).
+    /// The explorer on `scene` as `view` asks (checked models, the first focused; solver settings),
+    /// with the `[system]` table of the preset the scene is, if any.
     pub fn open(
         scene: Scene,
+        view: SceneView,
+        registry: Registry,
+        marker: MarkerStyle,
+        theme: Theme,
+    ) -> App {
+        let system = registry
+            .scenes()
+            .iter()
+            .find(|info| registry.scene(&info.name).is_ok_and(|s| s == scene))
+            .and_then(|info| registry.scene_system(&info.name, &[]).ok().flatten());
+        App::open_system(scene, system, view, registry, marker, theme)
+    }
+
+    /// [`App::open`] on a scene read with its `[system]` table (a scene file, `--set system.*`
+    /// applied): the system view shows that table, and `s` writes it back.
+    pub fn open_system(
+        scene: Scene,
+        system: Option<SystemSpec>,
         view: SceneView,
         registry: Registry,
         marker: MarkerStyle,
@@ -293,15 +357,21 @@ impl App {
         let preset = registry
             .scenes()
             .iter()
-            .find(|info| registry.scene(&info.name).is_ok_and(|s| s == scene))
+            .find(|info| {
+                registry.scene(&info.name).is_ok_and(|s| s == scene)
+                    && registry
+                        .scene_system(&info.name, &[])
+                        .is_ok_and(|s| s == system)
+            })
             .map(|info| info.name.clone());
         let description = preset
             .as_deref()
             .and_then(|name| registry.scene_description(name).ok().flatten());
         let mut app = App {
-            draft: Draft::new(scene.clone(), view.options),
+            draft: Draft::new(scene.clone(), view.options).with_system(system),
             saved: scene,
             saved_view: view.clone(),
+            saved_system: system,
             preset,
             description,
             undo: Vec::new(),
@@ -369,12 +439,17 @@ impl App {
     pub(super) fn load_preset(&mut self, name: &str) -> Result<(), String> {
         let scene = self.registry.scene(name).map_err(|e| e.to_string())?;
         let view = self.registry.scene_view(name).map_err(|e| e.to_string())?;
+        let system = self
+            .registry
+            .scene_system(name, &[])
+            .map_err(|e| e.to_string())?;
         self.description = self.registry.scene_description(name).ok().flatten();
         self.check_only(&view.models);
         self.focused = view.focused();
-        self.draft = Draft::new(scene.clone(), view.options);
+        self.draft = Draft::new(scene.clone(), view.options).with_system(system);
         self.saved = scene;
         self.saved_view = view;
+        self.saved_system = system;
         self.preset = Some(name.to_string());
         self.recompute();
         Ok(())
@@ -426,8 +501,13 @@ impl App {
     /// The scene's name and description as shown, exported and saved: those loaded while the
     /// draft is as loaded, else named by its bodies with what was edited (a preset's "…on steel
     /// plate" is not the name of a scene whose plate became aluminium).
+    /// An edited `[system]` table is named in the description too.
     pub fn title(&self) -> (String, Option<String>) {
-        retitled(&self.saved, self.description.as_deref(), &self.draft.scene)
+        retitled_with_system(
+            (&self.saved, self.saved_system.as_ref()),
+            self.description.as_deref(),
+            (&self.draft.scene, self.draft.system.as_ref()),
+        )
     }
 
     /// The file-name stem of exports: the preset's name while unedited, else the shown name in
@@ -441,9 +521,14 @@ impl App {
         }
     }
 
-    /// Whether the scene differs from the one last loaded or saved.
+    /// Whether the scene or its `[system]` table differs from the one last loaded or saved.
     pub fn is_dirty(&self) -> bool {
-        self.draft.scene != self.saved
+        self.draft.scene != self.saved || self.draft.system != self.saved_system
+    }
+
+    /// The `[system]` table as last loaded or saved.
+    pub fn saved_system(&self) -> Option<&SystemSpec> {
+        self.saved_system.as_ref()
     }
 
     /// Whether any solve is running.

@@ -8,6 +8,7 @@ use crate::model::impact::{MethodChoice, SolveOptions, UnknownMethod};
 use crate::model::ode::Method;
 use crate::model::scene::Scene;
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
+use crate::model::system::SystemSpec;
 
 /// One row of a form pane.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -70,12 +71,15 @@ impl Dims {
     }
 }
 
-/// What the form edits: the scene, the solver options and the remembered dimensions.
+/// What the forms edit: the scene, the solver options and the remembered dimensions, and the
+/// scene's `[system]` table (edited by the system view): one value, so that `u` undoes an edit of
+/// either and `s` saves both.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Draft {
     pub scene: Scene,
     pub options: SolveOptions,
     pub dims: [Dims; 2],
+    pub system: Option<SystemSpec>,
 }
 
 impl Draft {
@@ -85,7 +89,14 @@ impl Draft {
             scene,
             options,
             dims,
+            system: None,
         }
+    }
+
+    /// The draft with `system` as its `[system]` table.
+    pub fn with_system(mut self, system: Option<SystemSpec>) -> Draft {
+        self.system = system;
+        self
     }
 }
 

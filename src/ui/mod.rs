@@ -52,39 +52,75 @@ pub use style::MarkerStyle;
 use color_eyre::eyre::WrapErr;
 
 use crate::model::Scene;
-use crate::model::presets::Registry;
+use crate::model::overrides::Override;
+use crate::model::presets::{PresetError, Registry};
 use crate::model::scene_file::SceneView;
-use crate::model::scene_title::retitled;
+use crate::model::system::SystemSpec;
 
 use app::App;
 use config::Config;
 use style::Theme;
 
-/// Opens the explorer on `scene` read from `source` (a preset name or a path), as `view` asks
+/// What the explorer opens: a scene, its `[system]` table and its view (checked models, solver
+/// settings).
+#[derive(Debug, Clone)]
+pub struct Opened {
+    pub scene: Scene,
+    pub system: Option<SystemSpec>,
+    pub view: SceneView,
+}
+
+impl Opened {
+    /// The scene preset or scene file `source` with `overrides` (`--set`, `system.*` included)
+    /// applied; a bad table or override is an error naming its key.
+    pub fn read(
+        registry: &Registry,
+        source: &str,
+        overrides: &[Override],
+    ) -> Result<Opened, PresetError> {
+        Ok(Opened {
+            scene: registry.scene_with(source, overrides)?,
+            system: registry.scene_system(source, overrides)?,
+            view: registry.scene_view(source)?,
+        })
+    }
+}
+
+/// Opens the explorer on the scene read from `source` (a preset name or a path), as `view` asks
 /// (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
 /// `config` (the user's config file) chooses the theme where it names one, and moves keys.
 pub fn run(
-    scene: Scene,
-    view: SceneView,
+    opened: Opened,
     source: &str,
     marker: MarkerStyle,
     config: Config,
 ) -> color_eyre::Result<()> {
+    let Opened {
+        scene,
+        system,
+        view,
+    } = opened;
     let registry = Registry::load()
         .or_else(|_| Registry::builtin())
         .wrap_err("cannot load the presets")?;
     // A scene file's description is kept on save, as a preset's is.
     let description = registry.scene_description(source).ok().flatten();
-    // Overrides given on the command line: the description says what they edited.
+    // Overrides given on the command line: the description says what they edited, `system.*`
+    // included.
     let description = match registry.scene(source) {
-        Ok(original) => retitled(&original, description.as_deref(), &scene).1,
+        Ok(original) => {
+            let loaded = registry.scene_system(source, &[]).ok().flatten();
+            let original = (&original, loaded.as_ref());
+            let edited = (&scene, system.as_ref());
+            app::retitled_with_system(original, description.as_deref(), edited).1
+        }
         Err(_) => description,
     };
     let theme = config.theme_or(Theme::from_env);
     rebind::install(config.keys);
-    let mut app = App::open(scene, view, registry, marker, theme);
+    let mut app = App::open_system(scene, system, view, registry, marker, theme);
     if app.description.is_none() {
         app.description = description;
     }

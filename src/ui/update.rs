@@ -465,17 +465,24 @@ fn save_preset(app: &mut App, name: &str) -> Result<String, String> {
     write_scene(app, name, SaveTarget::UserPreset { name })
 }
 
-/// Writes the draft (named `name` if edited), its view and description to `target`; a user preset
-/// becomes the preset shown.
+/// Writes the draft (named `name` if edited), its view, `[system]` table and description to
+/// `target`; a user preset becomes the preset shown.
 fn write_scene(app: &mut App, name: &str, target: SaveTarget<'_>) -> Result<String, String> {
     let scene = scene_to_save(app, name);
     let view = app.scene_view();
     let preset = matches!(target, SaveTarget::UserPreset { .. }).then_some(name);
     // An edited scene's description says what was edited, not the preset's "…on steel plate".
     let description = app.title().1;
+    let system = app.draft.system;
     let written = app
         .registry
-        .save_scene_with_view(&scene, description.as_deref(), &view, target)
+        .save_scene_with_view(
+            &scene,
+            description.as_deref(),
+            &view,
+            system.as_ref(),
+            target,
+        )
         .map_err(|e| e.to_string())?;
     app.description = description;
     saved(app, scene, view, preset);
@@ -505,6 +512,7 @@ fn saved(app: &mut App, scene: Scene, view: SceneView, preset: Option<&str>) {
     app.draft.scene.name = scene.name.clone();
     app.saved = scene;
     app.saved_view = view;
+    app.saved_system = app.draft.system;
     if let Some(name) = preset {
         app.preset = Some(name.to_string());
     }

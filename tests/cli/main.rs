@@ -1,9 +1,11 @@
 //! The command line driven as a user would: the real binary, its output parsed.
 
 mod commands;
+mod continuation;
 mod laws;
 mod plot;
 mod readme;
 mod recommendation;
 mod studies;
+mod support;
 mod systems;

@@ -163,6 +163,7 @@ fn run(command: &str, dir: &Path) -> Result<String, String> {
         "system",
         "orbit",
         "bifurcation",
+        "continue",
         "help",
     ];
     if !args

@@ -561,7 +561,7 @@ fn override_errors_name_the_key() {
     };
     assert_eq!(
         apply("impact.v0=fast"),
-        "--set impact.v0: \"fast\" is not a number (e.g. 0.5, 2e11, 2.3e-6)"
+        "--set impact.v0: \"fast\" is not a number (e.g. 0.5, 2e11, 2.3e-6, 10 mm)"
     );
     assert_eq!(
         apply("impact.v0=-1"),

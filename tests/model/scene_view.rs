@@ -194,7 +194,7 @@ fn saving_writes_the_view_back() {
     };
     let file: PathBuf = dir.join("saved.toml");
     registry
-        .save_scene_with_view(&scene, Some("kept"), &view, SaveTarget::Path(&file))
+        .save_scene_with_view(&scene, Some("kept"), &view, None, SaveTarget::Path(&file))
         .unwrap();
     let path = file.to_str().unwrap();
     let (scene_back, view_back) = (registry.scene(path), registry.scene_view(path));

@@ -1,7 +1,7 @@
 //! The `[system]` table: presets, round trips, and errors that name the key.
 
 use hertz_tui::model::overrides::Override;
-use hertz_tui::model::presets::Registry;
+use hertz_tui::model::presets::{Registry, SaveTarget};
 use hertz_tui::model::scene_file::{self, Document, decode_system, parse_scene};
 use hertz_tui::model::system::{
     Contact, Damping, Forcing, RunOptions, SystemKind, SystemModel, SystemSpec, simulate,
@@ -209,6 +209,174 @@ fn set_overrides_reach_the_system() {
             .scene_with("bouncing-ball", &[set("system.frequency", "0")])
             .is_err()
     );
+}
+
+#[test]
+fn set_overrides_take_each_keys_unit_and_a_wrong_unit_names_the_key() {
+    let registry = Registry::builtin().unwrap();
+    let system = |preset: &str, sets: &[&str]| {
+        let overrides: Vec<Override> = sets.iter().map(|s| s.parse().unwrap()).collect();
+        registry
+            .scene_system(preset, &overrides)
+            .map(|s| s.unwrap())
+            .map_err(|e| e.to_string())
+    };
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-15 * b.abs();
+    // Units and prefixes give the SI value a bare number gives.
+    let ball = system(
+        "bouncing-ball",
+        &[
+            "system.frequency=25Hz",
+            "system.amplitude=0.8 mm",
+            "system.gravity=9.81 m/s^2",
+        ],
+    )
+    .unwrap();
+    let SystemKind::BouncingBall {
+        amplitude,
+        frequency,
+        gravity,
+    } = ball.kind
+    else {
+        panic!("{ball:?}");
+    };
+    assert!(close(amplitude, 0.0008) && frequency == 25.0 && gravity == 9.81);
+    let oscillator = system(
+        "impact-oscillator",
+        &[
+            "system.gap=0.5 mm",
+            "system.stiffness=1e4 N/m",
+            "system.forcing_amplitude=50 mN",
+            "system.frequency=0.012 kHz",
+        ],
+    )
+    .unwrap();
+    let SystemKind::ImpactOscillator {
+        gap,
+        stiffness,
+        forcing,
+        frequency,
+        ..
+    } = oscillator.kind
+    else {
+        panic!("{oscillator:?}");
+    };
+    assert!(close(gap, 0.0005) && stiffness == 1e4 && close(frequency, 12.0));
+    assert!(matches!(forcing, Forcing::Force { amplitude } if close(amplitude, 0.05)));
+    // The forcing amplitude is a length for a base motion, whichever of the two is set first.
+    for sets in [
+        ["system.forcing=base", "system.forcing_amplitude=0.2 mm"],
+        ["system.forcing_amplitude=0.2 mm", "system.forcing=base"],
+    ] {
+        let spec = system("impact-oscillator", &sets).unwrap();
+        assert!(
+            matches!(spec.kind, SystemKind::ImpactOscillator { forcing: Forcing::Base { amplitude }, .. } if close(amplitude, 0.0002)),
+            "{sets:?}: {spec:?}"
+        );
+    }
+    // A unit that is not the key's: refused, naming the key and the units it takes.
+    for (preset, set, key, expected) in [
+        (
+            "bouncing-ball",
+            "system.frequency=20 kg",
+            "system.frequency",
+            "Hz",
+        ),
+        (
+            "bouncing-ball",
+            "system.amplitude=1 N",
+            "system.amplitude",
+            "expected m",
+        ),
+        (
+            "impact-oscillator",
+            "system.stiffness=1 N",
+            "system.stiffness",
+            "N/m",
+        ),
+        (
+            "impact-oscillator",
+            "system.forcing_amplitude=1 mm",
+            "system.forcing_amplitude",
+            "base",
+        ),
+        (
+            "impact-oscillator",
+            "system.damping_ratio=0.1 s",
+            "system.damping_ratio",
+            "no unit",
+        ),
+    ] {
+        let e = system(preset, &[set]).unwrap_err();
+        assert!(
+            e.starts_with(&format!("--set {key}: ")) && e.contains(expected),
+            "{set}: {e}"
+        );
+    }
+    let e = system("bouncing-ball", &["system.frequency=fast"]).unwrap_err();
+    assert!(
+        e.starts_with("--set system.frequency: \"fast\" is not a number"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_system_scene_saved_with_its_table_reads_back_the_same() {
+    let registry = Registry::builtin().unwrap();
+    let dir = std::env::temp_dir().join(format!("hertz-tui-system-save-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for name in PRESETS {
+        let scene = registry.scene(name).unwrap();
+        let view = registry.scene_view(name).unwrap();
+        let overrides: Vec<Override> = ["system.gap=0.7 mm", "system.frequency=9.3 Hz"]
+            .iter()
+            .map(|s| s.parse().unwrap())
+            .collect();
+        let system = registry.scene_system(name, &[]).unwrap().unwrap();
+        let edited = if name == "bouncing-ball" {
+            &overrides[1..]
+        } else {
+            &overrides[..]
+        };
+        let (scene, system) = registry
+            .apply_overrides_with_system(&scene, Some(&system), edited)
+            .unwrap();
+        let system = system.unwrap();
+        assert_ne!(
+            Some(system),
+            registry.scene_system(name, &[]).unwrap(),
+            "{name}"
+        );
+        let file = dir.join(format!("{name}.toml"));
+        registry
+            .save_scene_with_view(&scene, None, &view, Some(&system), SaveTarget::Path(&file))
+            .unwrap();
+        let path = file.to_str().unwrap();
+        assert_eq!(
+            registry.scene_system(path, &[]).unwrap(),
+            Some(system),
+            "{name}"
+        );
+        assert_eq!(registry.scene(path).unwrap(), scene, "{name}");
+    }
+    // A table that would not read back is refused, and nothing is written.
+    let scene = registry.scene("bouncing-ball").unwrap();
+    let view = registry.scene_view("bouncing-ball").unwrap();
+    let mut bad = registry
+        .scene_system("bouncing-ball", &[])
+        .unwrap()
+        .unwrap();
+    if let SystemKind::BouncingBall { frequency, .. } = &mut bad.kind {
+        *frequency = -1.0;
+    }
+    let file = dir.join("bad.toml");
+    let e = registry
+        .save_scene_with_view(&scene, None, &view, Some(&bad), SaveTarget::Path(&file))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("system.frequency"), "{e}");
+    assert!(!file.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

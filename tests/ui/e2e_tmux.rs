@@ -34,10 +34,15 @@ struct Tmux {
 
 impl Tmux {
     fn start() -> Tmux {
+        Tmux::start_as("")
+    }
+
+    /// A server and config folder of their own for each `tag`: tests run side by side.
+    fn start_as(tag: &str) -> Tmux {
         if Command::new("tmux").arg("-V").output().is_err() {
             panic!("tmux is needed for the end-to-end tests: install it (apt-get install -y tmux)");
         }
-        let id = std::process::id();
+        let id = format!("{tag}{}", std::process::id());
         let config_home = std::env::temp_dir().join(format!("hertz-e2e-config-{id}"));
         std::fs::create_dir_all(&config_home).unwrap();
         let tmux = Tmux {
@@ -285,4 +290,63 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
     tmux.literal("echo after-$((1+1))");
     tmux.keys(&["Enter"]);
     tmux.wait_for("the shell to run a command", |s| s.contains("after-2"));
+}
+
+/// A bouncing ball as a user writes it (docs/systems.md §1), A = 1 mm at 20 Hz.
+const BALL_FILE: &str = r#"name = "My ball"
+[body1]
+shape = "sphere"
+radius = 0.01
+material = "steel"
+[body2]
+shape = "plane"
+material = "steel"
+[impact]
+v0 = 0.25
+restitution = 0.5
+plastic_indentation = 0.0
+[system]
+kind = "bouncing-ball"
+amplitude = 0.001
+frequency = 20.0
+"#;
+
+#[test]
+fn a_system_scene_file_with_set_opens_in_the_system_view_and_saves_its_edit() {
+    let tmux = Tmux::start_as("system-");
+    let dir = tmux.config_home.join("scenes-here");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("my-ball.toml");
+    std::fs::write(&file, BALL_FILE).unwrap();
+    let saved = dir.join("my-ball-saved.toml");
+
+    let binary = env!("CARGO_BIN_EXE_hertz-tui");
+    tmux.literal(&format!(
+        "{binary} --scene {} --set 'system.amplitude=0.8 mm'; echo exited-$?",
+        file.display()
+    ));
+    tmux.keys(&["Enter"]);
+    tmux.wait_for("the explorer", |s| s.contains("F(x) force–approach"));
+    tmux.keys(&["6"]);
+    // The file's table with the override, in its unit: Γ = Aω²/g = 0.8 mm·(40π/s)²/g.
+    tmux.wait_for("the system view on the file's table", |s| {
+        s.contains("800 µm") && s.contains("Γ = Aω²/g = 1.288")
+    });
+    // → on the amplitude (the first row): 5 % more, then saved to a path.
+    tmux.keys(&["Right"]);
+    tmux.wait_for("the amplitude stepped", |s| s.contains("840 µm"));
+    tmux.keys(&["s"]);
+    tmux.wait_for("the save prompt", |s| s.contains("Save"));
+    tmux.keys(&["C-u"]);
+    tmux.literal(&saved.display().to_string());
+    tmux.keys(&["Enter"]);
+    tmux.wait_for("the save", |s| s.contains("saved "));
+    // Saved: q quits without asking.
+    tmux.keys(&["q"]);
+    tmux.wait_for("the shell after the explorer", |s| s.contains("exited-0"));
+    let text = std::fs::read_to_string(&saved).unwrap();
+    assert!(
+        text.contains("[system]") && text.contains("amplitude = 0.00084"),
+        "{text}"
+    );
 }

@@ -9,3 +9,4 @@ mod readme_screen;
 mod render;
 mod results_damping;
 mod system;
+mod system_scene;

@@ -17,10 +17,10 @@ use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 use super::render::{render, settle, text};
 
 /// Values of the diagrams the tests draw.
-const DIAGRAM_VALUES: usize = 4;
+pub(super) const DIAGRAM_VALUES: usize = 4;
 
 /// The explorer on preset `name` at `width`×`height`, on the system view, its studies done.
-fn app_on(name: &str, width: u16, height: u16) -> App {
+pub(super) fn app_on(name: &str, width: u16, height: u16) -> App {
     let registry = Registry::builtin().unwrap();
     let scene = registry.scene(name).unwrap();
     let mut app = App::new(scene, registry, MarkerStyle::Braille, Theme::Dark);
@@ -34,11 +34,11 @@ fn app_on(name: &str, width: u16, height: u16) -> App {
     app
 }
 
-fn screen(app: &App, width: u16, height: u16) -> String {
+pub(super) fn screen(app: &App, width: u16, height: u16) -> String {
     text(render(app, width, height).backend().buffer())
 }
 
-fn press(app: &mut App, code: KeyCode) {
+pub(super) fn press(app: &mut App, code: KeyCode) {
     let event = Event::Key(KeyEvent::new(code, KeyModifiers::NONE));
     if let Some(action) = hertz_tui::ui::keymap::action_for_event(&app.mode, &event) {
         update(app, action);
@@ -46,7 +46,7 @@ fn press(app: &mut App, code: KeyCode) {
 }
 
 /// Moves the cursor to the form row labelled `label` (Down until its line is under the cursor).
-fn go_to_row(app: &mut App, label: &str) {
+pub(super) fn go_to_row(app: &mut App, label: &str) {
     let rows = {
         let model = hertz_tui::ui::views::system::model(app).unwrap();
         hertz_tui::ui::views::system::settings::Settings::rows(&model)
@@ -61,7 +61,7 @@ fn go_to_row(app: &mut App, label: &str) {
 }
 
 /// Types `value` into the row under the cursor: Enter, clear, the text, Enter.
-fn type_in(app: &mut App, value: &str) {
+pub(super) fn type_in(app: &mut App, value: &str) {
     press(app, KeyCode::Enter);
     update(app, Action::Input(tui_input::InputRequest::DeleteLine));
     for c in value.chars() {

@@ -76,4 +76,7 @@ pub enum PresetError {
     /// The scene to save does not validate.
     #[error("refusing to save an invalid scene: {0}")]
     InvalidScene(ModelError),
+    /// The `[system]` table to save does not validate.
+    #[error("refusing to save an invalid [system] table: {0}")]
+    InvalidSystem(ModelError),
 }

@@ -201,8 +201,23 @@ impl Registry {
         scene: &Scene,
         overrides: &[Override],
     ) -> Result<Scene, PresetError> {
-        let doc = Document::parse(scene.name.clone(), &scene_file::to_toml(scene, None))?;
-        self.decode(doc, overrides)
+        Ok(self.apply_overrides_with_system(scene, None, overrides)?.0)
+    }
+
+    /// [`Registry::apply_overrides`] to a scene and its `[system]` table (`system.*` keys
+    /// included): both, after the overrides, as a scene file with that table would give them.
+    pub fn apply_overrides_with_system(
+        &self,
+        scene: &Scene,
+        system: Option<&SystemSpec>,
+        overrides: &[Override],
+    ) -> Result<(Scene, Option<SystemSpec>), PresetError> {
+        let text = scene_file::to_toml_with_system(scene, None, None, system);
+        let doc = Document::parse(scene.name.clone(), &text)?;
+        let mut edited = doc.clone();
+        overrides::apply(&mut edited, overrides, &self.catalog)?;
+        let system = scene_file::decode_system(&edited)?;
+        Ok((self.decode(doc, overrides)?, system))
     }
 
     /// Saves `scene` to `target`; a user preset goes to this registry's user folder.
@@ -212,15 +227,24 @@ impl Registry {
         description: Option<&str>,
         target: SaveTarget<'_>,
     ) -> Result<PathBuf, PresetError> {
-        save_scene_in(self.user_dir.as_deref(), scene, description, None, target)
+        save_scene_in(
+            self.user_dir.as_deref(),
+            scene,
+            description,
+            None,
+            None,
+            target,
+        )
     }
 
-    /// [`Registry::save_scene`] with the view (`models`, `[solver]`) written too.
+    /// [`Registry::save_scene`] with the view (`models`, `[solver]`) and the `[system]` table, if
+    /// any, written too: what the explorer saves, which reads back to the same scene and system.
     pub fn save_scene_with_view(
         &self,
         scene: &Scene,
         description: Option<&str>,
         view: &SceneView,
+        system: Option<&SystemSpec>,
         target: SaveTarget<'_>,
     ) -> Result<PathBuf, PresetError> {
         save_scene_in(
@@ -228,6 +252,7 @@ impl Registry {
             scene,
             description,
             Some(view),
+            system,
             target,
         )
     }

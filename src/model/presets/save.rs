@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 
 use crate::model::scene::Scene;
 use crate::model::scene_file::{self, SceneView};
+use crate::model::system::SystemSpec;
 
 use super::error::PresetError;
 use super::user_dir::user_dir;
@@ -54,18 +55,30 @@ pub fn save_scene(
     description: Option<&str>,
     target: SaveTarget<'_>,
 ) -> Result<PathBuf, PresetError> {
-    save_scene_in(user_dir().as_deref(), scene, description, None, target)
+    save_scene_in(
+        user_dir().as_deref(),
+        scene,
+        description,
+        None,
+        None,
+        target,
+    )
 }
 
-/// [`save_scene`] with an explicit user preset folder.
+/// [`save_scene`] with an explicit user preset folder, and the view and `[system]` table if given.
 pub(super) fn save_scene_in(
     user_dir: Option<&Path>,
     scene: &Scene,
     description: Option<&str>,
     view: Option<&SceneView>,
+    system: Option<&SystemSpec>,
     target: SaveTarget<'_>,
 ) -> Result<PathBuf, PresetError> {
     scene.validate().map_err(PresetError::InvalidScene)?;
+    // A table that would not read back is not written: the file must open again.
+    if let Some(system) = system {
+        system.validate().map_err(PresetError::InvalidSystem)?;
+    }
     let path = match target {
         SaveTarget::Path(path) => path.to_path_buf(),
         SaveTarget::UserPreset { name } => {
@@ -82,7 +95,7 @@ pub(super) fn save_scene_in(
     };
     write_atomically(
         &path,
-        &scene_file::to_toml_with_view(scene, description, view),
+        &scene_file::to_toml_with_system(scene, description, view, system),
     )?;
     Ok(path)
 }

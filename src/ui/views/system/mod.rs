@@ -28,22 +28,19 @@ pub struct System;
 #[derive(Debug, Clone, Default)]
 pub struct State {
     pub settings: Settings,
-    /// The row of the form under the cursor (an index into [`Settings::rows`]).
+    /// The row of the form under the cursor (an index into [`Settings::rows`]; on a scene without
+    /// `[system]`, into [`settings::SYSTEM_PRESETS`]).
     pub cursor: usize,
 }
 
-/// The model the view runs: the last valid scene in the table in force, or why there is none.
+/// The model the view runs: the last valid scene in the draft's `[system]` table, or why there is
+/// none.
 pub fn model(app: &App) -> Result<SystemModel, String> {
     let scene = match &app.valid {
         Some(valid) => &valid.scene,
         None => &app.draft.scene,
     };
-    settings::model(
-        &app.views.system.settings,
-        &app.registry,
-        app.preset.as_deref(),
-        scene,
-    )
+    settings::model(app.draft.system.as_ref(), scene)
 }
 
 /// The row under the cursor, for `model`.
@@ -68,7 +65,13 @@ impl View for System {
     }
 
     fn hints(&self) -> Hints {
-        &[("↑↓", "move"), ("Enter", "edit"), ("←→", "step"), ("[ ]", "law")]
+        &[
+            ("↑↓", "move"),
+            ("Enter", "edit"),
+            ("←→", "step"),
+            ("u", "undo"),
+            ("[ ]", "law"),
+        ]
     }
 
     fn handle(&self, app: &mut App, action: Action) -> Option<Action> {
@@ -87,12 +90,7 @@ impl View for System {
     }
 
     fn study_specs(&self, app: &App, valid: &Valid) -> Vec<StudySpec> {
-        let Ok(model) = settings::model(
-            &app.views.system.settings,
-            &app.registry,
-            app.preset.as_deref(),
-            &valid.scene,
-        ) else {
+        let Ok(model) = settings::model(app.draft.system.as_ref(), &valid.scene) else {
             // The view says why; there is nothing to run.
             return Vec::new();
         };

@@ -19,7 +19,7 @@ use crate::ui::widgets::common::{pane, span, wrap};
 use crate::ui::widgets::editable;
 use crate::ui::widgets::graph::{self, budget};
 
-use super::settings::{Row, Settings};
+use super::settings::{NO_SYSTEM, Row, SYSTEM_PRESETS, Settings, TOML_SNIPPET};
 
 /// Width of the label column of the form.
 const LABEL_WIDTH: usize = 13;
@@ -33,13 +33,19 @@ pub fn render(frame: &mut Frame, screen: &ScreenLayout, app: &App) {
     let model = super::model(app);
     let rows = model.as_ref().map(Settings::rows).unwrap_or_default();
     let frame_rows = if screen.roomy { 2 } else { 1 };
+    let form_rows = match app.draft.system {
+        Some(_) => rows.len(),
+        None => SYSTEM_PRESETS.len(),
+    };
     let [form_area, notes_area] = Layout::vertical([
-        Constraint::Length(rows.len() as u16 + 1 + frame_rows),
+        Constraint::Length(form_rows as u16 + 1 + frame_rows),
         Constraint::Fill(1),
     ])
     .areas(left);
-    if let Ok(model) = &model {
-        form(frame, form_area, app, model, &rows, screen.roomy);
+    match &model {
+        Ok(model) => form(frame, form_area, app, model, &rows, screen.roomy),
+        Err(_) if app.draft.system.is_none() => add_form(frame, form_area, app, screen.roomy),
+        Err(_) => {}
     }
     notes(frame, notes_area, app, model.as_ref(), screen.roomy);
     charts(frame, right, app, model.as_ref().ok(), screen.roomy);
@@ -94,6 +100,32 @@ fn form(frame: &mut Frame, area: Rect, app: &App, model: &SystemModel, rows: &[R
     }
 }
 
+/// On a scene without `[system]`: the system presets whose table Enter adds.
+fn add_form(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
+    let theme = app.theme;
+    let block = pane("Add a system", theme, roomy);
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let cursor_at = app.views.system.cursor.min(SYSTEM_PRESETS.len() - 1);
+    let mut lines: Vec<Line> = SYSTEM_PRESETS
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let line = Line::from(span(format!(" {name}"), theme.style(Role::Normal)));
+            if i == cursor_at {
+                line.patch_style(theme.style(Role::Cursor))
+            } else {
+                line
+            }
+        })
+        .collect();
+    lines.push(Line::from(span(
+        "  Enter adds its [system] table",
+        theme.style(Role::Muted),
+    )));
+    frame.render_widget(Paragraph::new(lines), inner);
+}
+
 /// `rigid` or the law's name.
 fn contact_name(contact: &Contact) -> String {
     match contact {
@@ -110,6 +142,10 @@ pub fn note_texts(app: &App, model: Result<&SystemModel, &String>) -> Vec<(Strin
     }
     let model = match model {
         Ok(model) => model,
+        Err(_) if app.draft.system.is_none() => {
+            texts.extend(how_to_add_a_system());
+            return texts;
+        }
         Err(reason) => {
             texts.push((reason.clone(), Role::Error));
             return texts;
@@ -184,6 +220,29 @@ pub fn note_texts(app: &App, model: Result<&SystemModel, &String>) -> Vec<(Strin
     texts
 }
 
+/// What a scene without `[system]` shows instead of a run: how to add one, here or in its file.
+fn how_to_add_a_system() -> Vec<(String, Role)> {
+    let mut texts = vec![
+        (format!("{NO_SYSTEM}: nothing to run."), Role::Warning),
+        (
+            "Enter adds the chosen preset's table to this scene, its bodies as the body and \
+             the stop (u undoes, s saves); p opens a preset."
+                .to_string(),
+            Role::Normal,
+        ),
+        (
+            "Or add to the scene file, then hertz-tui --scene FILE:".to_string(),
+            Role::Normal,
+        ),
+    ];
+    texts.extend(TOML_SNIPPET.lines().map(|line| (line.to_string(), Role::Label)));
+    texts.push((
+        "Keys of each kind: docs/systems.md".to_string(),
+        Role::Muted,
+    ));
+    texts
+}
+
 fn notes(frame: &mut Frame, area: Rect, app: &App, model: Result<&SystemModel, &String>, roomy: bool) {
     let theme = app.theme;
     let block = pane("Which approach", theme, roomy);
@@ -235,8 +294,12 @@ fn charts(frame: &mut Frame, area: Rect, app: &App, model: Option<&SystemModel>,
         None => Vec::new(),
     }
     .into_iter();
+    let empty = match app.draft.system {
+        Some(_) => "no run yet",
+        None => "no system",
+    };
     for area in areas {
-        chart_pane(frame, area, app, motion.next(), "no run yet", running, roomy);
+        chart_pane(frame, area, app, motion.next(), empty, running, roomy);
     }
     let filling = app.studies.is_pending(StudyKind::Diagram);
     let chart = model.and_then(|model| {

@@ -56,12 +56,10 @@ impl Row {
     }
 }
 
-/// The view's settings: the table as edited, and the diagram's.
+/// The view's settings: the diagram's. The `[system]` table it edits is the draft's
+/// ([`Draft::system`](crate::ui::field::Draft)), so that `u` undoes its edits and `s` saves them.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Settings {
-    /// The `[system]` table as edited here, with the preset it was read from: loading another
-    /// preset shows that one's table.
-    pub edited: Option<(Option<String>, SystemSpec)>,
     /// The diagram's key; `None`: Γ for a ball, the frequency for an oscillator.
     pub diagram_key: Option<Param>,
     /// The diagram's range, SI; `None`: the default of its key.
@@ -71,16 +69,27 @@ pub struct Settings {
     pub budget: Option<(usize, usize)>,
 }
 
-/// The `[system]` table of the preset the explorer shows, or why there is none.
-pub fn preset_spec(registry: &Registry, preset: Option<&str>) -> Result<SystemSpec, String> {
-    let none = "this scene has no [system] table: open a system preset with p \
-                (bouncing-ball, impact-oscillator, impact-oscillator-clearance)";
-    let Some(name) = preset else {
-        return Err(none.into());
-    };
+/// The presets whose `[system]` table a scene without one can take.
+pub const SYSTEM_PRESETS: [&str; 3] = [
+    "bouncing-ball",
+    "impact-oscillator",
+    "impact-oscillator-clearance",
+];
+
+/// Why the view has nothing to run on a scene without `[system]`.
+pub const NO_SYSTEM: &str = "this scene has no [system] table";
+
+/// A `[system]` table to paste into a scene file: the bouncing-ball preset's (docs/systems.md §1).
+pub const TOML_SNIPPET: &str = "[system]
+kind = \"bouncing-ball\"
+amplitude = 0.001  # m
+frequency = 20.0   # Hz";
+
+/// The `[system]` table of preset `name`, or why there is none.
+pub fn preset_spec(registry: &Registry, name: &str) -> Result<SystemSpec, String> {
     match registry.scene_system(name, &[]) {
         Ok(Some(spec)) => Ok(spec),
-        Ok(None) => Err(none.into()),
+        Ok(None) => Err(format!("{name} has no [system] table")),
         Err(e) => Err(e.to_string()),
     }
 }
@@ -91,14 +100,6 @@ pub fn unit(param: Param, model: &SystemModel) -> Unit {
 }
 
 impl Settings {
-    /// The table in force: the edited one while the same preset is shown, else the preset's.
-    pub fn spec(&self, registry: &Registry, preset: Option<&str>) -> Result<SystemSpec, String> {
-        match &self.edited {
-            Some((of, spec)) if of.as_deref() == preset => Ok(*spec),
-            _ => preset_spec(registry, preset),
-        }
-    }
-
     /// The rows of the form for `model`: its keys, then the diagram's.
     pub fn rows(model: &SystemModel) -> Vec<Row> {
         SystemKey::ALL
@@ -155,14 +156,14 @@ impl Settings {
         self.show(row, model)
     }
 
-    /// Applies typed `text` to `row`; the reason, naming the key, if refused.
+    /// Applies typed `text` to `row`: the new `[system]` table if a key of it changed; the reason,
+    /// naming the key, if refused.
     pub fn apply(
         &mut self,
         row: Row,
         text: &str,
         model: &SystemModel,
-        preset: Option<&str>,
-    ) -> Result<(), String> {
+    ) -> Result<Option<SystemSpec>, String> {
         let param = match row {
             Row::Key(k) => Param::System(k),
             Row::From | Row::To => self.diagram_key(model),
@@ -174,36 +175,36 @@ impl Settings {
                 param.get(model).map_err(|e| e.to_string())?;
                 self.diagram_key = Some(param);
                 self.range = None;
-                return Ok(());
+                return Ok(None);
             }
             Row::Values => {
                 let n: f64 = text
                     .trim()
                     .parse()
                     .map_err(|_| format!("\"{}\" is not a whole number", text.trim()))?;
-                return self.set(row, n, model, preset);
+                return self.set(row, n, model);
             }
         };
         let value =
             units::parse(text, unit(param, model)).map_err(|e| format!("{}: {e}", param.path()))?;
-        self.set(row, value, model, preset)
+        self.set(row, value, model)
     }
 
-    /// Sets a numeric `row` to `value` (SI); the reason, naming the key, if refused.
+    /// Sets a numeric `row` to `value` (SI): the new `[system]` table if a key of it changed; the
+    /// reason, naming the key, if refused.
     pub fn set(
         &mut self,
         row: Row,
         value: f64,
         model: &SystemModel,
-        preset: Option<&str>,
-    ) -> Result<(), String> {
+    ) -> Result<Option<SystemSpec>, String> {
         let key = self.diagram_key(model);
         match row {
             Row::Key(k) => {
                 let changed = Param::System(k)
                     .apply(model, value)
                     .map_err(|e| e.to_string())?;
-                self.edited = Some((preset.map(str::to_string), changed.spec));
+                return Ok(Some(changed.spec));
             }
             Row::From | Row::To => {
                 key.apply(model, value).map_err(|e| e.to_string())?;
@@ -222,29 +223,35 @@ impl Settings {
             }
             Row::DiagramKey => {}
         }
-        Ok(())
+        Ok(None)
     }
 
-    /// ← → on a numeric row: 5 % up or down (values: twice or half as many).
-    pub fn nudge(&mut self, row: Row, up: bool, model: &SystemModel, preset: Option<&str>) -> Result<(), String> {
+    /// ← → on a numeric row: 5 % up or down (values: twice or half as many); the new `[system]`
+    /// table if a key of it changed.
+    pub fn nudge(
+        &mut self,
+        row: Row,
+        up: bool,
+        model: &SystemModel,
+    ) -> Result<Option<SystemSpec>, String> {
         let (from, to) = self.range(model);
         let factor = if up { 1.05 } else { 1.0 / 1.05 };
         match row {
             Row::DiagramKey => {
                 self.step_key(model, up);
-                Ok(())
+                Ok(None)
             }
             Row::Values => {
                 let n = self.values.unwrap_or(DEFAULT_VALUES) as f64;
                 let n = if up { n * 2.0 } else { (n / 2.0).floor() };
-                self.set(row, n.clamp(2.0, 2000.0), model, preset)
+                self.set(row, n.clamp(2.0, 2000.0), model)
             }
             Row::Key(k) => {
                 let v = Param::System(k).get(model).map_err(|e| e.to_string())?;
-                self.set(row, v * factor, model, preset)
+                self.set(row, v * factor, model)
             }
-            Row::From => self.set(row, from * factor, model, preset),
-            Row::To => self.set(row, to * factor, model, preset),
+            Row::From => self.set(row, from * factor, model),
+            Row::To => self.set(row, to * factor, model),
         }
     }
 
@@ -302,13 +309,8 @@ pub fn diagram_options(settings: &Settings) -> DiagramOptions {
     }
 }
 
-/// The model of `scene` in the table in force, or why there is none (naming the key).
-pub fn model(
-    settings: &Settings,
-    registry: &Registry,
-    preset: Option<&str>,
-    scene: &Scene,
-) -> Result<SystemModel, String> {
-    let spec = settings.spec(registry, preset)?;
-    SystemModel::from_scene(scene, &spec).map_err(|e| e.to_string())
+/// The model of `scene` in its `[system]` table `system`, or why there is none (naming the key).
+pub fn model(system: Option<&SystemSpec>, scene: &Scene) -> Result<SystemModel, String> {
+    let spec = system.ok_or(NO_SYSTEM)?;
+    SystemModel::from_scene(scene, spec).map_err(|e| e.to_string())
 }
