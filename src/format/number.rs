@@ -111,8 +111,20 @@ impl Digits {
         format!("{}{first}{point}{rest}e{}", self.sign(), self.exponent)
     }
 
-    /// The digits with the point after the digit at 10^`shift` (0 to 2, an engineering prefix's
-    /// shift), zeros filling in where the digits end before it: for `2.388`, `23.88` at 1; for
+    /// Plain notation of the digits, for an exponent below the digits' count: `12.35`, `0.01235`.
+    fn plain(&self, zeros: Zeros) -> String {
+        match usize::try_from(self.exponent) {
+            Ok(shift) => self.shifted(shift, zeros),
+            Err(_) => {
+                let leading = "0".repeat(self.exponent.unsigned_abs() as usize - 1);
+                let number = format!("{}0.{leading}{}", self.sign(), self.digits);
+                trim(&number, zeros).to_string()
+            }
+        }
+    }
+
+    /// The digits with the point after the digit at 10^`shift` (an engineering prefix's shift,
+    /// 0 to 2, or a plain number's exponent), zeros filling in where the digits end before it: for `2.388`, `23.88` at 1; for
     /// `3`, `300` at 2.
     fn shifted(&self, shift: usize, zeros: Zeros) -> String {
         let whole = shift + 1;
@@ -168,9 +180,13 @@ pub fn significant(value: f64, digits: usize, zeros: Zeros) -> String {
     if !(-4..=6).contains(&rounded.exponent) {
         return rounded.scientific(zeros);
     }
-    // The decimals that keep `digits` significant digits, rounded where `{:.*e}` rounds.
-    let decimals = (digits as i32 - 1 - rounded.exponent).max(0) as usize;
-    trim(&format!("{value:.decimals$}"), zeros).to_string()
+    if rounded.exponent >= digits as i32 - 1 {
+        // A whole number: written whole (1234567 at four digits), as `{:.0}` rounds it.
+        return trim(&format!("{value:.0}"), zeros).to_string();
+    }
+    // The same digits as `{:.decimals$}` with the decimals that keep `digits` significant digits
+    // (a carry makes them all zeros either way), without formatting the value a second time.
+    rounded.plain(zeros)
 }
 
 /// `value` in scientific notation with `digits` significant digits: 1.465e10, 9.100e-12.
@@ -231,6 +247,39 @@ pub fn with_unit(number: String, prefix: &str, unit: &str) -> String {
 mod tests {
     use super::Zeros::{Keep, Trim};
     use super::*;
+
+    /// Plain notation from the rounded digits is what formatting the value again with the
+    /// decimals that keep its significant digits gives, carries (9.9996 → 10.00) included.
+    #[test]
+    fn plain_digits_are_the_formatted_decimals() {
+        let mut checked = 0;
+        for mantissa in [
+            1.0, 1.2345, 2.5, 3.25159, 9.9996, 9.99996, 5.55555, 7.0, 1.0005,
+        ] {
+            for exponent in -5..=7 {
+                for sign in [1.0, -1.0] {
+                    let value = sign * mantissa * 10f64.powi(exponent);
+                    for digits in 1..=6 {
+                        let rounded = Digits::new(value, digits);
+                        if !(-4..digits as i32 - 1).contains(&rounded.exponent) {
+                            continue;
+                        }
+                        let decimals = (digits as i32 - 1 - rounded.exponent) as usize;
+                        for zeros in [Zeros::Keep, Zeros::Trim] {
+                            let formatted = format!("{value:.decimals$}");
+                            assert_eq!(
+                                significant(value, digits, zeros),
+                                trim(&formatted, zeros),
+                                "{value} at {digits} digits"
+                            );
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 500, "{checked}");
+    }
 
     #[test]
     fn engineering_prefixes() {

@@ -20,7 +20,7 @@
 //! options, the numbers `solve`'s table shows.
 use crate::model::calibrate::{hunt_crossley_chi, hunt_crossley_restitution};
 use crate::model::force::{ForceModel, ImpactParams};
-use crate::model::impact::{SolveOptions, solve_impact};
+use crate::model::impact::{ImpactSummary, SolveOptions, solve_impact};
 use crate::model::pressure::Regime;
 use crate::model::quasistatic::Quasistatic;
 use crate::model::scene::{Assumed, Scene};
@@ -142,15 +142,18 @@ pub struct Outcome {
 impl Outcome {
     /// `model` solved on `params` with the default options; `None` where the solve fails.
     pub fn solve(model: ForceModel, params: &ImpactParams) -> Option<Outcome> {
-        let summary = solve_impact(model, params, &SolveOptions::default())
-            .ok()?
-            .summary;
-        Some(Outcome {
+        let solution = solve_impact(model, params, &SolveOptions::default()).ok()?;
+        Some(Outcome::of(model, &solution.summary))
+    }
+
+    /// The outcome of `model` from the summary of its solve.
+    pub fn of(model: ForceModel, summary: &ImpactSummary) -> Outcome {
+        Outcome {
             model,
             e_out: summary.e_out,
             f_max: summary.f_max,
             x_residual: summary.x_residual,
-        })
+        }
     }
 
     /// Whether it realises `e` within [`RESTITUTION_TOLERANCE`].
@@ -217,6 +220,17 @@ pub struct Recommendation {
 
 /// The recommendation for `scene`, whose quasistatic estimate is `quasistatic`.
 pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
+    recommend_reusing(scene, quasistatic, |_| None)
+}
+
+/// [`recommend`], taking a law's outcome from `known` where the caller has solved that law on
+/// the scene already with the default options (the explorer's table, most often), so that no law
+/// is solved twice for one edit; the laws `known` lacks are solved here.
+pub fn recommend_reusing(
+    scene: &Scene,
+    quasistatic: &Quasistatic,
+    known: impl Fn(ForceModel) -> Option<Outcome>,
+) -> Recommendation {
     let impact = &scene.impact;
     let (v0, e, x_pl) = (impact.v0, impact.restitution, impact.plastic_indentation);
     let assumed = scene.assumed;
@@ -228,11 +242,12 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
     let dent_given = x_pl > 0.0 && !assumed.plastic_indentation;
     let hysteresis = [ForceModel::LankaraniNikravesh, ForceModel::HuntCrossley];
     let params = scene.impact_params(quasistatic);
+    let solve = |model: ForceModel| known(model).or_else(|| Outcome::solve(model, &params));
     // Thornton's elastic–plastic law takes its yield from σ_y (docs/physics.md §6.6): solved
     // once the contact yields, as a check on the laws that take their loss from e.
     let thornton = match regime {
         Regime::Elastic => None,
-        Regime::YieldBegins | Regime::FullyPlastic => Outcome::solve(THORNTON, &params),
+        Regime::YieldBegins | Regime::FullyPlastic => solve(THORNTON),
     };
     let thornton_fits: Vec<ForceModel> = thornton.iter().map(|t| t.model).collect();
     let (model, others, reason): (ForceModel, Vec<ForceModel>, Reason) = match regime {
@@ -288,7 +303,7 @@ pub fn recommend(scene: &Scene, quasistatic: &Quasistatic) -> Recommendation {
     });
     let outcome = match thornton {
         Some(t) if t.model == model => Some(t),
-        _ => Outcome::solve(model, &params),
+        _ => solve(model),
     };
     let yielding = Yielding::of(scene);
     Recommendation {
@@ -340,6 +355,29 @@ mod tests {
         let scene = steel_scene(v0, e, x_pl);
         let q = scene.quasistatic().unwrap();
         recommend(&scene, &q)
+    }
+
+    /// The caller's solves stand in for the recommendation's own: the same solves give the same
+    /// recommendation, a known outcome is taken as it is, and a law it lacks is solved.
+    #[test]
+    fn known_outcomes_are_taken_and_the_others_solved() {
+        let scene = steel_scene(0.3, 0.6, 2.3e-6);
+        let q = scene.quasistatic().unwrap();
+        let params = scene.impact_params(&q);
+        let solved = recommend(&scene, &q);
+        assert_eq!(solved.model, ForceModel::Proposed);
+        assert!(solved.thornton.is_some() && solved.outcome.is_some());
+        let reused = recommend_reusing(&scene, &q, |m| Outcome::solve(m, &params));
+        assert_eq!(reused, solved);
+        let known = Outcome {
+            model: THORNTON,
+            e_out: 0.123,
+            f_max: 1.0,
+            x_residual: 0.0,
+        };
+        let partly = recommend_reusing(&scene, &q, |m| (m == THORNTON).then_some(known));
+        assert_eq!(partly.thornton, Some(known));
+        assert_eq!(partly.outcome, solved.outcome);
     }
 
     #[test]

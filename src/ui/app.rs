@@ -2,6 +2,7 @@
 
 use std::cell::Cell;
 use std::path::PathBuf;
+use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
 use tui_input::{Input, InputRequest};
@@ -10,7 +11,7 @@ use crate::model::force::LAW_COUNT;
 use crate::model::impact::SolveOptions;
 use crate::model::presets::Registry;
 use crate::model::presets::kebab_case;
-use crate::model::recommend::{Recommendation, recommend};
+use crate::model::recommend::{Recommendation, recommend_reusing};
 use crate::model::scene_file::{SceneView, system_table};
 use crate::model::scene_fit::FittedKind;
 use crate::model::scene_key::{BodyIndex, SceneKey};
@@ -201,8 +202,9 @@ pub struct Valid {
     /// Where the scene leaves the theory's range (a contact not small against R, a cylinder fit
     /// that departs from eqs 13–14), computed once per edit.
     pub warnings: Vec<ModelWarning>,
-    /// The recommendation (it solves the laws it speaks of), computed once per edit.
-    pub advice: Recommendation,
+    /// The recommendation (it solves the laws it speaks of): computed when first shown, once per
+    /// edit ([`App::advice`]), so that a burst of keys does not solve them for every key.
+    advice: OnceLock<Recommendation>,
 }
 
 /// Models checked when the explorer opens on a bare scene: the paper's Fig. 5 three plus elastic
@@ -486,6 +488,17 @@ impl App {
             .collect()
     }
 
+    /// The recommendation for the last valid scene, computed the first time it is asked for after
+    /// an edit; the laws it speaks of that the table has solved as it would are not solved again.
+    pub fn advice(&self) -> Option<&Recommendation> {
+        let valid = self.valid.as_ref()?;
+        Some(valid.advice.get_or_init(|| {
+            recommend_reusing(&valid.scene, &valid.quasistatic, |model| {
+                self.solutions.default_outcome(model, &valid.params)
+            })
+        }))
+    }
+
     /// The scene's name and description as shown, exported and saved: those loaded while the
     /// draft is as loaded, else named by its bodies with what was edited (a preset's "…on steel
     /// plate" is not the name of a scene whose plate became aluminium).
@@ -682,7 +695,6 @@ impl App {
                     .pair()
                     .map(|pair| scene_warnings(&pair, &quasistatic))
                     .unwrap_or_default();
-                let advice = recommend(&self.draft.scene, &quasistatic);
                 // Named as shown: the engine panel and the studies read the valid scene's name.
                 let mut scene = self.draft.scene.clone();
                 scene.name = self.title().0;
@@ -691,7 +703,7 @@ impl App {
                     quasistatic,
                     params,
                     warnings,
-                    advice,
+                    advice: OnceLock::new(),
                 });
                 if !self.request_solves(start) && !self.solutions.any_pending() {
                     // Only the estimate was recomputed.

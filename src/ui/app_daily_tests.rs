@@ -573,13 +573,13 @@ fn a_preset_s_stand_ins_are_shown_as_assumed_until_edited() {
             .count()
     };
     assert_eq!(assumed_rows(&a), 2);
-    let why = crate::format::recommendation::why(&a.valid.as_ref().unwrap().advice, &a.draft.scene);
+    let why = crate::format::recommendation::why(a.advice().unwrap(), &a.draft.scene);
     assert!(why.contains("e = 0.6 was not given"), "{why}");
     a.cursor = Cursor::Field(Field::Number(SceneKey::Restitution));
     key(&mut a, KeyCode::Left);
     assert!(!a.draft.scene.assumed.restitution);
     assert_eq!(assumed_rows(&a), 1);
-    let why = crate::format::recommendation::why(&a.valid.as_ref().unwrap().advice, &a.draft.scene);
+    let why = crate::format::recommendation::why(a.advice().unwrap(), &a.draft.scene);
     assert!(
         !why.contains("was not given (a stand-in): what rests on e"),
         "{why}"

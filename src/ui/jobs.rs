@@ -1,15 +1,15 @@
-//! The explorer's background work: one queue type, one thread per queue, for any kind of job (the
-//! solves and the studies each have a queue of their own, so that a work-precision ladder never
-//! delays a solve). A job belongs to a slot (a model, a kind of study); a newer job of the same
-//! slot supersedes a queued one, and the running one may stop early: it polls whether
+//! The explorer's background work: one queue type, served by threads of its own, for any kind of
+//! job (the solves and the studies each have a queue of their own, so that a work-precision
+//! ladder never delays a solve; the solves are served by two threads, so that an edit's laws are
+//! solved on both cores). A job belongs to a slot (a model, a kind of study); a newer job of the
+//! same slot supersedes a queued one, and the running one may stop early: it polls whether
 //! [`Jobs::submit`] has recorded a newer generation for its slot since.
 
 use std::any::Any;
 use std::collections::HashMap;
 use std::hash::Hash;
 use std::panic::{self, AssertUnwindSafe};
-use std::sync::mpsc::{self, Receiver, Sender};
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
 use std::thread;
 
 /// Work the queue runs off the UI thread.
@@ -41,86 +41,140 @@ pub trait Background: Send + 'static {
     fn panicked(&self, message: &str) -> String;
 }
 
-/// A report of a queue: an outcome, or the message of a panic (a bug; the queue's thread stops).
+/// A report of a queue: an outcome, or the message of a panic (a bug; the queue's threads stop).
 pub type Report<T> = Result<T, String>;
 
-/// The generation of the latest request of every slot.
-type Latest<S> = Arc<Mutex<HashMap<S, u64>>>;
+/// What the handle and the queue's threads share.
+struct Shared<J: Background> {
+    state: Mutex<State<J>>,
+    /// Signalled when a job is queued or the queue closes.
+    changed: Condvar,
+}
 
-/// Handle of a queue's thread; dropping it ends the thread after the current job.
+struct State<J: Background> {
+    /// Jobs not yet started.
+    queue: Vec<J>,
+    /// The generation of the latest request of every slot.
+    latest: HashMap<J::Slot, u64>,
+    /// False once the handle is dropped, nobody listens or a job panicked: the threads end.
+    open: bool,
+}
+
+impl<J: Background> Shared<J> {
+    fn new() -> Self {
+        Shared {
+            state: Mutex::new(State {
+                queue: Vec::new(),
+                latest: HashMap::new(),
+                open: true,
+            }),
+            changed: Condvar::new(),
+        }
+    }
+
+    /// A panic never happens while the state is held, so a poisoned lock still holds a whole one.
+    fn lock(&self) -> MutexGuard<'_, State<J>> {
+        self.state.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    /// The next job to run, waiting for one; `None` once the queue is closed.
+    fn next(&self) -> Option<J> {
+        let mut state = self.lock();
+        loop {
+            if !state.open {
+                return None;
+            }
+            if let Some(job) = take_next(&mut state.queue) {
+                return Some(job);
+            }
+            state = self
+                .changed
+                .wait(state)
+                .unwrap_or_else(PoisonError::into_inner);
+        }
+    }
+
+    fn is_superseded(&self, slot: J::Slot, generation: u64) -> bool {
+        let state = self.lock();
+        state
+            .latest
+            .get(&slot)
+            .is_some_and(|&newest| newest != generation)
+    }
+
+    fn close(&self) {
+        self.lock().open = false;
+        self.changed.notify_all();
+    }
+}
+
+/// Handle of a queue's threads; dropping it ends them after their current jobs.
 pub struct Jobs<J: Background> {
-    jobs: Sender<J>,
-    latest: Latest<J::Slot>,
+    shared: Arc<Shared<J>>,
 }
 
 impl<J: Background> Jobs<J> {
-    /// Starts the thread `name`; `deliver` receives every report and returns false once nobody
-    /// listens.
+    /// Starts `threads` threads named `name` on one queue; `deliver` receives every report (from
+    /// any of them) and returns false once nobody listens.
     pub fn spawn(
         name: &str,
-        deliver: impl Fn(Report<J::Outcome>) -> bool + Send + 'static,
+        threads: usize,
+        deliver: impl Fn(Report<J::Outcome>) -> bool + Send + Sync + 'static,
     ) -> std::io::Result<Jobs<J>> {
-        let (jobs, queue) = mpsc::channel();
-        let latest: Latest<J::Slot> = Arc::default();
-        let seen = Arc::clone(&latest);
-        thread::Builder::new()
-            .name(name.into())
-            .spawn(move || serve(&queue, &seen, deliver))?;
-        Ok(Jobs { jobs, latest })
-    }
-
-    /// Queues a job and marks older jobs of its slot as superseded; false if the thread stopped.
-    pub fn submit(&self, job: J) -> bool {
-        record(&self.latest, job.slot(), job.generation());
-        self.jobs.send(job).is_ok()
-    }
-}
-
-fn record<S: Eq + Hash>(latest: &Mutex<HashMap<S, u64>>, slot: S, generation: u64) {
-    // A panic never happens while the map is held, so a poisoned lock still holds a whole map.
-    let mut map = latest.lock().unwrap_or_else(PoisonError::into_inner);
-    map.insert(slot, generation);
-}
-
-fn is_superseded<S: Eq + Hash>(latest: &Mutex<HashMap<S, u64>>, slot: S, generation: u64) -> bool {
-    let map = latest.lock().unwrap_or_else(PoisonError::into_inner);
-    map.get(&slot).is_some_and(|&newest| newest != generation)
-}
-
-fn serve<J: Background>(
-    incoming: &Receiver<J>,
-    latest: &Latest<J::Slot>,
-    deliver: impl Fn(Report<J::Outcome>) -> bool,
-) {
-    let mut queue: Vec<J> = Vec::new();
-    loop {
-        if queue.is_empty() {
-            match incoming.recv() {
-                Ok(job) => queue.push(job),
-                Err(_) => return,
+        let shared = Arc::new(Shared::new());
+        let deliver = Arc::new(deliver);
+        for _ in 0..threads.max(1) {
+            let (ours, deliver) = (Arc::clone(&shared), Arc::clone(&deliver));
+            let started = thread::Builder::new()
+                .name(name.into())
+                .spawn(move || serve(&ours, deliver.as_ref()));
+            if let Err(e) = started {
+                shared.close();
+                return Err(e);
             }
         }
-        for job in incoming.try_iter() {
-            supersede(&mut queue, job);
+        Ok(Jobs { shared })
+    }
+
+    /// Queues a job and marks older jobs of its slot as superseded; false if the threads stopped.
+    pub fn submit(&self, job: J) -> bool {
+        let mut state = self.shared.lock();
+        if !state.open {
+            return false;
         }
-        let Some(job) = take_next(&mut queue) else {
-            continue;
-        };
+        state.latest.insert(job.slot(), job.generation());
+        supersede(&mut state.queue, job);
+        drop(state);
+        self.shared.changed.notify_one();
+        true
+    }
+}
+
+impl<J: Background> Drop for Jobs<J> {
+    fn drop(&mut self) {
+        self.shared.close();
+    }
+}
+
+/// Runs the queue's jobs until it closes; closes it when a job panics or nobody listens.
+fn serve<J: Background>(shared: &Shared<J>, deliver: &dyn Fn(Report<J::Outcome>) -> bool) {
+    while let Some(job) = shared.next() {
         let (slot, generation) = (job.slot(), job.generation());
-        let stop = || is_superseded(latest, slot, generation);
+        let stop = || shared.is_superseded(slot, generation);
         let partial = |outcome| {
             deliver(Ok(outcome));
         };
         let report = panic::catch_unwind(AssertUnwindSafe(|| job.run_partially(&stop, &partial)))
             .map_err(|payload| job.panicked(&panic_message(payload.as_ref())));
-        let stop_thread = report.is_err();
+        let panicked = report.is_err();
         let delivered = match report {
             Ok(Some(outcome)) => deliver(Ok(outcome)),
             // Superseded on the way: its successor reports instead.
             Ok(None) => true,
             Err(message) => deliver(Err(message)),
         };
-        if !delivered || stop_thread {
+        if !delivered || panicked {
+            shared.close();
             return;
         }
     }
@@ -156,9 +210,13 @@ fn panic_message(payload: &(dyn Any + Send)) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::mpsc;
+
+    /// Lets the probes of slot 8 end.
+    static GO: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
     /// A job of slot `slot` that counts its checks of `stop` and reports its generation; slot 9
-    /// panics.
+    /// panics, slot 8 waits for [`GO`].
     #[derive(Debug)]
     struct Probe {
         slot: u8,
@@ -184,6 +242,9 @@ mod tests {
 
         fn run(&self, stop: &(dyn Fn() -> bool + Sync)) -> Option<u64> {
             assert!(self.slot != 9, "probe {}", self.generation);
+            while self.slot == 8 && !GO.load(std::sync::atomic::Ordering::SeqCst) {
+                thread::yield_now();
+            }
             (!stop()).then_some(self.generation)
         }
 
@@ -234,33 +295,48 @@ mod tests {
     fn a_superseded_job_stops_and_only_the_latest_reports() {
         // Served on this thread: job 1 runs although generation 2 was already asked for, as when
         // a newer request arrives mid-job; it stops at its first check and reports nothing. Job 3
-        // of another slot is not stopped by it.
-        let (jobs, incoming) = mpsc::channel();
-        let latest: Latest<u8> = Arc::default();
-        record(&latest, 0, 2);
-        jobs.send(probe(1, 0, 0)).unwrap();
-        jobs.send(probe(3, 1, 0)).unwrap();
-        drop(jobs);
+        // of another slot is not stopped by it; its report, answered "nobody listens", ends it.
+        let shared = Shared::new();
+        {
+            let mut state = shared.lock();
+            state.latest.insert(0, 2);
+            state.queue.extend([probe(1, 0, 0), probe(3, 1, 0)]);
+        }
         let reports = Mutex::new(Vec::new());
-        serve(&incoming, &latest, |r| {
+        serve(&shared, &|r| {
             reports.lock().unwrap().push(r);
-            true
+            false
         });
         assert_eq!(*reports.lock().unwrap(), [Ok(3)]);
+        assert!(!shared.lock().open, "closed: nobody listens");
 
-        // Through the thread: the latest request reports, and dropping the handle ends it.
+        // Through the threads: the latest request reports, and dropping the handle ends them.
         let (tx, rx) = mpsc::channel();
-        let queue = Jobs::spawn("test-jobs", move |report| tx.send(report).is_ok()).unwrap();
+        let queue = Jobs::spawn("test-jobs", 2, move |report| tx.send(report).is_ok()).unwrap();
         assert!(queue.submit(probe(4, 0, 0)));
         assert_eq!(rx.recv().unwrap(), Ok(4));
         drop(queue);
-        assert!(rx.recv().is_err(), "the thread ended");
+        assert!(rx.recv().is_err(), "the threads ended");
+    }
+
+    #[test]
+    fn two_threads_serve_one_queue() {
+        // Slot 8 blocks until told to go on: with two threads, the other jobs are served meanwhile.
+        let (tx, rx) = mpsc::channel();
+        let queue = Jobs::spawn("test-jobs", 2, move |report| tx.send(report).is_ok()).unwrap();
+        assert!(queue.submit(probe(1, 8, 0)));
+        assert!(queue.submit(probe(2, 1, 0)));
+        assert!(queue.submit(probe(3, 2, 0)));
+        assert_eq!(rx.recv().unwrap(), Ok(2));
+        assert_eq!(rx.recv().unwrap(), Ok(3));
+        GO.store(true, std::sync::atomic::Ordering::SeqCst);
+        assert_eq!(rx.recv().unwrap(), Ok(1));
     }
 
     #[test]
     fn a_job_reports_what_it_has_so_far_then_its_end_in_order() {
         let (tx, rx) = mpsc::channel();
-        let queue = Jobs::spawn("test-jobs", move |report| tx.send(report).is_ok()).unwrap();
+        let queue = Jobs::spawn("test-jobs", 1, move |report| tx.send(report).is_ok()).unwrap();
         assert!(queue.submit(probe(2, 7, 0)));
         assert!(queue.submit(probe(3, 1, 0)));
         let reports: Vec<Report<u64>> = (0..4).map(|_| rx.recv().unwrap()).collect();
@@ -270,10 +346,10 @@ mod tests {
     #[test]
     fn a_panic_is_reported_and_stops_the_thread() {
         let (tx, rx) = mpsc::channel();
-        let queue = Jobs::spawn("test-jobs", move |report| tx.send(report).is_ok()).unwrap();
+        let queue = Jobs::spawn("test-jobs", 1, move |report| tx.send(report).is_ok()).unwrap();
         assert!(queue.submit(probe(1, 9, 0)));
         assert_eq!(rx.recv().unwrap(), Err("slot 9 panicked (probe 1)".into()));
-        assert!(rx.recv().is_err(), "the thread ended");
+        assert!(rx.recv().is_err(), "the threads ended");
     }
 
     #[test]

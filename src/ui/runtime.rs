@@ -111,6 +111,10 @@ where
     Ok(())
 }
 
+/// Threads solving an edit's laws: an edit with every law checked is solved on two cores
+/// (a study's own parallel work has its queue and thread).
+const SOLVER_THREADS: usize = 2;
+
 /// The longest a frame waits for the solves the keys before it started (a frame at 120 Hz).
 pub const SOLVE_WAIT: Duration = Duration::from_millis(8);
 
@@ -131,12 +135,12 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     let (events, wakes) = mpsc::channel();
     spawn_input(events.clone()).wrap_err("cannot start the input thread")?;
     let reports = events.clone();
-    let solves: Jobs<Job> = Jobs::spawn("hertz-solver", move |report| {
+    let solves: Jobs<Job> = Jobs::spawn("hertz-solver", SOLVER_THREADS, move |report| {
         reports.send(Wake::Solver(report)).is_ok()
     })
     .wrap_err("cannot start the solver thread")?;
     let study_reports = events.clone();
-    let studies: Jobs<StudyJob> = Jobs::spawn("hertz-studies", move |report| {
+    let studies: Jobs<StudyJob> = Jobs::spawn("hertz-studies", 1, move |report| {
         study_reports.send(Wake::Study(report)).is_ok()
     })
     .wrap_err("cannot start the study thread")?;
@@ -169,25 +173,24 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
                 execute!(std::io::stdout(), DisableMouseCapture)?;
             }
         }
-        let first = match wait_before_drawing(app.solutions.any_pending(), Instant::now(), due) {
-            Some(wait) => match wakes.recv_timeout(wait) {
-                Ok(wake) => wake,
-                // The frame is due: drawn, with what is still computing marked so.
-                Err(RecvTimeoutError::Timeout) => continue,
-                Err(RecvTimeoutError::Disconnected) => {
-                    return Err(eyre!("the input and solver threads stopped"));
+        let (first, after_a_frame) =
+            match wait_before_drawing(app.solutions.any_pending(), Instant::now(), due) {
+                Some(wait) => match wakes.recv_timeout(wait) {
+                    Ok(wake) => (wake, false),
+                    // The frame is due: drawn, with what is still computing marked so.
+                    Err(RecvTimeoutError::Timeout) => continue,
+                    Err(RecvTimeoutError::Disconnected) => {
+                        return Err(eyre!("the input and solver threads stopped"));
+                    }
+                },
+                None => {
+                    draw_synchronized(terminal, &mut std::io::stdout(), &app)?;
+                    let wake = wakes
+                        .recv()
+                        .wrap_err("the input and solver threads stopped")?;
+                    (wake, true)
                 }
-            },
-            None => {
-                draw_synchronized(terminal, &mut std::io::stdout(), &app)?;
-                let wake = wakes
-                    .recv()
-                    .wrap_err("the input and solver threads stopped")?;
-                // What this wake starts is drawn by then at the latest.
-                due = Instant::now() + SOLVE_WAIT;
-                wake
-            }
-        };
+            };
         for wake in waiting(first, &wakes) {
             match wake {
                 Wake::Terminal(events) => {
@@ -212,6 +215,11 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
             if app.quit {
                 return Ok(());
             }
+        }
+        if after_a_frame {
+            // What these wakes started is drawn by then at the latest. The wait starts once they
+            // are handled, when their solves are queued: a burst of keys takes a while to handle.
+            due = Instant::now() + SOLVE_WAIT;
         }
     }
 }

@@ -9,6 +9,7 @@ use std::time::Duration;
 use crate::chart::sample::{ChartDots, Series};
 use crate::model::force::{Damping, LAW_COUNT};
 use crate::model::impact::{ImpactSolution, SolveOptions};
+use crate::model::recommend::Outcome as Realised;
 use crate::model::{ForceModel, ImpactParams};
 
 /// One impact to solve off the UI thread.
@@ -23,6 +24,9 @@ pub struct Job {
     /// The damping value at v₀ of the scene's `[fit]` law when this model is it: solved with it,
     /// never calibrated (docs/fitting.md).
     pub fitted: Option<f64>,
+    /// The charts' widths when it was asked for: the solver samples the curves for them too,
+    /// off the UI thread.
+    pub dots: ChartDots,
 }
 
 /// What a solve produced; errors are kept as the solver's message.
@@ -38,6 +42,8 @@ pub struct Outcome {
     /// without one or a law that could not be built.
     pub damping: Option<Damping>,
     pub elapsed: Duration,
+    /// The solution's curves sampled for the job's charts (`None` for a failed solve).
+    pub sampled: Option<(ChartDots, Arc<Series>)>,
 }
 
 #[derive(Debug, Clone, Default)]
@@ -76,7 +82,7 @@ impl Default for Solutions {
 }
 
 /// `solution`'s curves sampled for charts `dots` wide.
-fn sampled(model: ForceModel, solution: &ImpactSolution, dots: ChartDots) -> Arc<Series> {
+pub fn sampled(model: ForceModel, solution: &ImpactSolution, dots: ChartDots) -> Arc<Series> {
     Arc::new(Series::for_charts(model, solution, dots))
 }
 
@@ -121,6 +127,7 @@ impl Solutions {
             options,
             calibrate,
             fitted,
+            dots: self.dots,
         })
     }
 
@@ -131,9 +138,11 @@ impl Solutions {
             return false;
         }
         slot.pending = false;
-        slot.sampled = match &outcome.result {
-            Ok(solution) => Some(sampled(outcome.model, solution, self.dots)),
-            Err(_) => None,
+        slot.sampled = match (&outcome.result, outcome.sampled) {
+            // Sampled by the solver for the charts as they still are.
+            (Ok(_), Some((dots, series))) if dots == self.dots => Some(series),
+            (Ok(solution), _) => Some(sampled(outcome.model, solution, self.dots)),
+            (Err(_), _) => None,
         };
         slot.shown = Some(outcome.result);
         slot.damping = outcome.damping;
@@ -177,6 +186,19 @@ impl Solutions {
         self.slots[index(model)].sampled.as_deref()
     }
 
+    /// `model` solved on `params` with the default options, uncalibrated, as the recommendation
+    /// solves it: the latest finished solve where it is that one (`None` otherwise).
+    pub fn default_outcome(&self, model: ForceModel, params: &ImpactParams) -> Option<Realised> {
+        let slot = &self.slots[index(model)];
+        if slot.pending || slot.inputs != Some((*params, SolveOptions::default(), false, None)) {
+            return None;
+        }
+        match &slot.shown {
+            Some(Ok(solution)) => Some(Realised::of(model, &solution.summary)),
+            _ => None,
+        }
+    }
+
     pub fn is_pending(&self, model: ForceModel) -> bool {
         self.slots[index(model)].pending
     }
@@ -198,6 +220,7 @@ mod tests {
             result: Err(message.into()),
             damping: None,
             elapsed: Duration::ZERO,
+            sampled: None,
         }
     }
 
@@ -269,6 +292,24 @@ mod tests {
         assert!(expected(wide) > expected(ChartDots::UNKNOWN_SCREEN));
         assert_eq!(count(&s), expected(wide));
         assert!(s.samples(ForceModel::Proposed).is_none());
+
+        // The solver's samples are kept where they are for the charts as they are, else sampled
+        // again (the screen was resized while it solved).
+        let ten = Arc::new(Series::sample(ForceModel::HuntCrossley, &solution, 10));
+        for (v0, dots, samples) in [
+            (0.4, wide, ten.samples.len()),
+            (0.5, ChartDots::UNKNOWN_SCREEN, expected(wide)),
+        ] {
+            let job = s
+                .request(ForceModel::HuntCrossley, fig5_params(v0), opts, false)
+                .unwrap();
+            assert!(s.accept(Outcome {
+                result: Ok(Arc::clone(&solution)),
+                sampled: Some((dots, Arc::clone(&ten))),
+                ..failed(&job, "")
+            }));
+            assert_eq!(count(&s), samples);
+        }
     }
 
     #[test]

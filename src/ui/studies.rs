@@ -246,7 +246,7 @@ mod tests {
     #[test]
     fn a_study_on_its_queue_reports_and_the_queue_ends_with_its_handle() {
         let (tx, rx) = std::sync::mpsc::channel();
-        let queue = Jobs::spawn("test-studies", move |report| tx.send(report).is_ok()).unwrap();
+        let queue = Jobs::spawn("test-studies", 1, move |report| tx.send(report).is_ok()).unwrap();
         assert!(queue.submit(job(3, StudyKind::Runs)));
         let outcome = rx.recv().unwrap().unwrap();
         assert_eq!(outcome.generation, 3);

@@ -11,21 +11,28 @@ use crate::model::force::AnyLaw;
 use crate::model::impact::{ImpactError, ImpactSolution, solve_law};
 
 use super::jobs::Background;
-use super::solutions::{Job, Outcome};
+use super::solutions::{Job, Outcome, sampled};
 
-/// Solves one job on the calling thread.
+/// Solves one job on the calling thread, and samples its curves for the job's charts (so that
+/// the UI thread only draws them).
 pub fn solve(job: &Job) -> Outcome {
     let start = Instant::now();
     let (result, damping) = match law_of(job) {
         Ok(law) => (solve_job(job, &law), law.damping()),
         Err(message) => (Err(message), None),
     };
+    let elapsed = start.elapsed();
+    let sampled = result
+        .as_ref()
+        .ok()
+        .map(|solution| (job.dots, sampled(job.model, solution, job.dots)));
     Outcome {
         generation: job.generation,
         model: job.model,
         result,
         damping,
-        elapsed: start.elapsed(),
+        elapsed,
+        sampled,
     }
 }
 
@@ -93,6 +100,7 @@ mod tests {
             options: SolveOptions::default(),
             calibrate: false,
             fitted: None,
+            dots: crate::chart::sample::ChartDots::UNKNOWN_SCREEN,
         }
     }
 

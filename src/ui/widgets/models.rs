@@ -91,9 +91,8 @@ pub fn model_at(
 pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     let theme = app.theme;
     let fits: Vec<ForceModel> = app
-        .valid
-        .as_ref()
-        .map(|v| v.advice.fits.clone())
+        .advice()
+        .map(|advice| advice.fits.clone())
         .unwrap_or_default();
     let rows = rows();
     // The title keeps a rule cell before the next pane's title at 80 columns.

@@ -30,41 +30,116 @@ pub fn key_of(name: &str) -> u64 {
 /// The dots of a run of points (fractional grid dots, x from the left, y from the top) joined by
 /// straight lines, drawn with `dash`: the dots along the line are counted from the run's start,
 /// and the pattern leaves out its `off` dots of each period. Dots off the `size` grid are dropped.
+///
+/// It runs once per sample of every curve of every chart in every frame (thousands a frame with
+/// every law checked), so it does no division and no call into libm per dot.
 pub fn trace(points: &[(f64, f64)], dash: Dash, size: (u16, u16), out: &mut Vec<(u16, u16)>) {
-    let (on, off) = dash.on_off();
-    let period = u32::from(on) + u32::from(off);
-    let mut counted: u32 = 0;
-    let mut last: Option<(i64, i64)> = None;
-    let mut put = |d: (i64, i64), out: &mut Vec<(u16, u16)>| {
-        if last == Some(d) {
-            return;
-        }
-        last = Some(d);
-        let draw = counted % period < u32::from(on);
-        counted = counted.wrapping_add(1);
-        let inside = (0..i64::from(size.0)).contains(&d.0) && (0..i64::from(size.1)).contains(&d.1);
-        if draw && inside {
-            out.push((d.0 as u16, d.1 as u16));
-        }
-    };
-    let round = |p: (f64, f64)| (p.0.round() as i64, p.1.round() as i64);
+    let mut pen = Pen::new(dash, size);
     let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
-    let mut points = points.iter().filter(finite).map(|&p| round(p));
+    let mut points = points
+        .iter()
+        .filter(finite)
+        .map(|&(x, y)| (nearest(x), nearest(y)));
     let Some(first) = points.next() else {
         return;
     };
-    put(first, out);
+    pen.put(first, out);
     let mut from = first;
     for to in points {
-        // A line of single steps, as Bresenham's: one dot per step along the longer side.
+        // A line of single steps, as Bresenham's: one dot per step along the longer side, the
+        // other side's dot the nearest to the line (a tie away from `from`); the last is `to`.
         let (dx, dy) = (to.0 - from.0, to.1 - from.1);
         let steps = dx.abs().max(dy.abs());
-        for i in 1..=steps {
-            let along = |d: i64| (d as f64 * i as f64 / steps as f64).round() as i64;
-            put((from.0 + along(dx), from.1 + along(dy)), out);
+        let (mut across, mut down) = (Along::new(dx, steps), Along::new(dy, steps));
+        for _ in 0..steps {
+            pen.put((from.0 + across.step(), from.1 + down.step()), out);
         }
         from = to;
     }
+}
+
+/// One coordinate along a line of `steps` single steps that moves it by `d` (|d| ≤ `steps`): at
+/// step i it is round(d·i/steps), half away from zero, counted without a division: the count
+/// 2|d|·i + steps rolls over at every 2·steps.
+struct Along {
+    sign: i64,
+    rise: i64,
+    run: i64,
+    count: i64,
+    at: i64,
+}
+
+impl Along {
+    fn new(d: i64, steps: i64) -> Along {
+        Along {
+            sign: d.signum(),
+            rise: 2 * d.abs(),
+            run: 2 * steps,
+            count: steps,
+            at: 0,
+        }
+    }
+
+    /// The coordinate after one more step.
+    fn step(&mut self) -> i64 {
+        self.count += self.rise;
+        if self.count >= self.run {
+            self.count -= self.run;
+            self.at += 1;
+        }
+        self.sign * self.at
+    }
+}
+
+/// Puts the dots of one run in its pattern: counts every new dot along it, keeps those the
+/// pattern draws that lie on the grid.
+struct Pen {
+    on: u32,
+    period: u32,
+    /// Dots counted so far, modulo the period.
+    phase: u32,
+    last: Option<(i64, i64)>,
+    size: (i64, i64),
+}
+
+impl Pen {
+    fn new(dash: Dash, size: (u16, u16)) -> Pen {
+        let (on, off) = dash.on_off();
+        Pen {
+            on: u32::from(on),
+            period: u32::from(on) + u32::from(off),
+            phase: 0,
+            last: None,
+            size: (i64::from(size.0), i64::from(size.1)),
+        }
+    }
+
+    fn put(&mut self, d: (i64, i64), out: &mut Vec<(u16, u16)>) {
+        if self.last == Some(d) {
+            return;
+        }
+        self.last = Some(d);
+        let draw = self.phase < self.on;
+        self.phase += 1;
+        if self.phase >= self.period {
+            self.phase = 0;
+        }
+        let inside = (0..self.size.0).contains(&d.0) && (0..self.size.1).contains(&d.1);
+        if draw && inside {
+            out.push((d.0 as u16, d.1 as u16));
+        }
+    }
+}
+
+/// `v` rounded half away from zero, as `f64::round` (which is a call into libm on baseline
+/// x86-64, once per sample here): truncation corrects by the fraction left. Beyond ±2³¹ dots a
+/// point is far off any grid and clamped there, so the lines towards it keep their direction.
+fn nearest(v: f64) -> i64 {
+    const FAR: f64 = 2_147_483_648.0;
+    let v = v.clamp(-FAR, FAR);
+    let truncated = v as i64;
+    let fraction = v - truncated as f64;
+    truncated + i64::from(fraction >= 0.5) - i64::from(fraction <= -0.5)
 }
 
 /// Cells (columns, rows) drawn by one curve where curves share them: a run of a few cells along a
@@ -164,6 +239,40 @@ mod tests {
             [(0, 1), (1, 1), (2, 1)],
             "off the grid and NaN: no dot"
         );
+    }
+
+    /// Every dot of a line is the one the rounded division gives.
+    #[test]
+    fn lines_take_the_nearest_dot_at_every_step() {
+        let lines: [(i64, i64); 8] = [
+            (7, 3),
+            (-7, 3),
+            (3, -7),
+            (-5, -5),
+            (6, 3),
+            (-6, 3),
+            (4, 0),
+            (0, -4),
+        ];
+        for (dx, dy) in lines {
+            let steps = dx.abs().max(dy.abs());
+            let (mut across, mut down) = (Along::new(dx, steps), Along::new(dy, steps));
+            for i in 1..=steps {
+                let divided = |d: i64| (d as f64 * i as f64 / steps as f64).round() as i64;
+                assert_eq!((across.step(), down.step()), (divided(dx), divided(dy)));
+            }
+        }
+    }
+
+    #[test]
+    fn nearest_rounds_as_f64_round() {
+        for v in [
+            0.0, 0.49, 0.5, 0.51, 1.5, 2.5, -0.5, -0.49, -1.5, -2.5, 7.999, 1e-300, 123.4999,
+        ] {
+            assert_eq!(nearest(v), v.round() as i64, "{v}");
+        }
+        assert_eq!(nearest(1e300), 2_147_483_648);
+        assert_eq!(nearest(-1e300), -2_147_483_648);
     }
 
     /// Three strokes on the same dots: each owns about a third of the 200 cells, and removing

@@ -59,7 +59,9 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     };
     let onset = &valid.quasistatic.onset;
     let v0 = valid.scene.impact.v0;
-    let advice = &valid.advice;
+    let Some(advice) = app.advice() else {
+        return;
+    };
     let regime_role = match advice.regime {
         Regime::Elastic => Role::Good,
         Regime::YieldBegins => Role::Warning,
