@@ -8,6 +8,7 @@
 //! a log axis, so that a renderer maps them linearly onto its plot area.
 
 pub mod figure;
+pub mod fit;
 pub mod kind;
 pub mod layout;
 pub mod restitution;

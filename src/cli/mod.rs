@@ -4,11 +4,13 @@ pub mod args;
 pub mod bench;
 pub mod bifurcation;
 pub mod error;
+pub mod fit;
 mod in_order;
 mod layout;
 mod list;
 pub mod orbit;
 pub mod plot;
+mod plot_fit;
 mod plot_system;
 mod report;
 pub mod restitution;
@@ -66,6 +68,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         Command::Sweep(args) => sweep::run(args, &registry)?,
         Command::Restitution(args) => restitution::run(args, &registry)?,
         Command::Translate(args) => translate::run(args, &registry)?,
+        Command::Fit(args) => fit::run(args, &registry)?,
         Command::Plot(args) => plot::run(args, &registry)?,
         Command::System(args) => system::run(args, &registry)?,
         Command::Orbit(args) => orbit::run(args, &registry)?,

@@ -42,8 +42,9 @@ pub fn load_system(source: &SceneSelection, registry: &Registry) -> Result<Syste
     Ok(SystemModel::from_scene(&scene, &spec)?)
 }
 
-/// The stops `args` asks for on `model`: rigid with the scene's e, the compliant law, or both.
-pub fn contacts(args: &ContactArgs, model: &SystemModel) -> Vec<Contact> {
+/// The stops `args` asks for on `model`: rigid with the scene's e, the compliant law, or both;
+/// `--damping fitted` needs the scene's `[fit]` to be of the compliant law.
+pub fn contacts(args: &ContactArgs, model: &SystemModel) -> Result<Vec<Contact>, CliError> {
     let rigid = Contact::rigid(model.restitution);
     let compliant = Contact::Compliant {
         model: args.law,
@@ -51,13 +52,31 @@ pub fn contacts(args: &ContactArgs, model: &SystemModel) -> Vec<Contact> {
             DampingChoice::PerImpact => CompliantDamping::PerImpact,
             DampingChoice::Calibrated => CompliantDamping::CalibratedTo(model.restitution),
             DampingChoice::Constant(value) => CompliantDamping::Constant(value),
+            DampingChoice::Fitted => {
+                let fit = model.scene.as_ref().and_then(|s| s.fit.as_ref());
+                match fit {
+                    Some(fit) if fit.kind.model() == Some(args.law) => {
+                        CompliantDamping::Fitted(fit.value)
+                    }
+                    _ => {
+                        return Err(CliError::Usage(format!(
+                            "--damping fitted: the scene has no [fit] of {} ({}); write one with hertz-tui fit --write-scene, or give --law its fitted law",
+                            args.law,
+                            fit.map_or("no [fit] table".to_string(), |f| format!(
+                                "its [fit] is {}",
+                                f.kind
+                            ))
+                        )));
+                    }
+                }
+            }
         },
     };
-    match args.contact {
+    Ok(match args.contact {
         ContactChoice::Rigid => vec![rigid],
         ContactChoice::Compliant => vec![compliant],
         ContactChoice::Both => vec![rigid, compliant],
-    }
+    })
 }
 
 /// How a contact is named in every output: `rigid` or the law's id.
@@ -203,7 +222,7 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
     let samples = args.history.map_or(0, |n| n as usize);
     let options = run_options(&args.run, samples);
     let period = model.spec.period();
-    let runs = contacts(&args.contact, &model)
+    let runs = contacts(&args.contact, &model)?
         .iter()
         .map(|contact| {
             let h = simulate(&model, contact, &options)?;
@@ -221,7 +240,7 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
             })
         })
         .collect::<Result<Vec<_>, CliError>>()?;
-    let verdict = match contacts(&args.contact, &model).last() {
+    let verdict = match contacts(&args.contact, &model)?.last() {
         Some(
             contact @ Contact::Compliant {
                 model: law,

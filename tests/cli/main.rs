@@ -1,6 +1,8 @@
 //! The command line driven as a user would: the real binary, its output parsed.
 
 mod commands;
+mod fit;
+mod fit_data;
 mod laws;
 mod plot;
 mod readme;

@@ -10,6 +10,11 @@ mod dry_friction_cutoff;
 mod engine_runs;
 mod engines;
 mod engines_vs_laws;
+#[allow(dead_code)]
+mod fit_common;
+mod fit_coverage;
+mod fit_recovery;
+mod fit_trace;
 mod impact_crosscheck;
 mod impact_exact;
 mod impact_paper;
