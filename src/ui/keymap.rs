@@ -239,6 +239,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('r') => Action::ResetField,
         KeyCode::Char('m') => Action::ToggleMouse,
         KeyCode::Char('f') => Action::Figure,
+        KeyCode::Char('o') => Action::Open,
         KeyCode::Char('v') => Action::CycleView(Nudge::Up),
         KeyCode::Char('V') => Action::CycleView(Nudge::Down),
         KeyCode::Char(',') => Action::MoveCursor {

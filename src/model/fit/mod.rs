@@ -289,17 +289,48 @@ impl Fitter {
 
     /// Fits every candidate to `data` and ranks them.
     pub fn fit(&self, data: &RestitutionData, opts: &FitOptions) -> Result<FitReport, FitError> {
+        // Never stopped, so always `Some`.
+        self.fit_until(data, opts, &|| false, &|| {})
+            .unwrap_or(Err(FitError::NoCandidates))
+    }
+
+    /// [`Fitter::fit`] that gives up (`None`) once `stop` returns true, checked before each
+    /// candidate, and calls `done` after each candidate fitted (the explorer's progress).
+    pub fn fit_until(
+        &self,
+        data: &RestitutionData,
+        opts: &FitOptions,
+        stop: &(dyn Fn() -> bool + Sync),
+        done: &(dyn Fn() + Sync),
+    ) -> Option<Result<FitReport, FitError>> {
         for p in &data.points {
-            p.validate()?;
+            if let Err(e) = p.validate() {
+                return Some(Err(e.into()));
+            }
         }
         let fit = |(c, f): &(Candidate, Result<Forward, FitError>)| {
-            (*c, f.clone().and_then(|f| fit_one(&f, data, opts)))
+            if stop() {
+                return None;
+            }
+            let fitted = f.clone().and_then(|f| fit_one(&f, data, opts));
+            done();
+            Some((*c, fitted))
         };
-        let results: Vec<(Candidate, Result<LawFit, FitError>)> = if opts.parallel {
+        let results: Option<Vec<(Candidate, Result<LawFit, FitError>)>> = if opts.parallel {
             self.forwards.par_iter().map(fit).collect()
         } else {
             self.forwards.iter().map(fit).collect()
         };
+        Some(self.ranked(results?, data, opts))
+    }
+
+    /// The report of every candidate's fit or failure, ranked.
+    fn ranked(
+        &self,
+        results: Vec<(Candidate, Result<LawFit, FitError>)>,
+        data: &RestitutionData,
+        opts: &FitOptions,
+    ) -> Result<FitReport, FitError> {
         let mut fits = Vec::new();
         let mut failed = Vec::new();
         for (c, r) in results {
