@@ -10,3 +10,4 @@ mod render;
 mod results_damping;
 mod system;
 mod system_scene;
+mod fit;

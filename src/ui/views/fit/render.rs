@@ -181,7 +181,12 @@ fn charts(
 ) {
     let [left, right] =
         Layout::horizontal([Constraint::Fill(3), Constraint::Fill(2)]).areas(area);
-    let file = loaded(app).map_or("", |(path, _)| path);
+    // The file's name: its folder is on the data file's line above.
+    let file = loaded(app)
+        .map(|(path, _)| std::path::Path::new(path))
+        .and_then(|p| p.file_name())
+        .map_or(String::new(), |n| n.to_string_lossy().into_owned());
+    let file = file.as_str();
     let size = |a: Rect| budget(a.width.saturating_sub(9), a.height.saturating_sub(6));
     let [chart, _] = fit_charts(file, fit, report, size(left));
     let [_, residuals] = fit_charts(file, fit, report, size(right));
@@ -222,26 +227,42 @@ fn table(frame: &mut Frame, area: Rect, app: &App, report: &FitReport, roomy: bo
     let rank_rows = usize::from(inner.height).saturating_sub(verdict_rows + 1);
     let cursor = app.views.fit.cursor.min(report.fits.len().saturating_sub(1));
     let first = cursor.saturating_sub(rank_rows.saturating_sub(1));
-    let wide = width >= 100;
+    let rows: Vec<[String; 6]> = report
+        .fits
+        .iter()
+        .map(|f| {
+            let (value, ci) = parameter_cells(f);
+            [
+                name(f.candidate).to_string(),
+                value,
+                ci,
+                num(f.score(report.criterion)),
+                num(f.delta),
+                num(f.weight),
+            ]
+        })
+        .collect();
     let ci_header = format!("{} % CI", significant(100.0 * level, 3, Zeros::Trim));
-    let mut header = format!("{:<3}{:<23}{:<26}{:<22}", "#", "law", "parameter", ci_header);
-    if wide {
-        header.push_str(&format!("{:>9}", c));
-    }
-    header.push_str(&format!("{:>9}{:>10}", format!("Δ{c}"), "weight"));
-    let mut lines = vec![Line::from(span(header, theme.style(Role::Label)))];
-    for (i, f) in report.fits.iter().enumerate().skip(first).take(rank_rows) {
-        let (value, ci) = parameter_cells(f);
-        let mut text = format!("{:<3}{:<23}{:<26}{:<22}", i + 1, name(f.candidate), value, ci);
-        if wide {
-            text.push_str(&format!("{:>9}", num(f.score(report.criterion))));
-        }
-        text.push_str(&format!("{:>9}{:>10}", num(f.delta), num(f.weight)));
+    let header = [
+        "law".to_string(),
+        "parameter".to_string(),
+        ci_header,
+        c.to_string(),
+        format!("Δ{c}"),
+        "weight".to_string(),
+    ];
+    let shown = columns(&header, &rows, width);
+    let mut lines = vec![Line::from(span(
+        format!("{:<3}{}", "#", cells(&header, &shown)),
+        theme.style(Role::Label),
+    ))];
+    for (i, (f, row)) in report.fits.iter().zip(&rows).enumerate().skip(first).take(rank_rows) {
         let style = if i == cursor {
             theme.style(Role::Cursor)
         } else {
             law_style(theme, f.candidate)
         };
+        let text = format!("{:<3}{}", i + 1, cells(row, &shown));
         lines.push(Line::from(span(text, style)));
     }
     lines.truncate(rank_rows + 1);
@@ -256,4 +277,73 @@ fn law_style(theme: Theme, candidate: Candidate) -> ratatui::style::Style {
         Some(model) => theme.model_style(model),
         None => theme.style(Role::Normal),
     }
+}
+
+/// A column of the ranking: its width, and whether it is shown.
+#[derive(Debug, Clone, Copy)]
+struct Column {
+    width: usize,
+    shown: bool,
+    /// Numbers are right-aligned.
+    right: bool,
+    /// The cells lose their unit (`a = 1.197 s/m` → `a = 1.197`).
+    cut: bool,
+}
+
+/// The ranking's columns for `width` characters: all of them where they fit, else without the
+/// criterion's value (Δ and the weight say the ranking), else with the parameter's unit cut
+/// (the unit is the law's; `hertz-tui fit` prints it).
+fn columns(header: &[String; 6], rows: &[[String; 6]], width: usize) -> [Column; 6] {
+    let widest = |k: usize| {
+        rows.iter()
+            .map(|r| r[k].chars().count())
+            .chain([header[k].chars().count()])
+            .max()
+            .unwrap_or(0)
+    };
+    let mut columns: [Column; 6] = std::array::from_fn(|k| Column {
+        width: widest(k) + 2,
+        shown: true,
+        right: k >= 3,
+        cut: false,
+    });
+    let total = |cols: &[Column; 6]| 3 + cols.iter().filter(|c| c.shown).map(|c| c.width).sum::<usize>();
+    if total(&columns) > width {
+        columns[3].shown = false;
+    }
+    if total(&columns) > width {
+        let symbol_only = rows
+            .iter()
+            .map(|r| without_unit(&r[1]).chars().count())
+            .chain([header[1].chars().count()])
+            .max()
+            .unwrap_or(0);
+        columns[1].width = symbol_only + 2;
+        columns[1].cut = true;
+    }
+    columns
+}
+
+/// The cells of one row as `columns` lay them out (a cell cut to its column's width).
+fn cells(row: &[String; 6], columns: &[Column; 6]) -> String {
+    let mut out = String::new();
+    for (cell, column) in row.iter().zip(columns).filter(|(_, c)| c.shown) {
+        let room = column.width - 2;
+        let cell = if column.cut {
+            without_unit(cell)
+        } else {
+            cell.clone()
+        };
+        if column.right {
+            out.push_str(&format!("{cell:>w$}  ", w = room));
+        } else {
+            out.push_str(&format!("{cell:<w$}  ", w = room));
+        }
+    }
+    out
+}
+
+/// `a = 1.197 s/m` → `a = 1.197`.
+fn without_unit(cell: &str) -> String {
+    cell.split(' ').take(3).collect::<Vec<_>>().join(" ")
 }
