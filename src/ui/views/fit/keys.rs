@@ -97,12 +97,14 @@ fn use_fit(app: &mut App) {
     let (candidate, symbol, value) = (fit.candidate, param.spec.symbol, param.value);
     let unit = param.spec.unit;
     let mut scene = app.draft.scene.clone();
-    scene.fit = Some(fitted);
+    scene.fit = Some(fitted.clone());
     if let Err(e) = scene.apply_fit() {
         app.say(format!("the fitted {candidate} cannot set e: {e}"), true);
         return;
     }
-    app.draft.scene = scene;
+    // The draft takes the fit alone: `recompute` sets e from it (an e changed beside a fit
+    // would read as typed over it, and the fit would give way).
+    app.draft.scene.fit = Some(fitted);
     if let Some(model) = candidate.model() {
         if !app.is_checked(model) {
             app.toggle(model);
