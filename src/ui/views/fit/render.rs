@@ -187,7 +187,14 @@ fn charts(
         .and_then(|p| p.file_name())
         .map_or(String::new(), |n| n.to_string_lossy().into_owned());
     let file = file.as_str();
-    let size = |a: Rect| budget(a.width.saturating_sub(9), a.height.saturating_sub(6));
+    // Labels for the plot the pane leaves: its borders, the y title and the x axis's rows.
+    let frame_rows = if roomy { 2 } else { 1 };
+    let size = |a: Rect| {
+        budget(
+            a.width.saturating_sub(9),
+            graph::plot_rows(a.height.saturating_sub(frame_rows)),
+        )
+    };
     let [chart, _] = fit_charts(file, fit, report, size(left));
     let [_, residuals] = fit_charts(file, fit, report, size(right));
     for (area, chart) in [(left, chart), (right, residuals)] {
