@@ -13,8 +13,7 @@ use crate::format::{Zeros, round_trip, significant};
 use crate::model::Scene;
 use crate::model::engine::{self, ENGINES};
 use crate::model::fit::{
-    Candidate, FitOptions, FitReport, LsqOptions, RestitutionData, candidates,
-    fit_restitution,
+    Candidate, FitOptions, FitReport, LsqOptions, RestitutionData, candidates, fit_restitution,
 };
 use crate::model::presets::Registry;
 use crate::model::scene_file::to_toml_with_system;

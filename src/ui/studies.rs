@@ -8,11 +8,11 @@
 
 use std::sync::Arc;
 
+use crate::model::study::fit::FitData;
 use crate::model::study::runner::{
     self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
     StudyKind, StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
 };
-use crate::model::study::fit::FitData;
 use crate::model::study::system::{DiagramData, SystemRuns};
 
 use super::jobs::Background;

@@ -8,9 +8,9 @@ use std::path::Path;
 use hertz_tui::format::fit_verdict::num;
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::fit::{Candidate, FitReport};
+use hertz_tui::model::scene_key::{BodyField, BodyIndex, SceneKey};
 use hertz_tui::model::study::runner::StudyKind;
 use hertz_tui::ui::action::Action;
-use hertz_tui::model::scene_key::{BodyField, BodyIndex, SceneKey};
 use hertz_tui::ui::app::{App, Cursor, Mode};
 use hertz_tui::ui::field::Field;
 use hertz_tui::ui::tab::Tab;
@@ -68,7 +68,10 @@ fn the_ranking_and_verdict_show_what_the_fit_says_at_every_size() {
     for size in SIZES {
         let app = on_fit(Some(STEEL), size);
         let report = report(&app);
-        assert_eq!(report.fits[0].candidate, HC, "the data's own law ranks first");
+        assert_eq!(
+            report.fits[0].candidate, HC,
+            "the data's own law ranks first"
+        );
         let s = screen(&app, size);
         let best = &report.fits[0];
         let p = &best.params[0];
@@ -99,7 +102,12 @@ fn the_ranking_and_verdict_show_what_the_fit_says_at_every_size() {
         let (fit, _) = fit::finished(&app).unwrap();
         assert_eq!(fit.curves.len(), report.fits.len());
         for c in &fit.curves {
-            assert!(c.points.len() > 40, "{:?}: {} points", c.candidate, c.points.len());
+            assert!(
+                c.points.len() > 40,
+                "{:?}: {} points",
+                c.candidate,
+                c.points.len()
+            );
         }
     }
 }
@@ -109,7 +117,12 @@ fn without_data_the_view_says_how_to_load_some_and_where_the_examples_are() {
     for size in SIZES {
         let app = on_fit(None, size);
         let s = screen(&app, size);
-        for words in ["No data loaded", "o opens", "presets/data/", "steel-hunt-crossley.csv"] {
+        for words in [
+            "No data loaded",
+            "o opens",
+            "presets/data/",
+            "steel-hunt-crossley.csv",
+        ] {
             assert!(s.contains(words), "{size:?}: {words}\n{s}");
         }
         assert!(app.studies.fit().is_none(), "nothing is fitted");
@@ -149,7 +162,12 @@ fn enter_writes_the_best_fit_into_the_scene_and_u_undoes_it() {
     assert!(app.draft.scene.fit.is_none());
     press(&mut app, KeyCode::Enter);
     settle(&mut app);
-    let fitted = app.draft.scene.fit.clone().unwrap_or_else(|| panic!("{:?}", app.message));
+    let fitted = app
+        .draft
+        .scene
+        .fit
+        .clone()
+        .unwrap_or_else(|| panic!("{:?}", app.message));
     assert_eq!(fitted.kind, HC);
     assert_eq!(fitted.value, best.params[0].value);
     assert_eq!(fitted.source.as_deref(), Some(STEEL));
@@ -192,7 +210,10 @@ fn an_edit_of_the_scene_refits_and_c_fits_only_the_checked_laws() {
     press(&mut app, KeyCode::Enter);
     assert_eq!(app.draft.scene.body1.material.youngs_modulus, 100e9);
     update(&mut app, Action::Tab(Tab::named("fit").unwrap()));
-    assert!(app.studies.is_pending(StudyKind::Fit), "the edit asked for a refit");
+    assert!(
+        app.studies.is_pending(StudyKind::Fit),
+        "the edit asked for a refit"
+    );
     settle(&mut app);
     let after = report(&app);
     let (a, b) = (kk(&before), kk(&after));

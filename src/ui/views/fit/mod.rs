@@ -195,7 +195,7 @@ impl View for Fit {
     }
 
     fn help(&self) -> Option<&'static str> {
-        Some("o open data · ↑↓ ranking · Enter use fit in scene · c all/checked laws")
+        Some("o open data · ↑↓ law · Enter use the fit · c all/checked")
     }
 
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
