@@ -118,7 +118,7 @@ pub fn run_fit(
         if stop() {
             return None;
         }
-        curves.push(curve(&fitter, fit, &study.velocities));
+        curves.push(curve(fitter, fit, &study.velocities));
     }
     Some(FitData {
         data: study.data.clone(),
