@@ -64,6 +64,25 @@ fn every_law_is_recovered_from_its_own_noise_free_data() {
             );
         }
         assert!(report.failed.is_empty(), "{law}: {:?}", report.failed);
+        // The verdict groups the law with every identical law fitted, and names them identical.
+        let fitted_same: Vec<Candidate> =
+            all.iter().copied().filter(|c| same.contains(c)).collect();
+        if !fitted_same.is_empty() {
+            let group = report
+                .verdict
+                .groups
+                .iter()
+                .find(|g| g.members.contains(&law))
+                .unwrap_or_else(|| panic!("{law}: no group in {:?}", report.verdict));
+            for c in &fitted_same {
+                assert!(
+                    group.members.contains(c),
+                    "{law}: {c} not in {:?}",
+                    group.members
+                );
+            }
+            assert_eq!(group.identical.len(), fitted_same.len(), "{law}: {group:?}");
+        }
         eprintln!("{law}: {:?}", t.elapsed());
     }
 }

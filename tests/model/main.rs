@@ -13,7 +13,10 @@ mod engines_vs_laws;
 #[allow(dead_code)]
 mod fit_common;
 mod fit_coverage;
+mod fit_errors;
+mod fit_forward;
 mod fit_recovery;
+mod fit_selection;
 mod fit_trace;
 mod impact_crosscheck;
 mod impact_exact;

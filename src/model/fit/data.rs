@@ -77,13 +77,15 @@ pub enum FitDataError {
         /// The first line with sd.
         with_sd: usize,
     },
-    /// Fewer points (distinct or not) than a law has parameters.
-    #[error("{points} data points cannot determine the {params} parameter(s) of {law}")]
+    /// Fewer points than a law has parameters, plus one for the noise when no sd is given.
+    #[error(
+        "{points} data point(s) cannot fit {law}: it needs {needed} (its parameters, and one more for the noise unless sd is given)"
+    )]
     TooFewPoints {
         /// Samples.
         points: usize,
-        /// The law's parameters.
-        params: usize,
+        /// Samples needed.
+        needed: usize,
         /// The law.
         law: String,
     },

@@ -150,8 +150,10 @@ pub struct LsqOptions {
     /// Converged when an accepted step lowers RSS by less than ftol relative, or a rejected one
     /// was predicted to lower it by less.
     pub ftol: f64,
-    /// Jacobian estimate.
+    /// Jacobian estimate of the iterations, where it only steers the steps.
     pub difference: Difference,
+    /// Jacobian estimate at the minimum, which the covariance is computed from.
+    pub final_difference: Difference,
     /// Finite-difference step in u (u = ln θ on log scale, so relative there).
     pub step: f64,
     /// Confidence level of the intervals, e.g. 0.95.
@@ -166,6 +168,7 @@ impl Default for LsqOptions {
             gtol: 1e-14,
             ftol: 1e-12,
             difference: Difference::Central,
+            final_difference: Difference::Central,
             step: 1e-6,
             level: 0.95,
         }
@@ -295,6 +298,7 @@ impl Counted<'_, '_> {
         u: &[f64],
         r0: &DVector<f64>,
         opts: &LsqOptions,
+        difference: Difference,
     ) -> Result<DMatrix<f64>, String> {
         let (n, p) = (r0.len(), u.len());
         let mut jac = DMatrix::zeros(n, p);
@@ -305,7 +309,7 @@ impl Counted<'_, '_> {
             let mut down = u.to_vec();
             down[j] -= h;
             let plus = self.eval(&up);
-            let column = match (opts.difference, plus) {
+            let column = match (difference, plus) {
                 (Difference::Central, Ok(rp)) => match self.eval(&down) {
                     Ok(rm) => (rp - rm) / (2.0 * h),
                     Err(_) => (rp - r0) / h,
@@ -364,7 +368,9 @@ pub fn least_squares(problem: &LsqProblem, opts: &LsqOptions) -> Result<LsqResul
     let mut rss = r.norm_squared();
     let mut lambda = 1e-3;
     let mut iterations = 0;
-    let mut jac = counted.jacobian(&u, &r, opts).map_err(LsqError::AtStart)?;
+    let mut jac = counted
+        .jacobian(&u, &r, opts, opts.difference)
+        .map_err(LsqError::AtStart)?;
     let convergence = loop {
         if rss <= f64::MIN_POSITIVE {
             break Convergence::ZeroResidual;
@@ -413,7 +419,9 @@ pub fn least_squares(problem: &LsqProblem, opts: &LsqOptions) -> Result<LsqResul
                     if relative < opts.ftol {
                         break Convergence::Residual;
                     }
-                    jac = counted.jacobian(&u, &r, opts).map_err(LsqError::AtStart)?;
+                    jac = counted
+                        .jacobian(&u, &r, opts, opts.difference)
+                        .map_err(LsqError::AtStart)?;
                     continue;
                 }
                 if small_step {
@@ -436,7 +444,9 @@ pub fn least_squares(problem: &LsqProblem, opts: &LsqOptions) -> Result<LsqResul
     };
     let theta = counted.theta(&u);
     // The covariance at the final point, from a fresh Jacobian there.
-    let jac = counted.jacobian(&u, &r, opts).unwrap_or(jac);
+    let jac = counted
+        .jacobian(&u, &r, opts, opts.final_difference)
+        .unwrap_or(jac);
     let dof = n - p;
     let quantile = quantile(opts.level, if problem.known_sd { None } else { Some(dof) });
     let scale = if problem.known_sd {

@@ -17,8 +17,13 @@
 //!   → [`FitReport`]: every candidate's [`LawFit`] ranked best first by [`Criterion`] (AICc by
 //!   default, or BIC) with Δ and Akaike weights, parameters with Student-t confidence intervals
 //!   ([`FittedParam`]), the candidates that failed and why, the groups the data cannot tell apart
-//!   and a structured [`Verdict`] (worded by `crate::format::fit_verdict`).
-//!   [`LawFit::predict`] evaluates a fitted law at any v.
+//!   and a structured [`Verdict`] (worded by `crate::format::fit_verdict` for the command line
+//!   and the explorer).
+//!   [`LawFit::predict`] evaluates a fitted law at any v. [`Fitter`] keeps the forward models
+//!   (and Kuwabara–Kono's table of e(ψ)) between fits, for refits on edits.
+//! - Data too small for a law (fewer points than its parameters, plus one for the noise unless
+//!   sd is given) fails that law, listed in [`FitReport::failed`]; every law failing is
+//!   [`FitError::NothingFitted`].
 //! - The engine: [`lsq::least_squares`] on an [`lsq::LsqProblem`], shared with trace fits.
 //! - Traces: [`trace::fit_trace`] fits laws to one force or displacement trace through the same
 //!   engine and report (docs/fitting.md, Traces).
@@ -51,6 +56,9 @@ pub mod group;
 pub mod lsq;
 pub mod restitution;
 pub mod trace;
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -268,6 +276,8 @@ pub fn fit_restitution_params(
 pub struct Fitter {
     params: ImpactParams,
     forwards: Vec<(Candidate, Result<Forward, FitError>)>,
+    /// Each candidate's θ from the last fit: the warm start of the next.
+    last: Arc<Mutex<HashMap<Candidate, Vec<f64>>>>,
 }
 
 impl Fitter {
@@ -284,6 +294,7 @@ impl Fitter {
                 .iter()
                 .map(|&c| (c, Forward::new(params, c)))
                 .collect(),
+            last: Arc::default(),
         })
     }
 
@@ -308,13 +319,19 @@ impl Fitter {
                 return Some(Err(e.into()));
             }
         }
+        let warm = |c: &Candidate| self.last.lock().ok().and_then(|l| l.get(c).cloned());
         let fit = |(c, f): &(Candidate, Result<Forward, FitError>)| {
             if stop() {
                 return None;
             }
-            let fitted = f.clone().and_then(|f| fit_one(&f, data, opts));
+            let result = f
+                .clone()
+                .and_then(|f| fit_one_from(&f, data, opts, warm(c).as_deref()));
+            if let (Ok(fit), Ok(mut last)) = (&result, self.last.lock()) {
+                last.insert(*c, fit.theta());
+            }
             done();
-            Some((*c, fitted))
+            Some((*c, result))
         };
         let results: Option<Vec<(Candidate, Result<LawFit, FitError>)>> = if opts.parallel {
             self.forwards.par_iter().map(fit).collect()
@@ -376,16 +393,29 @@ pub fn fit_one(
     data: &RestitutionData,
     opts: &FitOptions,
 ) -> Result<LawFit, FitError> {
+    fit_one_from(forward, data, opts, None)
+}
+
+/// [`fit_one`] with a warm start `warm` (θ of an earlier fit), used when it fits the data better
+/// than the calibrated start.
+pub fn fit_one_from(
+    forward: &Forward,
+    data: &RestitutionData,
+    opts: &FitOptions,
+    warm: Option<&[f64]>,
+) -> Result<LawFit, FitError> {
     let candidate = forward.candidate();
     let specs = candidate.params().map_err(|reason| FitError::Unfittable {
         candidate,
         reason: reason.to_string(),
     })?;
     let n = data.len();
-    if n < specs.len() {
+    // Without given sd the noise is estimated from the residuals: it needs a point more.
+    let needed = specs.len() + usize::from(!data.weighted());
+    if n < needed {
         return Err(FitDataError::TooFewPoints {
             points: n,
-            params: specs.len(),
+            needed,
             law: candidate.id().to_string(),
         }
         .into());
@@ -409,15 +439,30 @@ pub fn fit_one(
             .map(|((m, e), w)| (m - e) * w)
             .collect())
     };
-    let start = start(forward, &vs, &es)?;
+    let mut start = start(forward, &vs, &es)?;
+    // A warm start (the previous fit's θ, on a refit) wins if it already fits better.
+    if let Some(warm) = warm.filter(|w| w.len() == specs.len()) {
+        let rss = |theta: &[f64]| {
+            residuals(theta).map_or(f64::INFINITY, |r| r.iter().map(|x| x * x).sum::<f64>())
+        };
+        if rss(warm) < rss(&start) {
+            start = warm.to_vec();
+        }
+    }
     let problem = LsqProblem {
         params: &specs,
         start,
         residuals: &residuals,
         known_sd: weighted,
     };
+    // One parameter: a forward difference steers the steps as well as a central one at half the
+    // solves; the covariance still comes from a central one.
+    let lsq = LsqOptions {
+        difference: lsq::Difference::Forward,
+        ..opts.lsq
+    };
     let result =
-        least_squares(&problem, &opts.lsq).map_err(|source| FitError::Lsq { candidate, source })?;
+        least_squares(&problem, &lsq).map_err(|source| FitError::Lsq { candidate, source })?;
     // Back to the data's order, unweighted.
     let mut sorted_res = vec![0.0; n];
     for (k, &i) in order.iter().enumerate() {

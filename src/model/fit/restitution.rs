@@ -12,10 +12,11 @@ use rayon::prelude::*;
 
 use crate::model::ModelError;
 use crate::model::calibrate::{calibrate_with, hunt_crossley_chi, hunt_crossley_restitution};
+use crate::model::exact::ExactImpact;
 use crate::model::force::adams_impact::AdamsImpact;
 use crate::model::force::table::Family;
 use crate::model::force::thornton::Thornton;
-use crate::model::force::{AnyLaw, ForceModel, ImpactParams};
+use crate::model::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams};
 use crate::model::impact::{ImpactError, MethodChoice, SolveOptions, solve_law};
 
 use super::FitError;
@@ -25,6 +26,10 @@ use super::group::GroupTable;
 /// The solver tolerance of the forward model: its e is within about 1e-10 of the truth, well
 /// inside any measurement and below the 1e-9 floor the criteria put on residuals.
 pub const SOLVE_RTOL: f64 = 1e-11;
+
+/// The tolerance asked of an exact solution whose exit speed does not depend on it: only its
+/// contact times do, which e does not need.
+const EXIT_ONLY_RTOL: f64 = 1e-2;
 
 const THORNTON: ForceModel = ForceModel::with_id("thornton");
 const ADAMS: ForceModel = ForceModel::with_id("adams-impact");
@@ -46,6 +51,10 @@ enum Kind {
         /// θ per unit of A: 1 for Kuwabara–Kono's A, k for the proposed model's b.
         per_unit: f64,
     },
+    /// The law's exact solution, whose exit speed is a closed form or a root (dry friction's
+    /// energy identity, the damped oscillator) whatever the tolerance its times are computed to;
+    /// the solver where it has none (Kelvin–Voigt past critical damping).
+    Exact,
     /// One solve per v; Adams' depth d fixed at `depth`, m.
     Solver {
         /// Adams IMPACT's d, held at the scene's value.
@@ -94,6 +103,10 @@ impl Forward {
                             1.0
                         },
                     }
+                } else if model == ForceModel::DryFriction
+                    || model.name().starts_with("kelvin-voigt")
+                {
+                    Kind::Exact
                 } else if model == ADAMS {
                     Kind::Solver {
                         depth: Some(AdamsImpact::default_depth(params)),
@@ -172,15 +185,22 @@ impl Forward {
                     None => self.solve(v, d),
                 }
             }
+            Kind::Exact => {
+                let law = self.law(v, d)?;
+                match law.exact(EXIT_ONLY_RTOL).filter(ExactImpact::is_valid) {
+                    Some(exact) => Ok(exact.v_out / v),
+                    None => self.solve(v, d),
+                }
+            }
             Kind::Solver { .. } => self.solve(v, d),
         }
     }
 
-    /// e at (θ, v) by the solver itself, never from the table: the reference the table is
-    /// tested against.
+    /// e at (θ, v) by the solver itself, never from the table or an exact solution's exit speed
+    /// alone: the reference they are tested against.
     pub fn e_solved(&self, theta: &[f64], v: f64) -> Result<f64, FitError> {
         match (self.kind, theta.first()) {
-            (Kind::Group { .. }, Some(&d)) => self.solve(v, d),
+            (Kind::Group { .. } | Kind::Exact, Some(&d)) => self.solve(v, d),
             _ => self.e(theta, v),
         }
     }
