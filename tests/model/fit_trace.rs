@@ -3,6 +3,8 @@
 //! their law first; with noise the confidence intervals cover the truth at their nominal rate
 //! over seeded draws; bad traces are refused naming the file.
 
+use rayon::prelude::*;
+
 use hertz_tui::format::trace_csv::parse_trace_csv;
 use hertz_tui::model::fit::trace::{
     FreeParams, TraceData, TraceFitOptions, TraceParams, TraceQuantity, fit_trace_params,
@@ -247,29 +249,36 @@ fn confidence_intervals_cover_the_truth_at_their_nominal_rate() {
     .unwrap();
     let sigma = 0.01 * clean.iter().copied().fold(0.0, f64::max);
     let a_true = p.damping.unwrap() / p.v0;
+    // The draws in seed order, then fitted in parallel (the same counts on any thread count).
     let mut normal = Normal(23);
-    let mut covered = [0usize; 2];
-    for draw in 0..DRAWS {
-        let noisy = clean.iter().map(|f| f + sigma * normal.next());
-        let data =
-            TraceData::from_pairs(TraceQuantity::Force, ts.iter().copied().zip(noisy)).unwrap();
-        let opts = TraceFitOptions {
-            fit: hertz_tui::model::fit::FitOptions {
-                parallel: false,
-                ..opts.fit
-            },
-            ..opts
-        };
-        let report = fit_trace_params(&base, &data, &[model], &opts)
-            .unwrap_or_else(|e| panic!("draw {draw}: {e}"));
-        let fit = &report.fits[0];
-        for (i, (param, truth)) in fit.params.iter().zip([a_true, t0]).enumerate() {
-            assert_eq!(param.level, 0.95);
-            if param.ci.0 <= truth && truth <= param.ci.1 {
-                covered[i] += 1;
-            }
-        }
-    }
+    let draws: Vec<Vec<f64>> = (0..DRAWS)
+        .map(|_| clean.iter().map(|f| f + sigma * normal.next()).collect())
+        .collect();
+    let opts = TraceFitOptions {
+        fit: hertz_tui::model::fit::FitOptions {
+            parallel: false,
+            ..opts.fit
+        },
+        ..opts
+    };
+    let hits: Vec<[bool; 2]> = draws
+        .par_iter()
+        .enumerate()
+        .map(|(draw, noisy)| {
+            let data = TraceData::from_pairs(
+                TraceQuantity::Force,
+                ts.iter().copied().zip(noisy.iter().copied()),
+            )
+            .unwrap();
+            let report = fit_trace_params(&base, &data, &[model], &opts)
+                .unwrap_or_else(|e| panic!("draw {draw}: {e}"));
+            let params = &report.fits[0].params;
+            assert!(params.iter().all(|p| p.level == 0.95));
+            let truths = [a_true, t0];
+            [0, 1].map(|i| params[i].ci.0 <= truths[i] && truths[i] <= params[i].ci.1)
+        })
+        .collect();
+    let covered = [0, 1].map(|i| hits.iter().filter(|h| h[i]).count());
     for (i, name) in ["a", "t0"].iter().enumerate() {
         assert!(
             (180..=198).contains(&covered[i]),
@@ -309,6 +318,19 @@ fn too_short_traces_and_unknown_parameters_are_refused_by_name() {
         fit_trace_params(&scene(0.5), &data, &[], &TraceFitOptions::default()),
         Err(FitError::NoCandidates)
     ));
+    // A trace built by hand past the checks (public fields) is checked again, never indexed.
+    let emptied = TraceData {
+        samples: Vec::new(),
+        ..data
+    };
+    let err = fit_trace_params(
+        &scene(0.5),
+        &emptied,
+        &[ForceModel::HuntCrossley],
+        &TraceFitOptions::default(),
+    )
+    .unwrap_err();
+    assert_eq!(err.to_string(), "0 samples: fewer than the 3 a trace needs");
 }
 
 /// Every law of the table fits a Hunt–Crossley trace or says why (none fails here); the nine
@@ -532,5 +554,50 @@ fn t0_of_a_force_that_jumps_is_located_to_the_sampling() {
         err.to_string()
             .starts_with("no law could be fitted: thornton: thornton cannot be fitted: n cannot be freed: Thornton (1997)"),
         "{err}"
+    );
+}
+
+/// On noisy traces (1 % of the peak) the criterion picks the generating law among the four in
+/// every one of 3 seeded draws per law: their traces differ by far more than the noise (Δ to the
+/// runner-up 35.6 at the least, measured, on 60 samples), where e(v) data often cannot tell them
+/// apart.
+#[test]
+fn the_criterion_picks_the_generating_law_of_a_noisy_trace() {
+    let models: Vec<ForceModel> = LAWS.iter().map(|(id, _)| id.parse().unwrap()).collect();
+    let ts = times(60);
+    let mut normal = Normal(2323);
+    let opts = TraceFitOptions::default();
+    let mut smallest_delta = f64::INFINITY;
+    for (id, e) in LAWS {
+        let model: ForceModel = id.parse().unwrap();
+        let base = scene(e);
+        let p = truth(model, e, 20e-6);
+        let clean = trace_forward(
+            &base,
+            model,
+            &p,
+            TraceQuantity::Force,
+            opts.outside,
+            &ts,
+            &opts.solve,
+        )
+        .unwrap();
+        let sigma = 0.01 * clean.iter().copied().fold(0.0, f64::max);
+        for draw in 0..3 {
+            let noisy = clean.iter().map(|f| f + sigma * normal.next());
+            let data =
+                TraceData::from_pairs(TraceQuantity::Force, ts.iter().copied().zip(noisy)).unwrap();
+            let report = fit_trace_params(&base, &data, &models, &opts).unwrap();
+            assert_eq!(
+                report.fits[0].candidate.id(),
+                id,
+                "draw {draw}: {report:#?}"
+            );
+            smallest_delta = smallest_delta.min(report.fits[1].delta);
+        }
+    }
+    assert!(
+        smallest_delta > 10.0,
+        "Δ to the runner-up down to {smallest_delta}"
     );
 }

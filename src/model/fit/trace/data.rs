@@ -147,7 +147,19 @@ impl TraceData {
         samples: Vec<TraceSample>,
         source: Option<String>,
     ) -> Result<Self, TraceDataError> {
-        for s in &samples {
+        let data = TraceData {
+            quantity,
+            samples,
+            source,
+        };
+        data.validate()?;
+        Ok(data)
+    }
+
+    /// The checks of [`TraceData::new`], again (the fields are public: a fit re-checks them).
+    pub fn validate(&self) -> Result<(), TraceDataError> {
+        let (quantity, samples) = (self.quantity, &self.samples);
+        for s in samples {
             if !s.t.is_finite() {
                 return Err(TraceDataError::NotFinite {
                     line: s.line,
@@ -188,11 +200,7 @@ impl TraceData {
                 largest,
             });
         }
-        Ok(TraceData {
-            quantity,
-            samples,
-            source,
-        })
+        Ok(())
     }
 
     /// A trace from (t, value) pairs, numbered as lines 1, 2, … (synthetic data, tests).

@@ -71,6 +71,7 @@ pub fn fit_trace_params(
         return Err(FitError::NoCandidates);
     }
     base.validate()?;
+    data.validate()?;
     // Too short for what was asked is the data's fault, said before any law is tried.
     for &model in models {
         let needed = Layout::of(model, opts.free).len() + 1;
