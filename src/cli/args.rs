@@ -94,7 +94,10 @@ pub struct FitArgs {
     /// Output format: table (ranking, verdict, residuals), json, or csv (the ranking).
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Write the scene with the best fitted law (or the one --law names) as its [fit] to OUT.
+    /// Table: the best law's residual at every point (default: their RMS and the largest).
+    #[arg(long)]
+    pub residuals: bool,
+    /// Write the scene with the best fitted law (or the one --law names) as its `[fit]` to OUT.
     #[arg(long, value_name = "OUT")]
     pub write_scene: Option<std::path::PathBuf>,
     /// Also each simulation engine's realised e(v₀), calibrated at the scene's v₀, against the
@@ -407,7 +410,7 @@ pub struct ContactArgs {
     #[arg(long, value_name = "MODEL", default_value = "hunt-crossley")]
     pub law: ForceModel,
     /// How the compliant law's damping is set: per-impact (from each impact's incoming speed),
-    /// calibrated (to realise the scene's e), fitted (the scene's [fit] constant, for the law it
+    /// calibrated (to realise the scene's e), fitted (the scene's `[fit]` constant, for the law it
     /// names), or a number (the law's own constant).
     #[arg(long, value_name = "HOW", default_value = "per-impact", value_parser = damping_choice)]
     pub damping: DampingChoice,

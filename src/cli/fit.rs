@@ -9,15 +9,19 @@ use serde::Serialize;
 
 use crate::format::csv::field;
 use crate::format::fit_csv::parse_restitution_csv;
+use crate::format::trace_csv::parse_trace_csv;
 use crate::format::{Zeros, round_trip, significant};
+use crate::model::ForceModel;
 use crate::model::Scene;
 use crate::model::engine::{self, ENGINES};
+use crate::model::fit::trace::{TraceData, TraceFitOptions, TraceQuantity, fit_trace};
 use crate::model::fit::{
-    Candidate, FitOptions, FitReport, LsqOptions, RestitutionData, candidates, fit_restitution,
+    Candidate, FitOptions, FitReport, LawFit, LsqOptions, RestitutionData, candidates,
+    fit_restitution,
 };
 use crate::model::presets::Registry;
 use crate::model::scene_file::to_toml_with_system;
-use crate::model::scene_fit::FittedLaw;
+use crate::model::scene_fit::{FittedLaw, constant_of};
 
 use super::args::{FitArgs, Format};
 use super::error::CliError;
@@ -37,6 +41,97 @@ pub fn read_restitution(path: &Path) -> Result<RestitutionData, CliError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| CliError::Usage(format!("{file}: cannot read the data: {e}")))?;
     parse_restitution_csv(&text, &file).map_err(|e| CliError::Usage(e.to_string()))
+}
+
+/// Whether `text` is a trace (its header's first column is time: `t, F` or `t, x`) rather than
+/// restitution data (`v, e`).
+fn is_trace(text: &str) -> bool {
+    let header = text
+        .lines()
+        .map(|l| l.find('#').map_or(l, |i| &l[..i]).trim())
+        .find(|l| !l.is_empty());
+    header.is_some_and(|h| {
+        let first = h.split(',').next().unwrap_or("");
+        let name = first.split(['(', '[']).next().unwrap_or("").trim();
+        matches!(name.to_ascii_lowercase().as_str(), "t" | "time")
+    })
+}
+
+/// The laws a trace is fitted with: those `--law` names, else every law with a material constant
+/// (one per distinct law) and elastic Hertz, whose place in the ranking says whether the trace
+/// shows damping at all.
+fn trace_laws(laws: &[String]) -> Result<Vec<ForceModel>, CliError> {
+    if laws.is_empty() {
+        return Ok(std::iter::once(ForceModel::Quasistatic)
+            .chain(candidates().into_iter().filter_map(Candidate::model))
+            .collect());
+    }
+    laws.iter()
+        .map(|id| {
+            id.parse::<ForceModel>().map_err(|e| {
+                CliError::Usage(format!("--law: a trace is fitted by force laws: {e}"))
+            })
+        })
+        .collect()
+}
+
+/// Fits a force or displacement trace (the file's text `text`) and renders it.
+fn run_trace(
+    args: &FitArgs,
+    registry: &Registry,
+    scene: &Scene,
+    text: &str,
+) -> Result<String, CliError> {
+    let file = args.data.display().to_string();
+    let data = parse_trace_csv(text, &file).map_err(|e| CliError::Usage(e.to_string()))?;
+    let options = TraceFitOptions {
+        fit: FitOptions {
+            criterion: args.criterion,
+            lsq: LsqOptions {
+                level: args.level,
+                ..LsqOptions::default()
+            },
+            parallel: true,
+        },
+        ..TraceFitOptions::default()
+    };
+    let report = fit_trace(scene, &data, &trace_laws(&args.laws)?, &options)
+        .map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
+    if args.engines {
+        return Err(CliError::Usage(
+            "--engines compares engines with e(v0) data; fit the trace, --write-scene, then hertz-tui translate".into(),
+        ));
+    }
+    let fitted = fitted_scene(scene, &report, &file)?;
+    let wrote = match &args.write_scene {
+        Some(out) => Some(write_scene(args, registry, &fitted, out)?),
+        None => None,
+    };
+    let (t0, t1) = (
+        data.samples.first().map_or(0.0, |s| s.t),
+        data.samples.last().map_or(0.0, |s| s.t),
+    );
+    let output = FitOutput {
+        scene: scene.name.clone(),
+        data: file,
+        points: data.samples.len(),
+        v_range: (t0, t1),
+        verdict_text: verdict_words(
+            &report.verdict,
+            Some(match data.quantity {
+                TraceQuantity::Force => "N",
+                TraceQuantity::Displacement => "m",
+            }),
+        ),
+        report,
+        engines: Vec::new(),
+        wrote,
+    };
+    match args.format {
+        Format::Table => Ok(render_trace_table(&output, &data, &fitted)),
+        Format::Json => super::json(&output),
+        Format::Csv => Ok(render_csv(&output.report)),
+    }
 }
 
 /// The candidates `--law` names, or every default one.
@@ -92,7 +187,13 @@ pub struct FitOutput {
 /// Fits, writes the scene where asked, and renders the result.
 pub fn run(args: &FitArgs, registry: &Registry) -> Result<String, CliError> {
     let scene = load_scene(&args.source, registry)?;
-    let data = read_restitution(&args.data)?;
+    let file = args.data.display().to_string();
+    let text = std::fs::read_to_string(&args.data)
+        .map_err(|e| CliError::Usage(format!("{file}: cannot read the data: {e}")))?;
+    if is_trace(&text) {
+        return run_trace(args, registry, &scene, &text);
+    }
+    let data = parse_restitution_csv(&text, &file).map_err(|e| CliError::Usage(e.to_string()))?;
     let options = FitOptions {
         criterion: args.criterion,
         lsq: LsqOptions {
@@ -102,8 +203,7 @@ pub fn run(args: &FitArgs, registry: &Registry) -> Result<String, CliError> {
         parallel: true,
     };
     let report = fit_restitution(&scene, &data, &chosen(&args.laws)?, &options)
-        .map_err(|e| CliError::Usage(format!("{}: {e}", args.data.display())))?;
-    let file = args.data.display().to_string();
+        .map_err(|e| CliError::Usage(format!("{file}: {e}")))?;
     let fitted = fitted_scene(&scene, &report, &file)?;
     let engines = if args.engines {
         engines_against(&fitted, &data, report.verdict.noise)
@@ -119,13 +219,13 @@ pub fn run(args: &FitArgs, registry: &Registry) -> Result<String, CliError> {
         data: file,
         points: data.len(),
         v_range: data.v_range(),
-        verdict_text: verdict_words(&report.verdict),
+        verdict_text: verdict_words(&report.verdict, None),
         report,
         engines,
         wrote,
     };
     match args.format {
-        Format::Table => Ok(render_table(&output, &data, &fitted)),
+        Format::Table => Ok(render_table(&output, &data, &fitted, args.residuals)),
         Format::Json => super::json(&output),
         Format::Csv => Ok(render_csv(&output.report)),
     }
@@ -134,10 +234,14 @@ pub fn run(args: &FitArgs, registry: &Registry) -> Result<String, CliError> {
 /// The scene with the best-ranked fit (of those asked for) as its `[fit]`, e set from it at v₀.
 pub fn fitted_scene(scene: &Scene, report: &FitReport, file: &str) -> Result<Scene, CliError> {
     let best = &report.fits[0];
+    let key = constant_of(best.candidate).map(|c| c.0);
+    let Some(constant) = best.params.iter().find(|p| Some(p.spec.key) == key) else {
+        return Ok(scene.clone());
+    };
     let mut fitted = scene.clone();
     fitted.fit = Some(FittedLaw {
         kind: best.candidate,
-        value: best.params[0].value,
+        value: constant.value,
         source: Some(file.to_string()),
         note: Some(format!(
             "ranked first of {} by {} (weight {}) over {} points",
@@ -179,11 +283,13 @@ fn write_scene(
     Ok(out.display().to_string())
 }
 
-fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> String {
+fn render_table(
+    output: &FitOutput,
+    data: &RestitutionData,
+    fitted: &Scene,
+    every_residual: bool,
+) -> String {
     let report = &output.report;
-    let c = report.criterion.name();
-    let level = report.fits[0].params[0].level;
-    let misfit = if report.weighted { "χ²" } else { "RSS" };
     let mut out = format!(
         "Fit of e(v0) to {}: {} point{}, v0 = {} to {} m/s{}; k, n, m from {}\n",
         output.data,
@@ -198,6 +304,102 @@ fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> S
         },
         output.scene
     );
+    out.push_str(&ranking(report));
+    out.push_str(&format!("{}\n", output.verdict_text));
+    let best = &report.fits[0];
+    if !every_residual {
+        out.push_str(&residual_summary(best, data));
+    } else {
+        out.push_str(&format!(
+            "Residuals of {} (e law − e measured):\n",
+            best.candidate
+        ));
+        out.push_str(&residual_rows(best, data));
+    }
+    out.push_str(&scene_line(fitted));
+    if !output.engines.is_empty() {
+        out.push_str(&render_engines(&output.engines));
+    }
+    if let Some(path) = &output.wrote {
+        out.push_str(&format!("wrote {path}\n"));
+    }
+    out
+}
+
+/// `Residuals of … (e law − e measured): RMS …, largest … at v0 = … m/s`.
+fn residual_summary(best: &LawFit, data: &RestitutionData) -> String {
+    let n = best.residuals.len().max(1) as f64;
+    let rms = (best.residuals.iter().map(|r| r * r).sum::<f64>() / n).sqrt();
+    let largest = best
+        .residuals
+        .iter()
+        .zip(&data.points)
+        .max_by(|a, b| a.0.abs().total_cmp(&b.0.abs()));
+    let mut out = format!(
+        "Residuals of {} (e law − e measured): RMS {}",
+        best.candidate,
+        num(rms)
+    );
+    if let Some((r, p)) = largest {
+        out.push_str(&format!(
+            ", largest {} at v0 = {} m/s (each: --residuals)",
+            num(*r),
+            given(p.v)
+        ));
+    }
+    out.push('\n');
+    out
+}
+
+/// The best law's residual at every point.
+fn residual_rows(best: &LawFit, data: &RestitutionData) -> String {
+    let mut rows = vec![
+        ["v0 (m/s)", "e measured", "sd", "e law", "residual"]
+            .map(String::from)
+            .to_vec(),
+    ];
+    for (p, r) in data.points.iter().zip(&best.residuals) {
+        rows.push(vec![
+            given(p.v),
+            given(p.e),
+            p.sd.map_or("-".to_string(), given),
+            num(p.e + r),
+            num(*r),
+        ]);
+    }
+    columns(&rows, "  ")
+}
+
+/// The ranking of a trace fit, the verdict and what the scene would carry.
+fn render_trace_table(output: &FitOutput, data: &TraceData, fitted: &Scene) -> String {
+    let report = &output.report;
+    let what = match data.quantity {
+        TraceQuantity::Force => "F(t)",
+        TraceQuantity::Displacement => "x(t)",
+    };
+    let mut out = format!(
+        "Fit of the trace {what} in {}: {} samples over t = {} to {} s; k, n, m and v0 from {}\n",
+        output.data,
+        output.points,
+        given(output.v_range.0),
+        given(output.v_range.1),
+        output.scene
+    );
+    out.push_str(&ranking(report));
+    out.push_str(&format!("{}\n", output.verdict_text));
+    out.push_str(&scene_line(fitted));
+    if let Some(path) = &output.wrote {
+        out.push_str(&format!("wrote {path}\n"));
+    }
+    out
+}
+
+/// The ranking table: rank, law, parameters and intervals, misfit, criterion, Δ, weight; then
+/// the laws not fitted.
+fn ranking(report: &FitReport) -> String {
+    let c = report.criterion.name();
+    let level = report.fits[0].params.first().map_or(0.95, |p| p.level);
+    let misfit = if report.weighted { "χ²" } else { "RSS" };
     let mut rows = vec![vec![
         "rank".to_string(),
         "law".to_string(),
@@ -221,51 +423,29 @@ fn render_table(output: &FitOutput, data: &RestitutionData, fitted: &Scene) -> S
             num(f.weight),
         ]);
     }
-    out.push_str(&columns(&rows, "  "));
+    let mut out = columns(&rows, "  ");
     if !report.failed.is_empty() {
         out.push_str("Not fitted:\n");
         for (candidate, why) in &report.failed {
             out.push_str(&format!("  {candidate}: {why}\n"));
         }
     }
-    out.push_str(&format!("{}\n", output.verdict_text));
-    let best = &report.fits[0];
-    out.push_str(&format!(
-        "Residuals of {} (e law − e measured):\n",
-        best.candidate
-    ));
-    let mut rows = vec![
-        ["v0 (m/s)", "e measured", "sd", "e law", "residual"]
-            .map(String::from)
-            .to_vec(),
-    ];
-    for (p, r) in data.points.iter().zip(&best.residuals) {
-        rows.push(vec![
-            given(p.v),
-            given(p.e),
-            p.sd.map_or("-".to_string(), given),
-            num(p.e + r),
-            num(*r),
-        ]);
-    }
-    out.push_str(&columns(&rows, "  "));
-    if let Some(fit) = &fitted.fit {
-        let (key, _, unit) = fit.constant();
-        out.push_str(&format!(
-            "As a scene: [fit] law = \"{}\", {key} = {} {unit}; at its v0 = {} m/s, e = {}\n",
-            fit.kind,
-            num(fit.value),
-            given(fitted.impact.v0),
-            num(fitted.impact.restitution)
-        ));
-    }
-    if !output.engines.is_empty() {
-        out.push_str(&render_engines(&output.engines));
-    }
-    if let Some(path) = &output.wrote {
-        out.push_str(&format!("wrote {path}\n"));
-    }
     out
+}
+
+/// `As a scene: [fit] law = "…", a = … s/m; at its v0 = … m/s, e = …`, or nothing.
+fn scene_line(fitted: &Scene) -> String {
+    let Some(fit) = &fitted.fit else {
+        return String::new();
+    };
+    let (key, _, unit) = fit.constant();
+    format!(
+        "As a scene: [fit] law = \"{}\", {key} = {} {unit}; at its v0 = {} m/s, e = {}\n",
+        fit.kind,
+        num(fit.value),
+        given(fitted.impact.v0),
+        num(fitted.impact.restitution)
+    )
 }
 
 fn render_csv(report: &FitReport) -> String {

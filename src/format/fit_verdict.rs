@@ -22,34 +22,47 @@ pub fn given(x: f64) -> String {
     significant(x, 4, Zeros::Trim)
 }
 
-/// `a = 1.203 s/m` with its interval `[1.18, 1.23]`.
+/// `a = 1.203 s/m` with its interval `[1.18, 1.23]`; several parameters joined by `; `.
 pub fn parameter_cells(fit: &LawFit) -> (String, String) {
-    let p = &fit.params[0];
-    let unit = if p.spec.unit == "1" {
-        String::new()
-    } else {
-        format!(" {}", p.spec.unit)
-    };
-    let value = format!("{} = {}{unit}", p.spec.symbol, num(p.value));
-    let ci = if p.ci.0.is_finite() && p.ci.1.is_finite() {
-        format!("[{}, {}]", num(p.ci.0), num(p.ci.1))
-    } else {
-        "undetermined".to_string()
-    };
-    (value, ci)
+    let mut values = Vec::new();
+    let mut cis = Vec::new();
+    for p in &fit.params {
+        let unit = if p.spec.unit == "1" {
+            String::new()
+        } else {
+            format!(" {}", p.spec.unit)
+        };
+        values.push(format!("{} = {}{unit}", p.spec.symbol, num(p.value)));
+        cis.push(if p.ci.0.is_finite() && p.ci.1.is_finite() {
+            format!("[{}, {}]", num(p.ci.0), num(p.ci.1))
+        } else {
+            "undetermined".to_string()
+        });
+    }
+    (values.join("; "), cis.join("; "))
 }
 
-/// The verdict in plain words, with its numbers.
-pub fn verdict_words(v: &Verdict) -> String {
+/// The verdict in plain words, with its numbers (`trace`: the unit of a trace's values, whose
+/// noise is in it and whose range is no velocity range).
+pub fn verdict_words(v: &Verdict, trace: Option<&str>) -> String {
     let c = v.criterion.name();
-    let mut out = format!(
-        "Best: {} by {c} (Akaike weight {}) over v0 = {} to {} m/s, noise {}.",
-        v.best,
-        significant(v.best_weight, 3, Zeros::Keep),
-        given(v.v_range.0),
-        given(v.v_range.1),
-        given(v.noise)
-    );
+    let mut out = if let Some(unit) = trace {
+        format!(
+            "Best: {} by {c} (Akaike weight {}), noise {} {unit}.",
+            v.best,
+            significant(v.best_weight, 3, Zeros::Keep),
+            given(v.noise)
+        )
+    } else {
+        format!(
+            "Best: {} by {c} (Akaike weight {}) over v0 = {} to {} m/s, noise {}.",
+            v.best,
+            significant(v.best_weight, 3, Zeros::Keep),
+            given(v.v_range.0),
+            given(v.v_range.1),
+            given(v.noise)
+        )
+    };
     match v.runner_up {
         Some((next, delta)) => out.push_str(&format!(
             "\nNext distinguishable: {next}, Δ{c} = {}: {}.",

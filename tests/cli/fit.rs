@@ -473,3 +473,39 @@ fn csv_has_a_row_per_law_and_the_figure_draws_every_fitted_law() {
     ]);
     assert!(err.contains("--data"), "{err}");
 }
+
+#[test]
+fn a_force_trace_goes_to_the_trace_fit_and_recovers_its_law() {
+    // steel-force-trace.csv: Hunt–Crossley, a = 1.2 s/m, contact from t0 = 20 µs, sd 20 N.
+    let out = json(&[
+        "fit",
+        "--scene",
+        "steel-sphere-r10-plate",
+        "--data",
+        &data("steel-force-trace.csv"),
+        "--law",
+        "hunt-crossley",
+        "--law",
+        "kelvin-voigt",
+    ]);
+    assert_eq!(out["fits"][0]["candidate"], "hunt-crossley");
+    let params = out["fits"][0]["params"].as_array().unwrap();
+    let within = |key: &str, truth: f64| {
+        let p = params.iter().find(|p| p["spec"]["key"] == key).unwrap();
+        let (lo, hi) = (p["ci"][0].as_f64().unwrap(), p["ci"][1].as_f64().unwrap());
+        assert!(lo < truth && truth < hi, "{key}: [{lo}, {hi}] ∌ {truth}");
+    };
+    within("a", 1.2);
+    within("t0", 20e-6);
+    assert!(out["verdict_text"].as_str().unwrap().contains(" N."));
+    let err = user_error(&[
+        "fit",
+        "--scene",
+        "steel-sphere-r10-plate",
+        "--data",
+        &data("steel-force-trace.csv"),
+        "--law",
+        "constant-e",
+    ]);
+    assert!(err.contains("a trace is fitted by force laws"), "{err}");
+}

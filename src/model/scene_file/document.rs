@@ -74,11 +74,8 @@ pub enum ValueIssue {
         known: &'static [&'static str],
     },
     /// A `[fit] law` that is neither `constant-e` nor a law with a damping parameter.
-    #[error("unknown fitted law \"{name}\" (expected one of: {})", .known.join(", "))]
-    UnknownFitLaw {
-        name: String,
-        known: Vec<&'static str>,
-    },
+    #[error("unknown fitted law \"{name}\" (expected one of: {ids})", ids = crate::model::scene_fit::fitted_ids().join(", "))]
+    UnknownFitLaw { name: String },
     /// Two keys that exclude each other.
     #[error("{0}")]
     Conflict(&'static str),

@@ -3,7 +3,7 @@
 
 use toml::{Table, Value};
 
-use crate::model::scene_fit::{FittedLaw, fitted_ids, fitted_kind};
+use crate::model::scene_fit::{FittedLaw, fitted_kind};
 
 use super::decode::Decoder;
 use super::document::{Problem, SceneFileError, ValueIssue};
@@ -33,7 +33,6 @@ impl Decoder<'_> {
                 "fit.law",
                 ValueIssue::UnknownFitLaw {
                     name: id.to_string(),
-                    known: fitted_ids(),
                 },
             )
         })?;

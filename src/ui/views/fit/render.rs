@@ -225,7 +225,7 @@ fn table(frame: &mut Frame, area: Rect, app: &App, report: &FitReport, roomy: bo
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let width = usize::from(inner.width);
-    let verdict: Vec<String> = verdict_words(&report.verdict)
+    let verdict: Vec<String> = verdict_words(&report.verdict, None)
         .lines()
         .flat_map(|l| wrap(l, width.max(20)))
         .collect();
