@@ -60,7 +60,7 @@ const CURVE_POINTS: usize = 80;
 /// The residuals panel shows the laws within this Δ of the best, at most [`MAX_RESIDUALS`]: the
 /// others' misfit would set its scale (as `plot --chart fit` does).
 pub const RESIDUALS_WITHIN: f64 = 10.0;
-const MAX_RESIDUALS: usize = 5;
+pub const MAX_RESIDUALS: usize = 5;
 
 /// Reads the data file `path` into the view; a refused file is kept with the reader's message.
 pub fn open(app: &mut App, path: &Path) {
