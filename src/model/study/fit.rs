@@ -206,6 +206,35 @@ mod tests {
         assert!(run_fit(&s, &|| true, &|_| {}).is_none());
     }
 
+    /// A newer edit stops a fit between two laws: told to stop after its first check, a fit of
+    /// every candidate fits one law and reports nothing.
+    #[test]
+    fn a_fit_superseded_after_its_first_law_fits_no_other() {
+        use crate::model::fit::candidates;
+        let s = study(candidates());
+        let fitter = Fitter::new(&s.params, &s.candidates).unwrap();
+        let checks = AtomicUsize::new(0);
+        let done = AtomicUsize::new(0);
+        let stop = || checks.fetch_add(1, Ordering::Relaxed) >= 1;
+        let count = || {
+            done.fetch_add(1, Ordering::Relaxed);
+        };
+        let opts = FitOptions {
+            parallel: false,
+            ..FitOptions::default()
+        };
+        assert!(fitter.fit_until(&s.data, &opts, &stop, &count).is_none());
+        assert_eq!(done.load(Ordering::Relaxed), 1, "of {}", s.candidates.len());
+        // Not stopped, every candidate is done once.
+        done.store(0, Ordering::Relaxed);
+        let report = fitter
+            .fit_until(&s.data, &opts, &|| false, &count)
+            .unwrap()
+            .unwrap();
+        assert_eq!(done.load(Ordering::Relaxed), s.candidates.len());
+        assert_eq!(report.fits.len() + report.failed.len(), s.candidates.len());
+    }
+
     #[test]
     fn no_candidates_is_an_error_not_a_panic() {
         let s = study(Vec::new());

@@ -194,10 +194,6 @@ impl View for Fit {
         "fit"
     }
 
-    fn help(&self) -> Option<&'static str> {
-        Some("o open data · ↑↓ law · Enter use the fit · c all/checked")
-    }
-
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen, app);
     }
