@@ -10,8 +10,13 @@ so that the elastic contact at the period-1 orbit's impact speed gT/(1+e) lasts 
 
 Two stops, as in the Rust benchmark:
 - `--stop rigid`: flight by solve_ivp (DOP853) with a terminal event on the gap y − A·sin(ωt),
-  Newton's restitution at the event; a ball whose approach speed falls below 1e-9 of gT rides the
-  table until its acceleration −Aω²·sin(ωt) drops below −g (found by a root of that), or for ever.
+  Newton's restitution at the event; chatter whose accumulation time 2v/(a(1 − e)) (a = g + s̈) is
+  under 1e-6 of a period is summed in closed form, and the ball rides the table until its
+  acceleration −Aω²·sin(ωt) drops below −g (a closed-form arcsin), or for ever — as hertz-tui
+  does (docs/systems.md §4). A hop lower than the flights' absolute tolerance on the height (which
+  solve_ivp's event cannot resolve: the ball would fall through the table) lands in closed form
+  after 2v/a at the speed it left, for both stops; a value that ends with the ball on the table
+  starts the next there.
 - `--stop hunt-crossley`: flights as above; each contact by solve_ivp (DOP853) in the table's frame,
   δ̈ = s̈ + g − F/m with F = k·δⁿ·(1 + α·δ̇) and α = χ/v_in, χ the exact χ(e) (its realised e is
   e: ln((1 + χ)/(1 − χ·e)) = χ·(1 + e)), a terminal event at δ = 0 (and at F = 0, the
@@ -20,7 +25,7 @@ Two stops, as in the Rust benchmark:
 Tolerances: rtol 1e-8 on both (atol 1e-8 of the contact's x_e and v_in, of g·T² and g·T in flight),
 as `cargo bench --bench systems` runs hertz-tui. Prints impacts, wall and CPU time, µs per impact.
 `--every K` runs only every K-th Γ value (the diagram's per-impact cost from a sample of it: the full
-diagram takes scipy about an hour). `--csv FILE` writes (Γ, impact speed) of the recorded impacts.
+diagram takes scipy hours; `--every 20`, 50 values, gives tens of thousands of impacts). `--csv FILE` writes (Γ, impact speed) of the recorded impacts.
 
 Standard scipy; not run by CI. See docs/performance.md ("Vibro-impact diagrams").
 """
@@ -163,34 +168,57 @@ class Ball:
         t_end = min(ev[0] for ev in ends)
         return t_end, sol.y[:, -1]
 
+    def release_from(self, t):
+        """The ball riding the table from t: the state just after it leaves, or None (Γ ≤ 1)."""
+        release = self.stick_release(t)
+        if release is None:
+            return None
+        # Riding the table until release, then off it: after δ = T/1000 the free ball is above the
+        # table by about jerk·δ³/6, far above rounding.
+        s_r, sd_r, _ = self.table(release)
+        dt = 1e-3 * self.period
+        return release + dt, s_r + sd_r * dt - 0.5 * G * dt * dt, sd_r - G * dt
+
     def run(self, state, transient, recorded, speeds):
         """One value: `transient` then `recorded` impacts from state (t, y, v); the end state."""
         t, y, v = state
         t_limit = t + 10000.0 * self.period
         impacts = 0
+        low = RTOL * G * self.period**2  # the flights' absolute tolerance on the height, m
         while impacts < transient + recorded:
-            # A flight longer than 64 periods means the ball left for good (or sank in): stop.
-            hit = self.fly(t, y, v, min(t_limit, t + 64.0 * self.period))
+            s, sd, sdd = self.table(t)
+            rise, press = v - sd, G + sdd
+            if abs(y - s) <= 1e-9 * self.amp and rise >= 0.0 and press > 0.0 and rise * rise <= 2.0 * press * low:
+                # A hop lower than the flights' tolerance (or the ball resting on the table) is
+                # below what solve_ivp's event resolves: it lands after 2v/a at the speed it left.
+                t = t + 2.0 * rise / press
+                s, sd, _ = self.table(t)
+                hit = (t, s, sd - rise)
+            else:
+                # A flight longer than 64 periods means the ball left for good (or sank in): stop.
+                hit = self.fly(t, y, v, min(t_limit, t + 64.0 * self.period))
             if hit is None:
                 return (t, y, v), impacts
             t, y, v = hit
-            s, sd, _ = self.table(t)
+            s, sd, sdd = self.table(t)
             v_in = sd - v
             impacts += 1
             if impacts > transient:
                 speeds.append(v_in)
             if self.stop == "rigid":
                 v_out = E_REST * v_in
-                if v_out < 1e-9 * G * self.period:
-                    release = self.stick_release(t)
-                    if release is None:
-                        return (t, s, sd), impacts
-                    # Riding the table until release, then off it: after δ = T/1000 the free ball is
-                    # above the table by about jerk·δ³/6, far above rounding.
-                    s_r, sd_r, _ = self.table(release)
-                    dt = 1e-3 * self.period
-                    t = release + dt
-                    y, v = s_r + sd_r * dt - 0.5 * G * dt * dt, sd_r - G * dt
+                # Chatter: flights of 2v/a, 2ev/a, … accumulate at 2v/(a(1 − e)) with the table
+                # pressing the ball at a = g + s̈; once that is under 1e-6 of a period it is summed
+                # in closed form and the ball rides the table, as hertz-tui does
+                # (docs/systems.md §4).
+                press = G + sdd
+                if press > 0.0 and 2.0 * v_out <= 1e-6 * self.period * press * (1.0 - E_REST):
+                    t_acc = t + 2.0 * v_out / (press * (1.0 - E_REST))
+                    off = self.release_from(t_acc)
+                    if off is None:
+                        s, sd, _ = self.table(t_acc)
+                        return (t_acc, s, sd), impacts
+                    t, y, v = off
                     continue
                 y, v = s, sd + v_out
             else:
@@ -199,6 +227,11 @@ class Ball:
                     return (t, y, v), impacts
                 t, (d, dd) = end
                 s, sd, _ = self.table(t)
+                # Exactly on the surface where the contact ended at δ = 0 (its event lands within
+                # rounding of it, possibly inside: the flight's falling-gap event would then miss a
+                # hop shorter than its first step), as hertz-tui does.
+                if abs(d) < 1e-12:
+                    d = 0.0
                 y, v = s - d, sd - dd
         return (t, y, v), impacts
 
@@ -216,20 +249,25 @@ def main():
     freq = frequency()
     gammas = np.linspace(0.9, 3.5, args.values)[:: args.every]
     wall, cpu = time.perf_counter(), time.process_time()
-    state = (0.0, 0.0, 0.0)
+    state = (0.0, 0.0, 0.0)  # (t, gap over the table, speed relative to it)
     total = 0
     rows = []
     for gamma in gammas:
         ball = Ball(gamma, freq, args.stop)
+        # The state carried to the new table at the same gap and speed relative to it (as
+        # hertz-tui's diagram does): the tables differ in amplitude.
+        t, gap, rise = state
+        s, sd, _ = ball.table(t)
         speeds = []
-        state, impacts = ball.run(state, args.transient, args.recorded, speeds)
+        end, impacts = ball.run((t, s + gap, sd + rise), args.transient, args.recorded, speeds)
         total += impacts
-        rows.extend((gamma, s) for s in speeds)
+        rows.extend((gamma, v) for v in speeds)
+        s, sd, _ = ball.table(end[0])
         if impacts < args.transient + args.recorded:
             # The ball came to rest: the next value starts from rest on the table.
-            t = state[0]
-            s, sd, _ = ball.table(t)
-            state = (t, s, sd)
+            state = (end[0], 0.0, 0.0)
+        else:
+            state = (end[0], max(end[1] - s, 0.0), end[2] - sd)
         if args.progress:
             used = time.process_time() - cpu
             print(
@@ -239,7 +277,8 @@ def main():
             )
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
     print(
-        f"scipy {args.stop}: f = {freq:.3f} Hz, {len(gammas)} values, {total} impacts, "
+        f"scipy {args.stop}: f = {freq:.3f} Hz, {len(gammas)} values (every {args.every}th of "
+        f"{args.values}), {total} impacts, "
         f"wall {wall:.2f} s, CPU {cpu:.2f} s, {1e6 * cpu / max(total, 1):.1f} µs CPU per impact"
     )
     if args.csv:

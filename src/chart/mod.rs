@@ -7,6 +7,7 @@
 //! Coordinates are display values: SI divided by the axis's prefix and unit, and log₁₀ of that on
 //! a log axis, so that a renderer maps them linearly onto its plot area.
 
+pub mod continuation;
 pub mod figure;
 pub mod fit;
 pub mod kind;

@@ -70,6 +70,8 @@ pub enum Command {
     Orbit(OrbitArgs),
     /// A brute-force bifurcation diagram of a system over a scene or system key (CSV streamed).
     Bifurcation(BifurcationArgs),
+    /// Continue a system's periodic orbit in a key: stability, folds, period doublings, grazing.
+    Continue(super::continuation::ContinueArgs),
 }
 
 /// Options of `hertz-tui fit`.
@@ -485,12 +487,13 @@ pub struct OrbitArgs {
     pub contact: ContactArgs,
     #[command(flatten)]
     pub run: RunArgs,
-    /// m: forcing periods per orbit period.
-    #[arg(long, value_name = "M", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub period: u32,
-    /// n: impacts per orbit period.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub impacts: u32,
+    /// m: forcing periods per orbit period (default: the period the run settles on after the
+    /// transient, or 1 without one or with --phase and --speed).
+    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub period: Option<u32>,
+    /// n: impacts per orbit period (default: as for --period).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub impacts: Option<u32>,
     /// Newton's first impact: its forcing phase ωt, rad (with --speed; default: from the
     /// attractor reached after the transient).
     #[arg(

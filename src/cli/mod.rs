@@ -3,6 +3,7 @@
 pub mod args;
 pub mod bench;
 pub mod bifurcation;
+pub mod continuation;
 pub mod error;
 pub mod fit;
 mod in_order;
@@ -77,6 +78,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
             return Ok(out.flush()?);
         }
         Command::Bifurcation(args) => bifurcation::run(args, &registry)?,
+        Command::Continue(args) => continuation::run(args, &registry)?,
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

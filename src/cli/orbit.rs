@@ -35,8 +35,9 @@ pub struct OrbitReport {
 /// Newton's guess from the arguments: the given first impact, or the attractor.
 fn guess(args: &OrbitArgs) -> OrbitGuess {
     OrbitGuess {
-        forcing_cycles: args.period,
-        impacts: args.impacts,
+        // 0: the period the run settles on (the model's orbit search detects it).
+        forcing_cycles: args.period.unwrap_or(0),
+        impacts: args.impacts.unwrap_or(0),
         start: match (args.phase, args.speed) {
             (Some(phase), Some(v_in)) => Some(GuessStart {
                 phase,

@@ -7,7 +7,7 @@ use serde::Serialize;
 use crate::format::csv;
 use crate::format::verdict as words;
 use crate::model::presets::Registry;
-use crate::model::system::compliant::verdict::{Verdict, verdict};
+use crate::model::system::compliant::verdict::{Verdict, verdict_of};
 use crate::model::system::{
     self, CompliantDamping, Contact, EndReason, History, ImpactKind, ImpactRecord, RunOptions,
     Stick, SystemError, SystemModel, SystemSample,
@@ -222,33 +222,25 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
     let samples = args.history.map_or(0, |n| n as usize);
     let options = run_options(&args.run, samples);
     let period = model.spec.period();
-    let runs = contacts(&args.contact, &model)?
-        .iter()
-        .map(|contact| {
-            let h = simulate(&model, contact, &options)?;
-            Ok(RunReport {
-                contact: contact_label(contact),
-                period: h.period(period).map(|(n, m)| PeriodRow {
-                    impacts: n,
-                    forcing_periods: m,
-                }),
-                end: h.end,
-                impacts_total: h.impacts_total,
-                impacts: h.impacts,
-                sticks: h.sticks,
-                samples: h.samples,
-            })
-        })
+    let histories = contacts(&args.contact, &model)?
+        .into_iter()
+        .map(|contact| Ok((contact, simulate(&model, &contact, &options)?)))
         .collect::<Result<Vec<_>, CliError>>()?;
-    let verdict = match contacts(&args.contact, &model)?.last() {
-        Some(
+    // The verdict weighs the compliant run just made against the rigid one (if asked for too).
+    let verdict = match histories.last() {
+        Some((
             contact @ Contact::Compliant {
                 model: law,
-                damping,
+                damping: _,
             },
-        ) => {
-            let plain = run_options(&args.run, 0);
-            let v = verdict(&model, *law, *damping, &plain).map_err(|e| failed(contact, e))?;
+            compliant,
+        )) => {
+            let rigid = histories
+                .iter()
+                .find(|(c, _)| matches!(c, Contact::Rigid { .. }))
+                .map(|(_, h)| h);
+            let v = verdict_of(&model, *law, &options, compliant, rigid)
+                .map_err(|e| failed(contact, e))?;
             Some(VerdictRow {
                 sentence: words::sentence(&v),
                 verdict: v,
@@ -256,6 +248,21 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
         }
         _ => None,
     };
+    let runs = histories
+        .into_iter()
+        .map(|(contact, h)| RunReport {
+            contact: contact_label(&contact),
+            period: h.period(period).map(|(n, m)| PeriodRow {
+                impacts: n,
+                forcing_periods: m,
+            }),
+            end: h.end,
+            impacts_total: h.impacts_total,
+            impacts: h.impacts,
+            sticks: h.sticks,
+            samples: h.samples,
+        })
+        .collect();
     Ok(SystemReport {
         verdict,
         scene: model
@@ -336,6 +343,7 @@ fn table(report: &SystemReport, transient: usize) -> String {
                 engineering(i.energy_lost, "J"),
                 match i.kind {
                     ImpactKind::ChatterEnd => "chatter ends: sticks".into(),
+                    ImpactKind::Rest => "comes to rest on the stop".into(),
                     ImpactKind::Impact => note.into(),
                 },
             ]);
@@ -387,6 +395,7 @@ fn impacts_csv(report: &SystemReport) -> String {
             out.push_str(match i.kind {
                 ImpactKind::Impact => "impact",
                 ImpactKind::ChatterEnd => "chatter-end",
+                ImpactKind::Rest => "rest",
             });
             out.push('\n');
         }

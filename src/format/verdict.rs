@@ -1,7 +1,9 @@
 //! The model's verdict "which approach does my system need?" (`system::compliant::verdict`) in
 //! words with its numbers, for the command line and the explorer alike.
 
-use crate::model::system::compliant::verdict::{LONG_CONTACT, Quantity, Validity, Verdict};
+use crate::model::system::compliant::verdict::{
+    LONG_CONTACT, Quantity, Resting, Validity, Verdict,
+};
 
 use super::{Zeros, significant};
 
@@ -48,6 +50,9 @@ pub fn sentence(verdict: &Verdict) -> String {
         percent(verdict.contact_ratio)
     );
     let mut text = match verdict.comparisons.get(verdict.decisive) {
+        _ if verdict.impacts.1 == 0 => "no impacts to compare: the compliant stop's body does \
+                                        not bounce here"
+            .to_string(),
         None => format!("no impacts to compare; {contacts}"),
         Some(c) => {
             let by = difference(c.quantity, c.relative());
@@ -70,6 +75,9 @@ pub fn sentence(verdict: &Verdict) -> String {
             }
         }
     };
+    if let Some(clause) = resting(verdict) {
+        text.push_str(&clause);
+    }
     if (verdict.realised_restitution - verdict.asked_restitution).abs() > RESTITUTION_SHOWN
         && let Some(c) = verdict.comparisons.get(verdict.decisive)
     {
@@ -84,6 +92,30 @@ pub fn sentence(verdict: &Verdict) -> String {
         ));
     }
     text
+}
+
+/// The resting phases, separate from the contacts: `; the body also rests on the stop 30 % of
+/// the time (4 resting phases, not counted as contacts; with the rigid stop 28 %)`.
+fn resting(verdict: &Verdict) -> Option<String> {
+    let (c, r) = (verdict.compliant_resting, verdict.rigid_resting);
+    if c.phases == 0 && r.phases == 0 {
+        return None;
+    }
+    let phases = |p: Resting| {
+        format!(
+            "{} resting phase{}",
+            p.phases,
+            if p.phases == 1 { "" } else { "s" }
+        )
+    };
+    Some(format!(
+        "; the body also rests on the stop {} of the time ({}, not counted as contacts; with \
+         the rigid stop {}, {})",
+        percent(c.fraction),
+        phases(c),
+        percent(r.fraction),
+        phases(r),
+    ))
 }
 
 #[cfg(test)]
@@ -109,6 +141,8 @@ mod tests {
             decisive: 0,
             validity,
             impacts: (10, 10),
+            rigid_resting: Resting::default(),
+            compliant_resting: Resting::default(),
         }
     }
 
@@ -139,6 +173,33 @@ mod tests {
         assert_eq!(
             gist(&verdict(0.2, 1.0, 0.5, Validity::NotValid)),
             "needs the compliant stop"
+        );
+        let mut resting = verdict(0.0082, 1.003, 0.5, Validity::Valid);
+        resting.compliant_resting = Resting {
+            phases: 4,
+            fraction: 0.3,
+        };
+        resting.rigid_resting = Resting {
+            phases: 1,
+            fraction: 0.281,
+        };
+        assert!(
+            sentence(&resting).ends_with(
+                "contacts last 0.82 % of a forcing period; the body also rests on the stop 30 % \
+                 of the time (4 resting phases, not counted as contacts; with the rigid stop \
+                 28 %, 1 resting phase)"
+            ),
+            "{}",
+            sentence(&resting)
+        );
+        resting.impacts.1 = 0;
+        assert!(
+            sentence(&resting).starts_with(
+                "no impacts to compare: the compliant stop's body does not bounce here; the \
+                 body also rests on the stop 30 %"
+            ),
+            "{}",
+            sentence(&resting)
         );
     }
 }

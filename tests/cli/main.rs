@@ -1,6 +1,7 @@
 //! The command line driven as a user would: the real binary, its output parsed.
 
 mod commands;
+mod continuation;
 mod fit;
 mod fit_data;
 mod laws;
@@ -8,4 +9,5 @@ mod plot;
 mod readme;
 mod recommendation;
 mod studies;
+mod support;
 mod systems;

@@ -2,30 +2,12 @@
 //! pixels linear in their values, one path per curve, the peak where the solver puts it, and the
 //! paper's Fig. 2 levels; bad arguments are user errors.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
 use serde_json::Value;
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
-        .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-plot-no-config"),
-        )
-        .output()
-        .expect("the binary runs")
-}
-
-fn out_file(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-plot-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+use super::support::{out_file, run, texts, tick_labels};
 
 fn plot(args: &[&str], file: &str) -> String {
-    let path = out_file(file);
+    let path = out_file("plot", file);
     let mut all = vec!["plot"];
     all.extend(args);
     all.extend(["-o", path.to_str().unwrap()]);
@@ -36,23 +18,6 @@ fn plot(args: &[&str], file: &str) -> String {
         String::from_utf8_lossy(&output.stderr)
     );
     std::fs::read_to_string(&path).unwrap()
-}
-
-/// (text, x, y) of every `<text>` element.
-fn texts(svg: &str) -> Vec<(String, f64, f64)> {
-    let attr = |element: &str, name: &str| -> f64 {
-        let start = element.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
-        let rest = &element[start..];
-        rest[..rest.find('"').unwrap()].parse().unwrap()
-    };
-    svg.split("<text")
-        .skip(1)
-        .map(|t| {
-            let content = t.split_once('>').unwrap().1;
-            let content = content.split("</text>").next().unwrap().trim().to_string();
-            (content, attr(t, "x"), attr(t, "y"))
-        })
-        .collect()
 }
 
 /// Where labels that are numbers put `v`: interpolated between the two around it, by `coord`
@@ -109,22 +74,7 @@ fn fig5_svg_puts_the_proposed_peak_where_its_labels_say() {
     let all = texts(&svg);
     // Tick labels: x labels share one row, y labels one column; each evenly spaced in value is
     // evenly spaced in pixels.
-    let numbers: Vec<(f64, f64, f64)> = all
-        .iter()
-        .filter_map(|(t, x, y)| t.parse::<f64>().ok().map(|v| (v, *x, *y)))
-        .collect();
-    let bottom = numbers.iter().map(|n| n.2).fold(f64::MIN, f64::max);
-    let xs: Vec<(f64, f64)> = numbers
-        .iter()
-        .filter(|n| n.2 == bottom)
-        .map(|n| (n.0, n.1))
-        .collect();
-    let left = numbers.iter().map(|n| n.1).fold(f64::MAX, f64::min);
-    let ys: Vec<(f64, f64)> = numbers
-        .iter()
-        .filter(|n| n.1 == left)
-        .map(|n| (n.0, n.2))
-        .collect();
+    let (xs, ys) = tick_labels(&svg);
     assert!(xs.len() >= 4 && ys.len() >= 4, "{xs:?} {ys:?}");
     for w in xs.windows(3) {
         let (a, b) = (w[1].1 - w[0].1, w[2].1 - w[1].1);

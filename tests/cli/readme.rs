@@ -164,6 +164,7 @@ fn run(command: &str, dir: &Path) -> Result<String, String> {
         "orbit",
         "bifurcation",
         "fit",
+        "continue",
         "help",
     ];
     if !args

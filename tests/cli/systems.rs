@@ -4,44 +4,7 @@
 //! streamed diagram against the orbit it settles on, a figure read through its tick labels
 //! against the table, and bad input named by its key.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-use serde_json::Value;
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
-        .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-systems-no-config"),
-        )
-        .env_remove("RUST_BACKTRACE")
-        .output()
-        .expect("the binary runs")
-}
-
-fn ok(args: &[&str]) -> String {
-    let output = run(args);
-    assert!(
-        output.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    String::from_utf8(output.stdout).unwrap()
-}
-
-fn json(args: &[&str]) -> Value {
-    serde_json::from_str(&ok(args)).unwrap()
-}
-
-/// The user error of `args`: exit status 2, nothing on stdout, the message on stderr.
-fn refused(args: &[&str]) -> String {
-    let output = run(args);
-    assert_eq!(output.status.code(), Some(2), "{args:?}");
-    assert!(output.stdout.is_empty(), "{args:?}: {:?}", output.stdout);
-    String::from_utf8(output.stderr).unwrap()
-}
+use super::support::{attr, json, ok, out_file, refused, tick_labels, with};
 
 fn close(a: f64, b: f64, tolerance: f64) -> bool {
     (a - b).abs() <= tolerance * b.abs().max(1e-300)
@@ -51,7 +14,7 @@ const G: f64 = 9.80665;
 
 #[test]
 fn every_rigid_impact_obeys_newton_and_the_oscillator_settles_on_period_one() {
-    let report = json(&[
+    let oscillator = [
         "system",
         "--scene",
         "impact-oscillator",
@@ -59,9 +22,8 @@ fn every_rigid_impact_obeys_newton_and_the_oscillator_settles_on_period_one() {
         "300",
         "--recorded",
         "30",
-        "--format",
-        "json",
-    ]);
+    ];
+    let report = json(&oscillator);
     assert_eq!(report["kind"], "impact-oscillator");
     let groups = &report["groups"];
     assert!(close(
@@ -88,17 +50,7 @@ fn every_rigid_impact_obeys_newton_and_the_oscillator_settles_on_period_one() {
         assert!(close(i["energy_lost"].as_f64().unwrap(), lost, 1e-3), "{i}");
     }
     // The CSV has the same impacts, one row each.
-    let csv = ok(&[
-        "system",
-        "--scene",
-        "impact-oscillator",
-        "--transient",
-        "300",
-        "--recorded",
-        "30",
-        "--format",
-        "csv",
-    ]);
+    let csv = ok(&with(&oscillator, &["--format", "csv"]));
     let lines: Vec<&str> = csv.lines().collect();
     assert!(lines[0].starts_with("contact,t,phase,x,stop,v_in,v_out"));
     assert_eq!(lines.len(), 31);
@@ -121,7 +73,7 @@ fn the_bouncing_balls_period_one_orbit_is_its_closed_form() {
     let omega = 2.0 * std::f64::consts::PI * f;
     let amplitude = 1.3 * G / (omega * omega);
     let set = format!("system.amplitude={amplitude}");
-    let report = json(&[
+    let args = [
         "orbit",
         "--scene",
         "bouncing-ball",
@@ -131,9 +83,8 @@ fn the_bouncing_balls_period_one_orbit_is_its_closed_form() {
         "0.5",
         "--speed",
         "0.3",
-        "--format",
-        "json",
-    ]);
+    ];
+    let report = json(&args);
     let orbit = &report["orbits"][0];
     assert_eq!(orbit["contact"], "rigid");
     assert_eq!(orbit["stable"], true);
@@ -158,17 +109,7 @@ fn the_bouncing_balls_period_one_orbit_is_its_closed_form() {
     for m in orbit["moduli"].as_array().unwrap() {
         assert!(m.as_f64().unwrap() < 1.0);
     }
-    let table = ok(&[
-        "orbit",
-        "--scene",
-        "bouncing-ball",
-        "--set",
-        &set,
-        "--phase",
-        "0.5",
-        "--speed",
-        "0.3",
-    ]);
+    let table = ok(&args);
     assert!(
         table.contains("period-1 orbit, 1 impact per period, stable"),
         "{table}"
@@ -178,7 +119,7 @@ fn the_bouncing_balls_period_one_orbit_is_its_closed_form() {
 
 #[test]
 fn the_streamed_diagram_settles_on_the_orbit_newton_finds() {
-    let csv = ok(&[
+    let diagram = [
         "bifurcation",
         "--scene",
         "impact-oscillator",
@@ -194,7 +135,8 @@ fn the_streamed_diagram_settles_on_the_orbit_newton_finds() {
         "300",
         "--recorded",
         "10",
-    ]);
+    ];
+    let csv = ok(&diagram);
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(
         lines[0],
@@ -209,7 +151,7 @@ fn the_streamed_diagram_settles_on_the_orbit_newton_finds() {
         values.windows(2).all(|w| w[0] <= w[1]),
         "in the order of the values"
     );
-    let orbit = json(&["orbit", "--scene", "impact-oscillator", "--format", "json"]);
+    let orbit = json(&["orbit", "--scene", "impact-oscillator"]);
     let v_orbit = orbit["orbits"][0]["points"][0]["v_in"].as_f64().unwrap();
     for row in &rows[20..] {
         assert_eq!(row[5..7], ["1", "1"], "period-1 at 9 Hz");
@@ -217,25 +159,7 @@ fn the_streamed_diagram_settles_on_the_orbit_newton_finds() {
         assert!(close(v, v_orbit, 1e-6), "{v} against {v_orbit}");
     }
     // JSON and the table carry the same diagram.
-    let doc = json(&[
-        "bifurcation",
-        "--scene",
-        "impact-oscillator",
-        "--param",
-        "system.frequency",
-        "--from",
-        "8.5",
-        "--to",
-        "9",
-        "--points",
-        "3",
-        "--transient",
-        "300",
-        "--recorded",
-        "10",
-        "--format",
-        "json",
-    ]);
+    let doc = json(&diagram);
     assert_eq!(doc["param"], "system.frequency");
     assert_eq!(doc["unit"], "Hz");
     let last = &doc["diagrams"][0]["columns"][2];
@@ -373,7 +297,7 @@ fn set_takes_units_and_a_unit_of_another_quantity_is_named_by_its_key() {
         "system.forcing_amplitude=500 mN",
     ]);
     assert_eq!(si, units);
-    let report: Value = serde_json::from_str(&units).unwrap();
+    let report: serde_json::Value = serde_json::from_str(&units).unwrap();
     assert_eq!(report["frequency"], 20.0);
     let ball = json(&[
         "system",
@@ -410,30 +334,6 @@ fn set_takes_units_and_a_unit_of_another_quantity_is_named_by_its_key() {
     }
 }
 
-fn out_file(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-systems-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
-
-/// (text, x, y) of every `<text>` element of an SVG.
-fn texts(svg: &str) -> Vec<(String, f64, f64)> {
-    svg.split("<text")
-        .skip(1)
-        .map(|t| {
-            let content = t.split_once('>').unwrap().1;
-            let content = content.split("</text>").next().unwrap().trim().to_string();
-            (content, attr(t, "x"), attr(t, "y"))
-        })
-        .collect()
-}
-
-fn attr(element: &str, name: &str) -> f64 {
-    let start = element.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
-    let rest = &element[start..];
-    rest[..rest.find('"').unwrap()].parse().unwrap()
-}
-
 /// The value at pixel `p` read through the tick labels (value, pixel) around it.
 fn read(labels: &[(f64, f64)], p: f64) -> f64 {
     let w = labels
@@ -445,7 +345,7 @@ fn read(labels: &[(f64, f64)], p: f64) -> f64 {
 
 #[test]
 fn the_impact_map_figure_reads_the_tables_impacts_through_its_ticks() {
-    let path = out_file("map.svg");
+    let path = out_file("systems", "map.svg");
     let common = [
         "--scene",
         "impact-oscillator",
@@ -468,30 +368,13 @@ fn the_impact_map_figure_reads_the_tables_impacts_through_its_ticks() {
         svg.contains("impact map") && svg.contains("v_in [m/s]"),
         "{svg}"
     );
-    let mut args = vec!["system", "--format", "json"];
-    args.extend(common);
-    let report = json(&args);
+    let report = json(&with(&["system"], &common));
     let impact = &report["runs"][0]["impacts"][0];
     let (phase, v_in) = (
         impact["phase"].as_f64().unwrap(),
         impact["v_in"].as_f64().unwrap(),
     );
-    let numbers: Vec<(f64, f64, f64)> = texts(&svg)
-        .iter()
-        .filter_map(|(t, x, y)| t.parse::<f64>().ok().map(|v| (v, *x, *y)))
-        .collect();
-    let bottom = numbers.iter().map(|n| n.2).fold(f64::MIN, f64::max);
-    let xs: Vec<(f64, f64)> = numbers
-        .iter()
-        .filter(|n| n.2 == bottom)
-        .map(|n| (n.0, n.1))
-        .collect();
-    let left = numbers.iter().map(|n| n.1).fold(f64::MAX, f64::min);
-    let ys: Vec<(f64, f64)> = numbers
-        .iter()
-        .filter(|n| n.1 == left)
-        .map(|n| (n.0, n.2))
-        .collect();
+    let (xs, ys) = tick_labels(&svg);
     // The period-1 orbit's ten impacts are one dot.
     let dots: Vec<(f64, f64)> = svg
         .split("<circle")
@@ -514,7 +397,7 @@ fn the_impact_map_figure_reads_the_tables_impacts_through_its_ticks() {
 #[test]
 fn the_system_charts_overlay_both_stops_each_in_its_own_look() {
     for chart in ["history", "phase", "impact-map"] {
-        let path = out_file(&format!("{chart}.svg"));
+        let path = out_file("systems", &format!("{chart}.svg"));
         ok(&[
             "plot",
             "--scene",
@@ -543,7 +426,7 @@ fn the_system_charts_overlay_both_stops_each_in_its_own_look() {
         assert!(svg.contains("#00A0BE"), "{chart}: the law's hue");
         assert!(svg.contains("#000000"), "{chart}: the rigid stop's");
     }
-    let path = out_file("bif.svg");
+    let path = out_file("systems", "bif.svg");
     ok(&[
         "plot",
         "--scene",

@@ -6,6 +6,9 @@ mod ode_common;
 
 mod bodies_props;
 mod calibration;
+mod continuation_ball;
+mod continuation_compliant;
+mod continuation_oscillator;
 mod dry_friction_cutoff;
 mod engine_runs;
 mod engines;
@@ -45,5 +48,6 @@ mod systems_diagram;
 mod systems_hard;
 mod systems_oscillator;
 mod systems_scene;
+mod systems_seed;
 mod tables;
 mod tolerance_promise;

@@ -13,11 +13,12 @@ use hertz_tui::model::force::ForceLaw;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::compliant::estimate::hertz_estimate;
 use hertz_tui::model::system::compliant::orbit::{MapPoint, period_doubling};
-use hertz_tui::model::system::compliant::verdict::{Validity, verdict};
+use hertz_tui::model::system::compliant::verdict::{Validity, verdict, verdict_of};
 use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop, simulate_detailed};
 use hertz_tui::model::system::{
-    CompliantDamping, Contact, DiagramOptions, GuessStart, OrbitGuess, OrbitOptions, Param,
-    RunOptions, State, SystemKey, SystemKind, SystemModel, SystemSpec, bifurcation, find_orbit,
+    CompliantDamping, Contact, DiagramOptions, GuessStart, ImpactKind, ImpactRecord, OrbitGuess,
+    OrbitOptions, Param, RunOptions, State, SystemKey, SystemKind, SystemModel, SystemSpec,
+    bifurcation, find_orbit, simulate,
 };
 
 const E: f64 = 0.5;
@@ -380,5 +381,198 @@ fn orbits_and_diagrams_dispatch_on_the_compliant_contact_and_meet_the_rigid_ones
         assert_eq!(b.velocities.len(), 10, "{b:?}");
         let (va, vb) = (a.velocities[9], b.velocities[9]);
         assert!((vb / va - 1.0).abs() < 5e-3, "Γ = {}: {va} {vb}", a.value);
+    }
+}
+
+/// The `bouncing-ball` preset (steel sphere R = 10 mm on a steel table, 20 Hz) at amplitude `a`.
+fn preset_ball(amplitude: f64) -> SystemModel {
+    let registry = Registry::builtin().unwrap();
+    let scene = registry.scene("bouncing-ball").unwrap();
+    let mut spec = registry
+        .scene_system("bouncing-ball", &[])
+        .unwrap()
+        .unwrap();
+    if let SystemKind::BouncingBall { amplitude: a, .. } = &mut spec.kind {
+        *a = amplitude;
+    }
+    SystemModel::from_scene(&scene, &spec).unwrap()
+}
+
+#[test]
+fn the_verdict_weighs_the_impacts_contacts_and_reports_resting_phases_apart() {
+    let hc = ForceModel::HuntCrossley;
+    let options = RunOptions::default();
+    // The preset as it is (Γ = 1.61): the ball bounces, and now and then settles on the table and
+    // rides it until the table's deceleration exceeds g. Those contacts last a large part of a
+    // period; the impacts' own contacts are Hertz's (eq 7) at their speeds, about 100 µs.
+    let model = preset_ball(1e-3);
+    let h = simulate_detailed(
+        &model,
+        hc,
+        CompliantDamping::PerImpact,
+        &options,
+        CompliantOptions::default(),
+    )
+    .unwrap()
+    .history;
+    let period = model.spec.period();
+    let s = stop(&model, hc, CompliantDamping::PerImpact);
+    let hertz = |v: f64| {
+        hertz_estimate(&s.elastic, model.mass, v)
+            .unwrap()
+            .contact_time
+    };
+    let (impacts, rests): (Vec<&ImpactRecord>, Vec<&ImpactRecord>) =
+        h.impacts.iter().partition(|i| i.kind == ImpactKind::Impact);
+    assert!(impacts.len() > 150 && !rests.is_empty(), "{h:?}");
+    for i in &impacts {
+        // Hunt–Crossley's own χ at e = 0.5 lengthens the elastic contact by about 10 %; the
+        // table and gravity a little more at the slowest impacts.
+        let ratio = i.contact_time.unwrap() / hertz(i.v_in);
+        assert!((0.95..1.4).contains(&ratio), "{i:?}: t_c/t_Hertz = {ratio}");
+    }
+    for r in &rests {
+        assert!(r.contact_time.unwrap() > 10.0 * hertz(r.v_in), "{r:?}");
+        assert!(
+            h.sticks
+                .iter()
+                .any(|s| s.start == r.t && s.end == Some(r.t + r.contact_time.unwrap())),
+            "each resting contact is a sticking phase: {r:?} {:?}",
+            h.sticks
+        );
+    }
+    let v = verdict_of(&model, hc, &options, &h, None).unwrap();
+    let longest = impacts
+        .iter()
+        .map(|i| i.contact_time.unwrap())
+        .fold(0.0, f64::max);
+    assert_eq!(v.contact_time, longest);
+    // Of the order of eq 7 at the impacts' speeds: between t_c at the fastest and 1.4 t_c at the
+    // slowest, all under 1 % of the period here (the resting contacts last up to 19 % of it).
+    let (slow, fast) = impacts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), i| {
+        (a.min(i.v_in), b.max(i.v_in))
+    });
+    assert!(
+        v.contact_ratio >= hertz(fast) / period && v.contact_ratio <= 1.4 * hertz(slow) / period,
+        "{v:?}"
+    );
+    assert!(v.contact_ratio < 0.01, "{v:?}");
+    let longest_rest = rests
+        .iter()
+        .map(|r| r.contact_time.unwrap())
+        .fold(0.0, f64::max);
+    assert!(longest_rest / period > 0.1, "{longest_rest}");
+    assert_eq!(v.compliant_resting.phases, rests.len());
+    assert!(v.compliant_resting.fraction > 0.0 && v.compliant_resting.fraction < 0.05);
+    assert_eq!(v.impacts.1, impacts.len());
+    // The verdict from the caller's run is the verdict that runs it itself.
+    assert_eq!(
+        verdict(&model, hc, CompliantDamping::PerImpact, &options).unwrap(),
+        v
+    );
+    let text = sentence(&v);
+    assert!(text.contains("the body also rests on the stop"), "{text}");
+
+    // Γ = 1.1: the ball spends most of each period riding the table, with either stop.
+    let omega = model.spec.omega();
+    let model = preset_ball(1.1 * 9.80665 / (omega * omega));
+    let h = simulate(
+        &model,
+        &Contact::Compliant {
+            model: hc,
+            damping: CompliantDamping::PerImpact,
+        },
+        &options,
+    )
+    .unwrap();
+    let v = verdict_of(&model, hc, &options, &h, None).unwrap();
+    assert!(v.contact_ratio < 0.01, "{v:?}");
+    assert!(v.compliant_resting.fraction > 0.5, "{v:?}");
+    assert!(v.rigid_resting.fraction > 0.5, "{v:?}");
+
+    // Γ = 0.9: the ball never leaves the table: no impacts, resting for good.
+    let model = preset_ball(0.9 * 9.80665 / (omega * omega));
+    let v = verdict(&model, hc, CompliantDamping::PerImpact, &options).unwrap();
+    assert_eq!((v.impacts.1, v.contact_time), (0, 0.0), "{v:?}");
+    assert_eq!(v.compliant_resting.fraction, 1.0, "{v:?}");
+    assert!(
+        sentence(&v).starts_with("no impacts to compare"),
+        "{}",
+        sentence(&v)
+    );
+}
+
+#[test]
+fn a_compliant_orbit_is_found_without_a_start_where_the_run_from_rest_settles() {
+    // Γ = 1.3, t_c/T = 0.003: the run from rest chatters and rests on the table; the search
+    // starts Newton from the rigid orbit and lands on the compliant one beside it.
+    let f = frequency_for_ratio(0.003);
+    let model = ball(f, 1.3);
+    let hc = Contact::Compliant {
+        model: ForceModel::HuntCrossley,
+        damping: CompliantDamping::CalibratedTo(E),
+    };
+    let run = simulate(&model, &hc, &RunOptions::default()).unwrap();
+    assert!(
+        run.impacts.iter().any(|i| i.kind == ImpactKind::Rest),
+        "{:?}",
+        run.end
+    );
+    let guess = OrbitGuess {
+        forcing_cycles: 1,
+        impacts: 1,
+        start: None,
+        attractor: RunOptions::default(),
+    };
+    let o = find_orbit(&model, &hc, &guess, &OrbitOptions::default()).unwrap();
+    assert!(o.stable, "{o:?}");
+    let v_rigid = G / f / (1.0 + E);
+    assert!((o.points[0].v_in / v_rigid - 1.0).abs() < 2e-3, "{o:?}");
+}
+
+#[test]
+fn compliant_multipliers_reach_the_rigid_det_j_and_agree_with_a_finer_tolerance_to_1e_10() {
+    use hertz_tui::model::system::compliant::orbit::{map_jacobian_extrapolated, newton};
+    // The period-1 orbit at Γ = 1.3 with Hunt–Crossley at the exact χ: det J → e² (the rigid
+    // map's, docs/physics.md §8.1) linearly in t_c/T; the extrapolated Jacobian at the orbits'
+    // rtol 1e-12 against one at 1e-13 agrees to ~1e-11 (plain central differences at a step of
+    // 1e-6: ~1e-10, measured 7e-11 to 1.5e-10 on these orbits).
+    let mut deviations = Vec::new();
+    for ratio in [0.01, 0.003, 0.001] {
+        let f = frequency_for_ratio(ratio);
+        let model = ball(f, 1.3);
+        let at = |rtol: f64| {
+            let options = CompliantOptions {
+                rtol,
+                ..CompliantOptions::default()
+            };
+            let s = CompliantStop::new(
+                &model,
+                ForceModel::HuntCrossley,
+                CompliantDamping::CalibratedTo(E),
+                options,
+            )
+            .unwrap();
+            let (p, _) = newton(&s, rigid_orbit(f, 1.3, E), 1, 1, 1e-11, 40).unwrap();
+            map_jacobian_extrapolated(&s, p, 1).unwrap()
+        };
+        let (j, fine) = (at(1e-12), at(1e-13));
+        assert!(
+            (j.determinant() - fine.determinant()).abs() < 3e-11
+                && (j.trace() - fine.trace()).abs() < 3e-11,
+            "t_c/T = {ratio}: {j} against {fine}"
+        );
+        let deviation = E * E - fine.determinant();
+        assert!(
+            deviation > 0.0 && deviation < 0.06 * ratio,
+            "{ratio}: {deviation}"
+        );
+        deviations.push(deviation);
+    }
+    eprintln!("e² − det J at t_c/T 0.01, 0.003, 0.001: {deviations:?}");
+    // Linear in t_c/T: each step down by 3.3 divides it by about that.
+    for w in deviations.windows(2) {
+        let r = w[1] / w[0];
+        assert!((0.2..0.45).contains(&r), "{deviations:?}");
     }
 }

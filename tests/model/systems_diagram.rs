@@ -185,3 +185,87 @@ fn a_diagram_over_the_restitution_moves_the_rigid_stop_e() {
         );
     }
 }
+
+/// The same attractor: the same period and, over one period, the same impact speeds (sorted, to
+/// within 1e-9 of the largest), or the same end without impacts.
+fn same_attractor(
+    a: &hertz_tui::model::system::Column,
+    b: &hertz_tui::model::system::Column,
+) -> bool {
+    let cycle = |c: &hertz_tui::model::system::Column| {
+        let n = c.period.map_or(c.velocities.len(), |(n, _)| n as usize);
+        let mut v: Vec<f64> = c.velocities[c.velocities.len() - n..].to_vec();
+        v.sort_by(f64::total_cmp);
+        v
+    };
+    if a.period != b.period || a.end != b.end || a.period.is_none() {
+        return a.period == b.period && a.end == b.end && a.velocities.len() == b.velocities.len();
+    }
+    let (va, vb) = (cycle(a), cycle(b));
+    let scale = va.iter().chain(&vb).fold(0.0_f64, |m, v| m.max(v.abs()));
+    va.len() == vb.len()
+        && va
+            .iter()
+            .zip(&vb)
+            .all(|(x, y)| (x - y).abs() <= 1e-9 * scale)
+}
+
+#[test]
+fn a_parallel_diagram_follows_the_attractor_across_chunks_as_a_sequential_one_does() {
+    // Γ from 1.45 down to 1.07. Every run that starts cold starts just after the impact of the
+    // one-impact-in-two-periods orbit of Γ = 2.3 (carried to its Γ at the same phase and relative
+    // speed): at Γ = 1.45 that lands on the period-1 orbit, which a sequential follow keeps down to
+    // its saddle-node Γ_SN = 1.047; below Γ ≈ 1.21 the same cold start lands on the chattering,
+    // sticking attractor that coexists with it. Chunks of 5 or 7 values on the pool must give the
+    // sequence's columns.
+    let e = 0.5;
+    let sn2 = 2.0 * PI * (1.0 - e) / (1.0 + e);
+    let start_gamma = 2.3;
+    let phase = (sn2 / start_gamma).acos();
+    let mut run = options(200, 16);
+    run.run.initial = Some(State {
+        t: phase,
+        x: start_gamma * phase.sin(),
+        v: start_gamma * phase.cos() + e * 4.0 * PI / (1.0 + e),
+    });
+    let values: Vec<f64> = (0..39).map(|i| 1.45 - 0.38 * f64::from(i) / 38.0).collect();
+    let model = ball(start_gamma, e);
+    let param = Param::System(SystemKey::Gamma);
+    let diagram = |chunk: usize| {
+        let options = DiagramOptions { chunk, ..run };
+        let mut order = Vec::new();
+        let d = bifurcation(&model, &Contact::rigid(e), param, &values, &options, |c| {
+            order.push(c.index);
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+        assert_eq!(
+            order,
+            (0..values.len()).collect::<Vec<_>>(),
+            "streamed in order"
+        );
+        d
+    };
+    let sequential = diagram(values.len());
+    assert!(
+        sequential.columns.iter().all(|c| c.period == Some((1, 1))),
+        "{:?}",
+        sequential
+            .columns
+            .iter()
+            .map(|c| c.period)
+            .collect::<Vec<_>>()
+    );
+    for chunk in [5, 7] {
+        let parallel = diagram(chunk);
+        for (a, b) in sequential.columns.iter().zip(&parallel.columns) {
+            assert!(
+                same_attractor(a, b),
+                "chunks of {chunk}, Γ = {}: {:?} against {:?}",
+                a.value,
+                (a.period, &a.velocities[..2.min(a.velocities.len())]),
+                (b.period, &b.velocities[..2.min(b.velocities.len())])
+            );
+        }
+    }
+}

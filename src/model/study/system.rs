@@ -4,7 +4,7 @@
 
 use std::ops::ControlFlow;
 
-use crate::model::system::compliant::verdict::{Verdict, verdict};
+use crate::model::system::compliant::verdict::{Verdict, verdict_of};
 use crate::model::system::{
     self, Column, Contact, DiagramOptions, History, Param, RunOptions, SystemError, SystemModel,
 };
@@ -70,24 +70,26 @@ pub fn values(from: f64, to: f64, points: usize) -> Vec<f64> {
 
 /// Every stop's run.
 pub fn run_system(study: &SystemStudy) -> SystemRuns {
-    let plain = RunOptions {
-        samples_per_period: 0,
-        ..study.run
-    };
-    SystemRuns {
-        runs: study
-            .contacts
-            .iter()
-            .map(|c| (*c, system::simulate(&study.model, c, &study.run)))
-            .collect(),
-        verdict: study.contacts.iter().find_map(|c| match c {
-            Contact::Compliant {
-                model: law,
-                damping,
-            } => Some(verdict(&study.model, *law, *damping, &plain)),
-            Contact::Rigid { .. } => None,
-        }),
-    }
+    let runs: Vec<(Contact, Result<History, SystemError>)> = study
+        .contacts
+        .iter()
+        .map(|c| (*c, system::simulate(&study.model, c, &study.run)))
+        .collect();
+    // The verdict weighs the runs just made (the dense samples do not change the impacts).
+    let rigid = runs.iter().find_map(|(c, h)| match (c, h) {
+        (Contact::Rigid { restitution }, Ok(h)) if *restitution == study.model.restitution => {
+            Some(h)
+        }
+        _ => None,
+    });
+    let verdict = runs.iter().find_map(|(c, h)| match c {
+        Contact::Compliant { model: law, .. } => Some(
+            h.clone()
+                .and_then(|h| verdict_of(&study.model, *law, &study.run, &h, rigid)),
+        ),
+        Contact::Rigid { .. } => None,
+    });
+    SystemRuns { runs, verdict }
 }
 
 /// Partial reports per stop's diagram at most: a report copies the columns so far, so a few

@@ -364,6 +364,13 @@ pub fn run(
         }
         if total > options.transient_impacts {
             impacts.push(record(model, omega, x, &c));
+            if let (true, Exit::Free { .. }) = (c.is_rest(), c.exit) {
+                sticks.push(Stick {
+                    start: c.t_start,
+                    end: Some(c.t_end),
+                    stop: i,
+                });
+            }
             details.push(ContactDetail {
                 energy: c.energy,
                 max_approach: c.max_approach,
@@ -426,6 +433,10 @@ fn record(model: &SystemModel, omega: f64, x: f64, c: &ContactResult) -> ImpactR
         peak_force_estimate: model.peak_force_estimate(c.v_in),
         contact_time: Some(c.contact_time()),
         energy_lost: c.energy.incoming - c.energy.outgoing,
-        kind: ImpactKind::Impact,
+        kind: if c.is_rest() {
+            ImpactKind::Rest
+        } else {
+            ImpactKind::Impact
+        },
     }
 }

@@ -104,47 +104,62 @@ where
         values.len().div_ceil(4 * threads).max(1)
     };
     let chunks = values.len().div_ceil(chunk);
+    let range = |c: usize| c * chunk..((c + 1) * chunk).min(values.len());
+    let name = |i: usize, e: SystemError| match e {
+        SystemError::ImpactBudget { budget, time, .. } => SystemError::ImpactBudget {
+            what: format!("the diagram at {} = {}", param.path(), values[i]),
+            budget,
+            time,
+        },
+        other => other,
+    };
+    // One value run from `state` (of the model it came from), its column and end state.
+    let one = |i: usize, state: Option<(State, &SystemModel)>| {
+        let m = &models[i];
+        let run_options = RunOptions {
+            initial: state.map(|(s, from)| rebase(s, from, m)),
+            ..options.run
+        };
+        run(m, &run_options)
+            .map(|h| (column_of(i, values[i], &h, m.spec.period()), h.end_state))
+            .map_err(|e| name(i, e))
+    };
     let next = AtomicUsize::new(0);
     let cancelled = AtomicBool::new(false);
-    let (sender, receiver) = mpsc::channel::<(usize, Result<Column, SystemError>)>();
-    let worker = |sender: mpsc::Sender<(usize, Result<Column, SystemError>)>| {
+    // A chunk found to have started on another attractor than the one followed into it is
+    // redone on the calling thread; its speculative run stops.
+    let dropped: Vec<AtomicBool> = (0..chunks).map(|_| AtomicBool::new(false)).collect();
+    let (sender, receiver) = mpsc::channel::<Speculative>();
+    let worker = |sender: mpsc::Sender<Speculative>| {
         loop {
             let c = next.fetch_add(1, Ordering::Relaxed);
             if c >= chunks || cancelled.load(Ordering::Relaxed) {
                 break;
             }
-            // Each chunk starts from the given state (of `model`), then follows the attractor.
+            // Each chunk starts cold from the given state (of `model`), then follows the
+            // attractor; the caller checks its start against the previous chunk's end.
             let mut state: Option<(State, &SystemModel)> = options.run.initial.map(|s| (s, model));
-            for i in c * chunk..((c + 1) * chunk).min(values.len()) {
-                if cancelled.load(Ordering::Relaxed) {
+            for i in range(c) {
+                if cancelled.load(Ordering::Relaxed) || dropped[c].load(Ordering::Relaxed) {
+                    break;
+                }
+                let result = one(i, state);
+                if let Ok((_, end)) = &result {
+                    state = Some((*end, &models[i]));
+                }
+                let failed = result.is_err();
+                if sender.send((i, result)).is_err() {
                     return;
                 }
-                let m = &models[i];
-                let run_options = RunOptions {
-                    initial: state.map(|(s, from)| rebase(s, from, m)),
-                    ..options.run
-                };
-                let column = run(m, &run_options).map(|h| {
-                    state = Some((h.end_state, m));
-                    column_of(i, values[i], &h, m.spec.period())
-                });
-                let column = column.map_err(|e| match e {
-                    SystemError::ImpactBudget { budget, time, .. } => SystemError::ImpactBudget {
-                        what: format!("the diagram at {} = {}", param.path(), values[i]),
-                        budget,
-                        time,
-                    },
-                    other => other,
-                });
-                let failed = column.is_err();
-                if sender.send((i, column)).is_err() || failed {
-                    return;
+                if failed {
+                    break;
                 }
             }
         }
     };
+    let mut speculative: Vec<Option<Result<(Column, State), SystemError>>> =
+        (0..values.len()).map(|_| None).collect();
     let mut columns: Vec<Option<Column>> = vec![None; values.len()];
-    let mut emitted = 0;
     let mut outcome = Ok(());
     std::thread::scope(|scope| {
         let worker = &worker;
@@ -158,25 +173,103 @@ where
             });
         });
         drop(sender);
-        for (i, column) in receiver.iter() {
-            match column {
-                Err(e) => {
-                    outcome = Err(e);
+        // Emission in the order of the values: chunk `current`, from value `emitted`; `follow`
+        // is the state the sequence reached at the end of the previous chunk.
+        let mut current = 0;
+        let mut emitted = 0;
+        let mut verified = false;
+        let mut follow: Option<(State, &SystemModel)> = None;
+        let mut emit = |i: usize,
+                        column: Column,
+                        columns: &mut Vec<Option<Column>>|
+         -> Result<(), SystemError> {
+            let stop = on_column(&column).is_break();
+            columns[i] = Some(column);
+            if stop {
+                Err(SystemError::Cancelled)
+            } else {
+                Ok(())
+            }
+        };
+        'receive: for (i, result) in receiver.iter() {
+            speculative[i] = Some(result);
+            while current < chunks {
+                let r = range(current);
+                if !verified {
+                    // Chunk 0 starts where a sequence starts; any other is checked: its first
+                    // value run from where the previous chunk ended must reach the attractor
+                    // its cold start reached.
+                    let Some(cold) = speculative[r.start].take() else {
+                        break;
+                    };
+                    if current == 0 {
+                        speculative[r.start] = Some(cold);
+                        verified = true;
+                        continue;
+                    }
+                    let warm = one(r.start, follow);
+                    let same = match (&warm, &cold) {
+                        (Ok((w, _)), Ok((c, _))) => w.same_attractor(c),
+                        _ => false,
+                    };
+                    if same {
+                        // The warm column is the sequence's; the rest follow the cold chain on
+                        // the same attractor.
+                        speculative[r.start] = Some(warm);
+                        verified = true;
+                        continue;
+                    }
+                    dropped[current].store(true, Ordering::Relaxed);
+                    // Redo the chunk in sequence from the warm start.
+                    let mut warm = Some(warm);
+                    for j in r.clone() {
+                        match warm.take().unwrap_or_else(|| one(j, follow)) {
+                            Ok((column, end)) => {
+                                follow = Some((end, &models[j]));
+                                if let Err(e) = emit(j, column, &mut columns) {
+                                    outcome = Err(e);
+                                    break 'receive;
+                                }
+                            }
+                            Err(e) => {
+                                outcome = Err(e);
+                                break 'receive;
+                            }
+                        }
+                    }
+                    for k in r.clone() {
+                        speculative[k] = None;
+                    }
+                    current += 1;
+                    emitted = range(current.min(chunks - 1)).start;
+                    verified = false;
+                    continue;
+                }
+                emitted = emitted.max(r.start);
+                while emitted < r.end {
+                    match speculative[emitted].take() {
+                        None => break,
+                        Some(Err(e)) => {
+                            outcome = Err(e);
+                            break 'receive;
+                        }
+                        Some(Ok((column, end))) => {
+                            follow = Some((end, &models[emitted]));
+                            if let Err(e) = emit(emitted, column, &mut columns) {
+                                outcome = Err(e);
+                                break 'receive;
+                            }
+                            emitted += 1;
+                        }
+                    }
+                }
+                if emitted < r.end {
                     break;
                 }
-                Ok(column) => columns[i] = Some(column),
+                current += 1;
+                verified = false;
             }
-            while emitted < columns.len() {
-                let Some(column) = &columns[emitted] else {
-                    break;
-                };
-                if on_column(column).is_break() {
-                    outcome = Err(SystemError::Cancelled);
-                    break;
-                }
-                emitted += 1;
-            }
-            if outcome.is_err() {
+            if current >= chunks {
                 break;
             }
         }
@@ -187,6 +280,60 @@ where
         key: param.path(),
         columns: columns.into_iter().flatten().collect(),
     })
+}
+
+/// A speculative column from the pool: its index, and the column with the run's end state.
+type Speculative = (usize, Result<(Column, State), SystemError>);
+
+impl Column {
+    /// Whether `other` is on the same attractor: the same end and period and, over one period,
+    /// the same stops and impact speeds (sorted, within 1e-6 of the largest, the tolerance of
+    /// [`History::period`]); without a period (chaos, or a long transient), the same number of
+    /// impacts and a range of impact speeds within 5 % of the largest — a chaotic attractor is
+    /// told by the band it fills.
+    pub fn same_attractor(&self, other: &Column) -> bool {
+        if self.end != other.end
+            || self.period != other.period
+            || self.velocities.len() != other.velocities.len()
+        {
+            return false;
+        }
+        let scale = self
+            .velocities
+            .iter()
+            .chain(&other.velocities)
+            .fold(0.0_f64, |m, v| m.max(v.abs()));
+        match self.period {
+            Some((n, _)) => {
+                let cycle = |c: &Column| {
+                    let from = c.velocities.len().saturating_sub(n as usize);
+                    let mut v: Vec<(usize, f64)> = c.stops[from..]
+                        .iter()
+                        .copied()
+                        .zip(c.velocities[from..].iter().copied())
+                        .collect();
+                    v.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+                    v
+                };
+                cycle(self)
+                    .iter()
+                    .zip(&cycle(other))
+                    .all(|(a, b)| a.0 == b.0 && (a.1 - b.1).abs() <= 1e-6 * scale)
+            }
+            None => {
+                let band = |c: &Column| {
+                    c.velocities
+                        .iter()
+                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                            (lo.min(*v), hi.max(*v))
+                        })
+                };
+                let (a, b) = (band(self), band(other));
+                self.velocities.is_empty()
+                    || ((a.0 - b.0).abs() <= 0.05 * scale && (a.1 - b.1).abs() <= 0.05 * scale)
+            }
+        }
+    }
 }
 
 /// A state of the run at `from` carried to `to` at the same forcing phase, in the first period

@@ -84,6 +84,18 @@ pub enum SystemError {
         /// The last residual (relative).
         residual: f64,
     },
+    /// No start for Newton converged to the orbit asked for (no start given): why, in words.
+    #[error(
+        "periodic orbit: no orbit of {impacts} impact(s) in {cycles} forcing period(s) found: {why}"
+    )]
+    OrbitNotFound {
+        /// Forcing periods asked for.
+        cycles: u32,
+        /// Impacts asked for.
+        impacts: u32,
+        /// What the run did and what Newton met.
+        why: String,
+    },
     /// The orbit guess led to chatter, sticking or no impact: no isolated impact-map orbit there.
     #[error("periodic orbit: {0}")]
     OrbitDegenerate(&'static str),

@@ -23,6 +23,7 @@
 
 pub mod compliant;
 mod contact;
+pub mod continuation;
 mod diagram;
 mod error;
 mod model;
@@ -30,6 +31,7 @@ mod orbit;
 mod param;
 pub mod rigid;
 mod run;
+pub(crate) mod seed;
 mod spec;
 
 use std::ops::ControlFlow;

@@ -70,6 +70,9 @@ pub enum ImpactKind {
     /// The accumulation point of a chatter sequence (infinitely many impacts in finite time,
     /// summed in closed form): the body sticks to the stop from here (docs/systems.md §4).
     ChatterEnd,
+    /// A compliant contact in which the body came to rest on the stop instead of bouncing off
+    /// it (docs/compliant.md §3): its time on the stop is a [`Stick`], not a contact time.
+    Rest,
 }
 
 /// One impact.
@@ -99,7 +102,8 @@ pub struct ImpactRecord {
     pub kind: ImpactKind,
 }
 
-/// An interval during which the body rides on a stop (after chatter, or an impact at zero speed).
+/// An interval during which the body rides on a stop (after chatter, or an impact at zero speed;
+/// for a compliant stop, a contact in which the body came to rest).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Stick {
     /// Start, s.

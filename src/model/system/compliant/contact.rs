@@ -138,6 +138,11 @@ pub struct ContactResult {
     pub t_peak: f64,
     pub max_approach: f64,
     pub energy: EnergyAudit,
+    /// ∫ side·(s̈ − a) dt over the contact, m/s: the impulse per unit mass with which the
+    /// system's forces pressed the body into the stop while the law's force acted. Against the
+    /// speed the contact reversed, v_in + v_out, it tells an impact from a resting phase
+    /// ([`ContactResult::is_rest`]).
+    pub pressing_impulse: f64,
     pub exit: Exit,
     /// The law's force evaluations, the floor of a contact's cost.
     pub force_evals: usize,
@@ -148,6 +153,16 @@ pub struct ContactResult {
 impl ContactResult {
     pub fn contact_time(&self) -> f64 {
         self.t_end - self.t_start
+    }
+
+    /// Whether the body came to rest on the stop rather than bounced: the contact never ended,
+    /// or the system's forces pressed it in with more impulse than the contact spent reversing
+    /// its motion (v_in + v_out), so that most of the contact force's impulse, v_in + v_out + J,
+    /// held the body against them (docs/compliant.md §3). A free impact of any law of the table
+    /// is the other way round by orders of magnitude when its contact is short against the
+    /// system's motion.
+    pub fn is_rest(&self) -> bool {
+        matches!(self.exit, Exit::Held { .. }) || self.pressing_impulse > self.v_in + self.v_out
     }
 }
 
@@ -264,34 +279,14 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         let (ddd, stop_now, ..) = ode_sys.relative_accel(0.0, &State::zeros());
         if ddd <= 0.0 {
             let (x, v) = stop_now.body(0.0, 0.0);
-            return Ok(finish(
-                mass,
-                Some((0.0, State::zeros())),
-                scale,
-                t0,
-                v_in,
-                stop,
-                (0.0, t0),
-                0.0,
-                EnergyAudit::default(),
-                Exit::Free { t: t0, x, v },
-                0,
-                0,
-                Vec::new(),
-            ));
+            let mut totals = Totals::new(mass, scale, v_in);
+            totals.law_end = Some((0.0, State::zeros()));
+            return Ok(totals.finish(Exit::Free { t: t0, x, v }));
         }
     }
     let mut tau = 0.0;
     let mut y = State::new(0.0, v_in / v_s);
-    let mut steps = 0;
-    let mut pieces = Vec::new();
-    let mut energy = EnergyAudit {
-        incoming: 0.5 * mass * v_in * v_in,
-        ..EnergyAudit::default()
-    };
-    let mut peak = (0.0_f64, t0);
-    let mut max_approach = 0.0_f64;
-    let mut law_end: Option<(f64, State)> = None;
+    let mut totals = Totals::new(mass, scale, v_in);
     let mut h_initial = None;
     let mut pending_work = 0.0;
     let fail = |tau: f64, source| ContactError::Integration {
@@ -303,21 +298,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         if tau >= tau_limit {
             let (x, v) = scale.body(plant, tau, &y);
             let t = scale.time(tau);
-            return Ok(finish(
-                mass,
-                law_end,
-                scale,
-                t0,
-                v_in,
-                stop,
-                peak,
-                max_approach,
-                energy,
-                Exit::Held { t, x, v },
-                ode_sys.evals,
-                steps,
-                pieces,
-            ));
+            return Ok(totals.finish(Exit::Held { t, x, v }));
         }
         let phase = ode_sys.phase;
         let law_now = ode_sys.law;
@@ -378,13 +359,14 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             };
             (end, run)
         };
-        steps += integration.stats.steps + integration.stats.rejected_steps;
-        if steps > settings.max_steps {
+        totals.steps += integration.stats.steps + integration.stats.rejected_steps;
+        totals.force_evals = ode_sys.evals;
+        if totals.steps > settings.max_steps {
             return Err(fail(
                 integration.t,
                 OdeError::StepBudgetExhausted {
                     t: scale.time(integration.t),
-                    steps,
+                    steps: totals.steps,
                 },
             ));
         }
@@ -397,24 +379,26 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             .reduce(f64::max);
         if ode_sys.force_on {
             let (piece_peak, piece_max) = extremes(&ode_sys, segments, integration.t, scale);
-            if piece_peak.0 > peak.0 {
-                peak = piece_peak;
+            if piece_peak.0 > totals.peak.0 {
+                totals.peak = piece_peak;
             }
-            max_approach = max_approach.max(piece_max);
-            let (work, dissipated) = energy_integrals(&mut ode_sys, segments, integration.t);
-            energy.external_work += work;
-            energy.absorbed += dissipated;
+            totals.max_approach = totals.max_approach.max(piece_max);
+            let (work, dissipated, impulse) =
+                energy_integrals(&mut ode_sys, segments, integration.t);
+            totals.energy.external_work += work;
+            totals.energy.absorbed += dissipated;
+            totals.pressing_impulse += impulse;
         } else {
             // Free motion inside: only the external forces work, and that counts towards this
             // impact only if the law takes up the contact again.
-            let (work, _) = energy_integrals(&mut ode_sys, segments, integration.t);
+            let (work, ..) = energy_integrals(&mut ode_sys, segments, integration.t);
             pending_work += work;
         }
         let (tau_end, y_end) = (integration.t, integration.y);
         if settings.keep_dense {
             let mut dense = integration.dense;
             dense.truncate_at(tau_end);
-            pieces.push(ContactPiece {
+            totals.pieces.push(ContactPiece {
                 dense,
                 scale,
                 force_on: ode_sys.force_on,
@@ -425,43 +409,29 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
         match piece_end {
             PieceEnd::Approach => {
                 if ode_sys.force_on {
-                    law_end = Some((tau, State::new(0.0, y[1])));
+                    totals.law_end = Some((tau, State::new(0.0, y[1])));
                 }
                 // Exactly on the surface, so that the flight starts from a gap of exactly 0.
                 let t = scale.time(tau);
                 let stop_now = plant.stop(stop, t);
                 let (x, v) = stop_now.body(0.0, y[1] * scale.v);
-                return Ok(finish(
-                    mass,
-                    law_end,
-                    scale,
-                    t0,
-                    v_in,
-                    stop,
-                    peak,
-                    max_approach,
-                    energy,
-                    Exit::Free { t, x, v },
-                    ode_sys.evals,
-                    steps,
-                    pieces,
-                ));
+                return Ok(totals.finish(Exit::Free { t, x, v }));
             }
             PieceEnd::Tension => {
-                law_end = Some((tau, y));
+                totals.law_end = Some((tau, y));
                 let d = y[0] * scale.x;
-                energy.absorbed += law_now.stored_energy(d, phase);
+                totals.energy.absorbed += law_now.stored_energy(d, phase);
                 ode_sys.force_on = false;
             }
             PieceEnd::Recontact => {
                 // The excursion is part of the same impact: its energy bookkeeping restarts from
                 // the state the law takes up again.
                 let d = y[0] * scale.x;
-                energy.absorbed -= law_now.stored_energy(d, phase);
-                energy.external_work += std::mem::take(&mut pending_work);
+                totals.energy.absorbed -= law_now.stored_energy(d, phase);
+                totals.energy.external_work += std::mem::take(&mut pending_work);
                 ode_sys.force_on = true;
                 ode_sys.phase = Phase::of_velocity(y[1]);
-                law_end = None;
+                totals.law_end = None;
             }
             PieceEnd::Turn => {
                 y[1] = 0.0;
@@ -475,21 +445,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             PieceEnd::TimeLimit => {
                 let (x, v) = scale.body(plant, tau, &y);
                 let t = scale.time(tau);
-                return Ok(finish(
-                    mass,
-                    law_end,
-                    scale,
-                    t0,
-                    v_in,
-                    stop,
-                    peak,
-                    max_approach,
-                    energy,
-                    Exit::Held { t, x, v },
-                    ode_sys.evals,
-                    steps,
-                    pieces,
-                ));
+                return Ok(totals.finish(Exit::Held { t, x, v }));
             }
         }
     }
@@ -515,42 +471,69 @@ fn options(
     }
 }
 
-#[allow(clippy::too_many_arguments)]
-fn finish(
+/// A contact's running totals, from its first touch to whichever exit ends it.
+struct Totals {
     mass: f64,
-    law_end: Option<(f64, State)>,
     scale: Scale,
-    t0: f64,
     v_in: f64,
-    stop: usize,
+    /// Where the law let go (scaled time and state), if it did.
+    law_end: Option<(f64, State)>,
+    /// Peak force, N, and its time, s.
     peak: (f64, f64),
     max_approach: f64,
-    mut energy: EnergyAudit,
-    exit: Exit,
+    energy: EnergyAudit,
+    pressing_impulse: f64,
     force_evals: usize,
     steps: usize,
     pieces: Vec<ContactPiece>,
-) -> ContactResult {
-    let (t_end, v_out, residual) = match (law_end, exit) {
-        (Some((tau, y)), _) => (scale.time(tau), -y[1] * scale.v, y[0] * scale.x),
-        (None, Exit::Held { t, .. } | Exit::Free { t, .. }) => (t, 0.0, 0.0),
-    };
-    energy.outgoing = 0.5 * mass * v_out * v_out;
-    ContactResult {
-        stop,
-        t_start: t0,
-        v_in,
-        t_end,
-        v_out,
-        residual,
-        peak_force: peak.0,
-        t_peak: peak.1,
-        max_approach,
-        energy,
-        exit,
-        force_evals,
-        steps,
-        pieces,
+}
+
+impl Totals {
+    fn new(mass: f64, scale: Scale, v_in: f64) -> Totals {
+        Totals {
+            mass,
+            scale,
+            v_in,
+            law_end: None,
+            peak: (0.0, scale.t0),
+            max_approach: 0.0,
+            energy: EnergyAudit {
+                incoming: 0.5 * mass * v_in * v_in,
+                ..EnergyAudit::default()
+            },
+            pressing_impulse: 0.0,
+            force_evals: 0,
+            steps: 0,
+            pieces: Vec::new(),
+        }
+    }
+
+    /// The contact's result once `exit` ends it.
+    fn finish(self, exit: Exit) -> ContactResult {
+        let scale = self.scale;
+        let (t_end, v_out, residual) = match (self.law_end, exit) {
+            (Some((tau, y)), _) => (scale.time(tau), -y[1] * scale.v, y[0] * scale.x),
+            (None, Exit::Held { t, .. } | Exit::Free { t, .. }) => (t, 0.0, 0.0),
+        };
+        let mut energy = self.energy;
+        energy.outgoing = 0.5 * self.mass * v_out * v_out;
+        ContactResult {
+            stop: scale.stop,
+            t_start: scale.t0,
+            v_in: self.v_in,
+            t_end,
+            v_out,
+            residual,
+            peak_force: self.peak.0,
+            t_peak: self.peak.1,
+            max_approach: self.max_approach,
+            energy,
+            pressing_impulse: self.pressing_impulse,
+            exit,
+            force_evals: self.force_evals,
+            steps: self.steps,
+            pieces: self.pieces,
+        }
     }
 }
 
@@ -612,16 +595,17 @@ fn extremes<P: Plant, L: ForceLaw>(
     (peak, x.max(0.0) * scale.x)
 }
 
-/// ∫ m·side·(s̈ − a)·δ̇ dt (external work) and ∫ (F − k·xⁿ)·δ̇ dt (the law's dissipative work)
-/// over a piece, J, by Gauss–Legendre on each step's interpolant.
+/// ∫ m·side·(s̈ − a)·δ̇ dt (external work, J), ∫ (F − k·xⁿ)·δ̇ dt (the law's dissipative work, J)
+/// and ∫ side·(s̈ − a) dt (the pressing impulse per unit mass, m/s) over a piece, by
+/// Gauss–Legendre on each step's interpolant.
 fn energy_integrals<P: Plant, L: ForceLaw>(
     sys: &mut ContactOde<'_, P, L>,
     segments: &[Segment],
     tau_end: f64,
-) -> (f64, f64) {
+) -> (f64, f64, f64) {
     let scale = sys.scale;
     let mass = 1.0 / sys.inv_mass;
-    let (mut work, mut dissipated) = (0.0, 0.0);
+    let (mut work, mut dissipated, mut impulse) = (0.0, 0.0, 0.0);
     for seg in segments {
         let (a, b) = (seg.t_start(), seg.t_end().min(tau_end));
         if b <= a {
@@ -636,11 +620,13 @@ fn energy_integrals<P: Plant, L: ForceLaw>(
             let stop = sys.plant.stop(scale.stop, t);
             let (x, v) = stop.body(d, dd);
             let accel = sys.plant.free_accel(t, x, v);
-            work += weight * h * mass * stop.side * (stop.sdd - accel) * dd;
+            let pressing = stop.side * (stop.sdd - accel);
+            work += weight * h * mass * pressing * dd;
+            impulse += weight * h * pressing;
             if sys.force_on {
                 dissipated += weight * h * sys.law.dissipative_force(d, dd, sys.phase) * dd;
             }
         }
     }
-    (work, dissipated)
+    (work, dissipated, impulse)
 }

@@ -6,12 +6,19 @@
 //! are short against the system's motion. Short contacts are not enough on their own: a law that
 //! does not realise the e it was given for (clamped Kelvin–Voigt) moves the whole answer, so the
 //! rigid stop is also run at the compliant law's *realised* e, which separates the two effects.
+//!
+//! Contact time means the impacts' contacts: a contact in which the body came to rest on the stop
+//! (a bouncing ball riding its table) is a resting phase, weighed separately as the fraction of
+//! the recorded time the body spends on a stop, beside the rigid stop's sticking phases.
 
 use serde::Serialize;
 
 use crate::model::force::ForceModel;
 
-use super::super::{CompliantDamping, History, RunOptions, SystemError, SystemModel, rigid};
+use super::super::{
+    CompliantDamping, EndReason, History, ImpactKind, ImpactRecord, RunOptions, SystemError,
+    SystemModel, rigid,
+};
 use super::{CompliantOptions, CompliantStop, run};
 
 /// Contacts shorter than this fraction of the forcing period, with answers that agree within
@@ -83,30 +90,77 @@ pub enum Validity {
     NotValid,
 }
 
+/// A run's resting phases: the sticking after chatter of a rigid stop, the contacts in which the
+/// body came to rest on a compliant one.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct Resting {
+    /// Resting phases in the recorded part.
+    pub phases: usize,
+    /// The fraction of the recorded time (from the first recorded impact to the run's end) the
+    /// body spends resting on a stop.
+    pub fraction: f64,
+}
+
+impl Resting {
+    /// The resting phases of `history`.
+    pub fn of(history: &History) -> Resting {
+        let Some(first) = history.impacts.first() else {
+            // No impact recorded: the body came to rest for good within the transient, or flies.
+            return if history.end == EndReason::StuckForever {
+                Resting {
+                    phases: 1,
+                    fraction: 1.0,
+                }
+            } else {
+                Resting::default()
+            };
+        };
+        let end = history.end_state.t;
+        let span = end - first.t;
+        let on_stop: f64 = history
+            .sticks
+            .iter()
+            .map(|s| s.end.unwrap_or(end).min(end) - s.start)
+            .sum();
+        Resting {
+            phases: history.sticks.len(),
+            fraction: if span > 0.0 {
+                (on_stop / span).clamp(0.0, 1.0)
+            } else {
+                1.0
+            },
+        }
+    }
+}
+
 /// The verdict for one system, law and damping.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Verdict {
     pub law: ForceModel,
     /// Forcing period T, s.
     pub period: f64,
-    /// The longest recorded contact, s.
+    /// The longest recorded impact's contact (resting phases left out), s.
     pub contact_time: f64,
     /// contact_time / T.
     pub contact_ratio: f64,
     /// The scene's e (what the rigid stop uses and the law was given).
     pub asked_restitution: f64,
-    /// The compliant law's mean v_out/v_in over the recorded impacts.
+    /// The compliant law's mean v_out/v_in over the recorded impacts (resting phases left out).
     pub realised_restitution: f64,
     pub comparisons: Vec<Comparison>,
     /// The comparison that decided (largest relative difference).
     pub decisive: usize,
     pub validity: Validity,
-    /// Recorded impacts of each run (rigid, compliant).
+    /// Recorded impacts of each run (rigid, compliant), resting phases left out.
     pub impacts: (usize, usize),
+    /// The resting phases of the rigid stop at the scene's e.
+    pub rigid_resting: Resting,
+    /// The resting phases of the compliant stop.
+    pub compliant_resting: Resting,
 }
 
 /// Runs `model` rigid (at the scene's e and at the law's realised e) and compliant with `law` and
-/// `damping` over `options`, and compares them.
+/// `damping` over `options`, and compares them ([`verdict_of`] with no run given).
 pub fn verdict(
     model: &SystemModel,
     law: ForceModel,
@@ -115,11 +169,29 @@ pub fn verdict(
 ) -> Result<Verdict, SystemError> {
     let stop = CompliantStop::new(model, law, damping, CompliantOptions::default())?;
     let compliant = run(&stop, model, options)?.history;
-    let rigid_asked = rigid::simulate(model, model.restitution, options)?;
+    verdict_of(model, law, options, &compliant, None)
+}
+
+/// The verdict from the runs a caller already has: `compliant`, the compliant stop of `law` run
+/// with `options`, and, if given, `rigid`, the rigid stop at the scene's e with the same options
+/// (run here otherwise). Only the rigid stop at the law's realised e is run here.
+pub fn verdict_of(
+    model: &SystemModel,
+    law: ForceModel,
+    options: &RunOptions,
+    compliant: &History,
+    rigid: Option<&History>,
+) -> Result<Verdict, SystemError> {
+    let options = &RunOptions {
+        samples_per_period: 0,
+        ..*options
+    };
+    let rigid_asked = match rigid {
+        Some(h) => h.clone(),
+        None => rigid::simulate(model, model.restitution, options)?,
+    };
     let realised = mean(
-        compliant
-            .impacts
-            .iter()
+        impacts(compliant)
             .filter(|i| i.v_in > 0.0)
             .map(|i| i.v_out / i.v_in),
     )
@@ -127,9 +199,7 @@ pub fn verdict(
     .clamp(0.0, 1.0);
     let rigid_realised = rigid::simulate(model, realised, options)?;
     let period = model.spec.period();
-    let contact_time = compliant
-        .impacts
-        .iter()
+    let contact_time = impacts(compliant)
         .filter_map(|i| i.contact_time)
         .fold(0.0, f64::max);
     let comparisons: Vec<Comparison> = [
@@ -142,7 +212,7 @@ pub fn verdict(
         quantity: q,
         rigid: answer(q, &rigid_asked, period),
         rigid_at_realised: answer(q, &rigid_realised, period),
-        compliant: answer(q, &compliant, period),
+        compliant: answer(q, compliant, period),
     })
     .collect();
     let decisive = comparisons
@@ -171,8 +241,18 @@ pub fn verdict(
         comparisons,
         decisive,
         validity,
-        impacts: (rigid_asked.impacts.len(), compliant.impacts.len()),
+        impacts: (impacts(&rigid_asked).count(), impacts(compliant).count()),
+        rigid_resting: Resting::of(&rigid_asked),
+        compliant_resting: Resting::of(compliant),
     })
+}
+
+/// A run's recorded impacts proper: no chatter accumulation points, no resting phases.
+fn impacts(history: &History) -> impl Iterator<Item = &ImpactRecord> {
+    history
+        .impacts
+        .iter()
+        .filter(|i| i.kind == ImpactKind::Impact)
 }
 
 fn mean(values: impl Iterator<Item = f64>) -> Option<f64> {
@@ -180,9 +260,9 @@ fn mean(values: impl Iterator<Item = f64>) -> Option<f64> {
     (n > 0).then(|| sum / n as f64)
 }
 
-/// A run's answer for `quantity`.
+/// A run's answer for `quantity`, over its impacts proper.
 fn answer(quantity: Quantity, history: &History, period: f64) -> f64 {
-    let impacts = &history.impacts;
+    let impacts: Vec<&ImpactRecord> = impacts(history).collect();
     match quantity {
         Quantity::MeanImpactSpeed => mean(impacts.iter().map(|i| i.v_in)).unwrap_or(0.0),
         Quantity::MeanImpactPhase => {

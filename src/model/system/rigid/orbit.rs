@@ -7,8 +7,9 @@ use nalgebra::Complex;
 
 use crate::model::system::error::SystemError;
 use crate::model::system::model::SystemModel;
-use crate::model::system::orbit::{ImpactPoint, Orbit, OrbitGuess, OrbitOptions};
-use crate::model::system::run::{ImpactKind, State};
+use crate::model::system::orbit::{GuessStart, ImpactPoint, Orbit, OrbitGuess, OrbitOptions};
+use crate::model::system::run::State;
+use crate::model::system::seed;
 
 use super::dynamics::Dynamics;
 use super::search::{Found, first_impact};
@@ -112,18 +113,27 @@ pub fn find_orbit(
             (start.stop, t, v)
         }
         None => {
-            let h = simulate(model, restitution, &guess.attractor)?;
-            let last = h
-                .impacts
-                .iter()
-                .rev()
-                .find(|i| i.kind == ImpactKind::Impact && i.v_out > 0.0)
-                .ok_or(SystemError::OrbitDegenerate(
-                    "the attractor has no impacts to start from",
-                ))?;
-            let t = last.phase / d.omega;
-            let (_, sv, _) = d.stop_motion(last.stop, t);
-            (last.stop, t, sv + d.stops[last.stop].sigma * last.v_out)
+            // Starts from the run past the transient, then a grid of phases and speeds.
+            let seeded = OrbitOptions {
+                max_iterations: options.max_iterations.min(seed::SEED_ITERATIONS),
+                ..*options
+            };
+            return seed::search(
+                model,
+                guess,
+                |run| simulate(model, restitution, run),
+                |guess| find_orbit(model, restitution, guess, &seeded),
+                (
+                    |guess: &OrbitGuess, from_run: &[GuessStart]| {
+                        let speed = from_run.first().map_or_else(
+                            || seed::speed_scale(model, guess.forcing_cycles),
+                            |s| s.v_in,
+                        );
+                        seed::grid(model, speed)
+                    },
+                    seed::Extra::Last,
+                ),
+            );
         }
     };
     let horizon = 2.0 * period + 4.0 * d.period;

@@ -1,0 +1,191 @@
+//! `hertz-tui continue` driven as a user would: the bouncing ball's period doubling against its
+//! closed form Γ_PD (docs/physics.md §8.1), the doubled branch, the oscillator's grazing against
+//! F_g = F₀·(gap/δ_st)·√((1 − r²)² + (2ζr)²) (§8.3, in the groups the report prints), the CSV's
+//! rows against the JSON's points, the figure's labels, and bad input named.
+
+use std::f64::consts::PI;
+
+use serde_json::Value;
+
+use crate::support::{ok, out_file, refused};
+
+/// The ball's branch from Γ = 1.3 (the orbit found from the run's settled period-1 cycle).
+const BALL: [&str; 9] = [
+    "continue",
+    "--scene",
+    "bouncing-ball",
+    "--param",
+    "system.gamma",
+    "--from",
+    "1.3",
+    "--to",
+    "1.7",
+];
+
+#[test]
+fn the_balls_period_doubling_and_doubled_branch() {
+    let mut args = BALL.to_vec();
+    args.extend(["--doubled", "--format", "json"]);
+    let report: Value = serde_json::from_str(&ok(&args)).unwrap();
+    let e: f64 = 0.5;
+    let sn = PI * (1.0 - e) / (1.0 + e);
+    let pd = sn.hypot(2.0 * (1.0 + e * e) / (1.0 + e).powi(2));
+    let result = &report["results"][0];
+    let specials = result["branch"]["specials"].as_array().unwrap();
+    assert_eq!(specials.len(), 1, "{specials:?}");
+    assert_eq!(specials[0]["kind"], "period-doubling");
+    let at = specials[0]["point"]["values"][0].as_f64().unwrap();
+    assert!((at - pd).abs() < 1e-8, "{at} vs {pd}");
+    let doubled = &result["doubled"];
+    assert_eq!(doubled["cycles"], 2);
+    assert_eq!(doubled["stops"].as_array().unwrap().len(), 2);
+    // The CSV: a row per impact of every orbit, and the special point's own row.
+    let mut args = BALL.to_vec();
+    args.extend(["--format", "csv"]);
+    let csv = ok(&args);
+    let mut lines = csv.lines();
+    assert!(
+        lines
+            .next()
+            .unwrap()
+            .starts_with("contact,branch,system.gamma,impact,")
+    );
+    let rows: Vec<&str> = lines.collect();
+    let points = result["branch"]["points"].as_array().unwrap().len();
+    assert_eq!(rows.len(), points + 1, "one row per point plus the special");
+    let special: Vec<&str> = rows
+        .iter()
+        .filter(|r| r.ends_with(",period-doubling"))
+        .copied()
+        .collect();
+    assert_eq!(special.len(), 1);
+    let value: f64 = special[0].split(',').nth(2).unwrap().parse().unwrap();
+    assert!((value - pd).abs() < 1e-8);
+}
+
+#[test]
+fn the_oscillators_grazing_is_its_closed_form() {
+    let report: Value = serde_json::from_str(&ok(&[
+        "continue",
+        "--scene",
+        "impact-oscillator",
+        "--param",
+        "system.forcing_amplitude",
+        "--from",
+        "0.05",
+        "--to",
+        "0.001",
+        "--transient",
+        "100",
+        "--recorded",
+        "20",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let g = &report["groups"];
+    let r = g["frequency_ratio"].as_f64().unwrap();
+    let zeta = g["damping_ratio"].as_f64().unwrap();
+    let gap = g["gap_ratio"].as_f64().unwrap();
+    // The scene's F₀ = 0.05 N: the static deflection the gap ratio is measured in.
+    let expected = 0.05 * gap * ((1.0 - r * r).powi(2) + (2.0 * zeta * r).powi(2)).sqrt();
+    let branch = &report["results"][0]["branch"];
+    assert_eq!(branch["end"]["reason"], "grazing");
+    let grazing = branch["specials"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["kind"] == "grazing-impact")
+        .unwrap();
+    let at = grazing["point"]["values"][0].as_f64().unwrap();
+    assert!(
+        (at - expected).abs() < 1e-8 * expected,
+        "{at} vs {expected}"
+    );
+}
+
+#[test]
+fn the_figure_marks_the_special_points() {
+    let path = out_file("continuation", "branch.svg");
+    let mut args = BALL.to_vec();
+    args.extend([
+        "--diagram",
+        "20",
+        "--transient",
+        "200",
+        "--recorded",
+        "20",
+        "-o",
+    ]);
+    args.push(path.to_str().unwrap());
+    let table = ok(&args);
+    assert!(table.contains("period-doubling  1.5268237"), "{table}");
+    let svg = std::fs::read_to_string(&path).unwrap();
+    for text in [
+        "periodic orbits over Γ",
+        "PD 1.5268",
+        "rigid period-1 stable",
+        "rigid period-1 unstable",
+        "rigid diagram",
+    ] {
+        assert!(svg.contains(text), "{text} missing");
+    }
+}
+
+#[test]
+fn bad_input_is_named() {
+    let e = refused(&[
+        "continue",
+        "--scene",
+        "bouncing-ball",
+        "--param",
+        "system.gamma",
+        "--from",
+        "1",
+        "--to",
+        "1",
+    ]);
+    assert!(e.contains("--from and --to must differ"), "{e}");
+    let e = refused(&[
+        "continue",
+        "--scene",
+        "bouncing-ball",
+        "--param",
+        "system.gap",
+        "--from",
+        "1",
+        "--to",
+        "2",
+    ]);
+    assert!(e.contains("system.gap"), "{e}");
+    let e = refused(&[
+        "continue",
+        "--scene",
+        "bouncing-ball",
+        "--param",
+        "system.gamma",
+        "--from",
+        "1.3",
+        "--to",
+        "2",
+        "--second",
+        "system.frequency",
+    ]);
+    assert!(e.contains("--from2"), "{e}");
+    // A start below the fold, where no period-1 orbit exists: said in words, naming the stop.
+    let e = refused(&[
+        "continue",
+        "--scene",
+        "bouncing-ball",
+        "--param",
+        "system.gamma",
+        "--from",
+        "0.5",
+        "--to",
+        "2",
+    ]);
+    assert!(
+        e.contains("rigid stop") && e.contains("exists only from Γ"),
+        "{e}"
+    );
+}
