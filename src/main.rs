@@ -51,7 +51,7 @@ fn explore(args: &Cli) -> color_eyre::Result<ExitCode> {
                 Marker::Dot => MarkerStyle::Dot,
                 Marker::Block => MarkerStyle::Block,
             };
-            hertz_tui::ui::run(opened, &source, marker, config)?;
+            hertz_tui::ui::run(opened, &source, args.data.as_deref(), marker, config)?;
             Ok(ExitCode::SUCCESS)
         }
         Err(e) => Ok(exit(Err(e))),

@@ -23,6 +23,9 @@ pub struct Cli {
     /// system.gap=0.5mm (repeatable; a number in SI or with its unit).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<Override>,
+    /// Measured restitution e(v₀), a CSV file, to open in the explorer's fit view (docs/fitting.md).
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
     /// How the explorer draws chart points; dot or block for fonts without braille.
     #[arg(long, value_enum, default_value_t = Marker::Braille)]
     pub marker: Marker,

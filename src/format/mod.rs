@@ -5,6 +5,7 @@
 
 pub mod csv;
 pub mod fit_csv;
+pub mod fit_verdict;
 mod number;
 pub mod recommendation;
 mod shortest_exp;

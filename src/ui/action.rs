@@ -66,6 +66,8 @@ pub enum Action {
     Export,
     /// Writes the charts of the view on screen to an SVG figure.
     Figure,
+    /// `o`: opens a file into the view (the fit view's data).
+    Open,
     /// Moves the explorer's data cursor along the charts' x axes: forward (right) or back, one
     /// step (`,` `.`) or ten (`<` `>`).
     MoveCursor {

@@ -99,7 +99,10 @@ const SHARED: &[(&str, &str)] = &[
         "presets: type to filter; Enter loads; on a material 1 2",
     ),
     ("s e", "save the scene (name or path.toml) · export as CSV"),
-    ("f m t", "figure <scene>-<view>.svg · mouse on/off · engine"),
+    (
+        "f m t o",
+        "figure <scene>-<view>.svg · mouse · engine · open data",
+    ),
     ("paste", "opens the field under the cursor with the text"),
     (
         ", . < > P",
@@ -239,6 +242,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
         KeyCode::Char('r') => Action::ResetField,
         KeyCode::Char('m') => Action::ToggleMouse,
         KeyCode::Char('f') => Action::Figure,
+        KeyCode::Char('o') => Action::Open,
         KeyCode::Char('v') => Action::CycleView(Nudge::Up),
         KeyCode::Char('V') => Action::CycleView(Nudge::Down),
         KeyCode::Char(',') => Action::MoveCursor {

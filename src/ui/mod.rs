@@ -90,10 +90,12 @@ impl Opened {
 /// (checked models, solver settings), and runs it until the user quits; the terminal is restored on
 /// every exit path (errors and panics included: `ratatui::try_init` installs a panic hook that
 /// restores the terminal before the previously installed color-eyre hook reports).
-/// `config` (the user's config file) chooses the theme where it names one, and moves keys.
+/// `config` (the user's config file) chooses the theme where it names one, and moves keys; with
+/// `data` the explorer opens on the fit view with that file loaded.
 pub fn run(
     opened: Opened,
     source: &str,
+    data: Option<&std::path::Path>,
     marker: MarkerStyle,
     config: Config,
 ) -> color_eyre::Result<()> {
@@ -123,6 +125,11 @@ pub fn run(
     let mut app = App::open_system(scene, system, view, registry, marker, theme);
     if app.description.is_none() {
         app.description = description;
+    }
+    // `--data FILE`: the fit view opens on it (a refused file shows its error there).
+    if let Some(path) = data {
+        views::fit::open(&mut app, path);
+        app.tab = tab::Tab::named("fit").unwrap_or(tab::Tab::HOME);
     }
     // ratatui sets the terminal up: raw mode, the alternate screen, a panic hook that restores
     // both.

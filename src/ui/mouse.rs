@@ -24,7 +24,7 @@ fn place(app: &App, column: u16, row: u16) -> Option<Result<Position, u16>> {
 pub fn click(app: &mut App, column: u16, row: u16) {
     match place(app, column, row) {
         Some(Err(bar_column)) => {
-            if let Some(tab) = tabs::tab_at(bar_column) {
+            if let Some(tab) = tabs::tab_at(bar_column, app.screen.0) {
                 app.tab = tab;
             }
         }

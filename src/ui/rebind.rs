@@ -20,6 +20,7 @@ pub const ACTIONS: &[(&str, char)] = &[
     ("mouse", 'm'),
     ("engines", 't'),
     ("figure", 'f'),
+    ("open", 'o'),
     ("next-chart", 'c'),
     ("calibrate", 'C'),
     ("toggle-model", ' '),

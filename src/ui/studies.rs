@@ -8,6 +8,7 @@
 
 use std::sync::Arc;
 
+use crate::model::study::fit::FitData;
 use crate::model::study::runner::{
     self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
     StudyKind, StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
@@ -152,6 +153,14 @@ impl Studies {
     pub fn diagram(&self) -> Option<&Arc<DiagramData>> {
         match self.result(StudyKind::Diagram) {
             Some(StudyResult::Diagram(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// The fit view's fit, or its progress while a slow one runs.
+    pub fn fit(&self) -> Option<&Arc<FitData>> {
+        match self.result(StudyKind::Fit) {
+            Some(StudyResult::Fit(r)) => Some(r),
             _ => None,
         }
     }

@@ -194,6 +194,10 @@ fn normal(app: &mut App, action: Action) {
             app.mode = Mode::Picker(picker);
         }
         Action::Save => open_save_prompt(app, false),
+        Action::Open => {
+            let fit = super::tab::Tab::named("fit").map_or("v".to_string(), |t| t.name());
+            app.say(format!("o opens a data file in the fit view ({fit})"), true);
+        }
         Action::Figure => match figure_export::write_view(app) {
             Ok(news) => app.say(news, false),
             Err(reason) => app.say(reason, true),
@@ -430,7 +434,7 @@ fn prompting(app: &mut App, mut prompt: Prompt, action: Action) {
 }
 
 /// `~/…` with the home folder expanded.
-fn expand_home(text: &str) -> PathBuf {
+pub(crate) fn expand_home(text: &str) -> PathBuf {
     match (text.strip_prefix("~/"), std::env::var_os("HOME")) {
         (Some(rest), Some(home)) => PathBuf::from(home).join(rest),
         _ => PathBuf::from(text),

@@ -274,3 +274,51 @@ fn stability_reference_peak_lies_where_the_ticks_say() {
         assert_drawn_at(buf, vx, "=", (s.x_max * 1e6, 0.0), false);
     }
 }
+
+#[test]
+fn fit_data_and_best_curve_lie_where_the_ticks_say() {
+    use hertz_tui::chart::model_glyph;
+    use hertz_tui::model::fit::Candidate;
+    for size in SIZES {
+        let mut app = app();
+        hertz_tui::ui::views::fit::open(
+            &mut app,
+            std::path::Path::new("presets/data/steel-hunt-crossley.csv"),
+        );
+        let app = sized(app, Tab::named("fit").unwrap(), size);
+        let (fit, report) = hertz_tui::ui::views::fit::finished(&app).expect("fitted");
+        let best = &report.fits[0];
+        assert_eq!(best.candidate, Candidate::Law(ForceModel::HuntCrossley));
+        let terminal = render(&app, size.0, size.1);
+        let buf = terminal.backend().buffer();
+        let found = charts(buf);
+        let chart = chart_titled(&found, &["v₀ [m/s]"]).expect("the e(v₀) chart");
+        // Every measured point: its mark where the ticks put it (v on a log axis).
+        for p in &fit.data.points {
+            assert_drawn_at(buf, chart, "O", (p.v, p.e), true);
+        }
+        // The best law's curve ends in its glyph where the ticks put its last point, which is
+        // the law's own e there (the table's parameter through the forward model).
+        let glyph = model_glyph(ForceModel::HuntCrossley).to_string();
+        let curve = &fit.curves[0];
+        let &(v, e) = curve.points.last().unwrap();
+        let scene = app.valid.as_ref().unwrap().scene.clone();
+        let predicted = best.predict(&scene, v).unwrap();
+        assert!((predicted - e).abs() < 1e-9, "{predicted} against {e}");
+        assert_drawn_at(buf, chart, &glyph, (v, e), true);
+        // The residuals: the best law's last residual where the ticks put it.
+        let residuals = found
+            .iter()
+            .find(|c| c.x0 > chart.x1)
+            .expect("the residual chart right of the data");
+        let last = fit
+            .data
+            .points
+            .iter()
+            .zip(&best.residuals)
+            .max_by(|a, b| a.0.v.total_cmp(&b.0.v))
+            .map(|(p, r)| (p.v, *r))
+            .unwrap();
+        assert_drawn_at(buf, residuals, &glyph, last, true);
+    }
+}

@@ -4,6 +4,7 @@ mod axes;
 mod contrast;
 mod cut_words;
 mod e2e_tmux;
+mod fit;
 mod models_pane;
 mod readme_screen;
 mod render;

@@ -17,7 +17,8 @@
 //!   → [`FitReport`]: every candidate's [`LawFit`] ranked best first by [`Criterion`] (AICc by
 //!   default, or BIC) with Δ and Akaike weights, parameters with Student-t confidence intervals
 //!   ([`FittedParam`]), the candidates that failed and why, the groups the data cannot tell apart
-//!   and a structured [`Verdict`] (the command line words it).
+//!   and a structured [`Verdict`] (worded by `crate::format::fit_verdict` for the command line
+//!   and the explorer).
 //!   [`LawFit::predict`] evaluates a fitted law at any v. [`Fitter`] keeps the forward models
 //!   (and Kuwabara–Kono's table of e(ψ)) between fits, for refits on edits.
 //! - Data too small for a law (fewer points than its parameters, plus one for the noise unless
@@ -299,24 +300,54 @@ impl Fitter {
 
     /// Fits every candidate to `data` and ranks them.
     pub fn fit(&self, data: &RestitutionData, opts: &FitOptions) -> Result<FitReport, FitError> {
+        // Never stopped, so always `Some`.
+        self.fit_until(data, opts, &|| false, &|| {})
+            .unwrap_or(Err(FitError::NoCandidates))
+    }
+
+    /// [`Fitter::fit`] that gives up (`None`) once `stop` returns true, checked before each
+    /// candidate, and calls `done` after each candidate fitted (the explorer's progress).
+    pub fn fit_until(
+        &self,
+        data: &RestitutionData,
+        opts: &FitOptions,
+        stop: &(dyn Fn() -> bool + Sync),
+        done: &(dyn Fn() + Sync),
+    ) -> Option<Result<FitReport, FitError>> {
         for p in &data.points {
-            p.validate()?;
+            if let Err(e) = p.validate() {
+                return Some(Err(e.into()));
+            }
         }
         let warm = |c: &Candidate| self.last.lock().ok().and_then(|l| l.get(c).cloned());
         let fit = |(c, f): &(Candidate, Result<Forward, FitError>)| {
+            if stop() {
+                return None;
+            }
             let result = f
                 .clone()
                 .and_then(|f| fit_one_from(&f, data, opts, warm(c).as_deref()));
             if let (Ok(fit), Ok(mut last)) = (&result, self.last.lock()) {
                 last.insert(*c, fit.theta());
             }
-            (*c, result)
+            done();
+            Some((*c, result))
         };
-        let results: Vec<(Candidate, Result<LawFit, FitError>)> = if opts.parallel {
+        let results: Option<Vec<(Candidate, Result<LawFit, FitError>)>> = if opts.parallel {
             self.forwards.par_iter().map(fit).collect()
         } else {
             self.forwards.iter().map(fit).collect()
         };
+        Some(self.ranked(results?, data, opts))
+    }
+
+    /// The report of every candidate's fit or failure, ranked.
+    fn ranked(
+        &self,
+        results: Vec<(Candidate, Result<LawFit, FitError>)>,
+        data: &RestitutionData,
+        opts: &FitOptions,
+    ) -> Result<FitReport, FitError> {
         let mut fits = Vec::new();
         let mut failed = Vec::new();
         for (c, r) in results {

@@ -11,6 +11,7 @@ use crate::model::restitution::{
     REQUESTED, RestitutionRow, realised_curve, requested_grid, table, velocity_curve, velocity_grid,
 };
 use crate::model::scene::Scene;
+use crate::model::study::fit::{FitData, FitStudy, run_fit};
 use crate::model::study::reference::{SummaryErrors, reference, reference_solution};
 use crate::model::study::stability::{
     StabilityRun, StepBound, critical_step, peak_angular_frequency, runs_at_step,
@@ -63,6 +64,8 @@ pub enum StudySpec {
     System(Box<SystemStudy>),
     /// A system's bifurcation diagram with each stop, reported as it fills in.
     Diagram(Box<DiagramStudy>),
+    /// Every candidate law fitted to measured restitution, with its progress while slow.
+    Fit(Box<FitStudy>),
 }
 
 /// The kinds of study, one slot each.
@@ -76,10 +79,11 @@ pub enum StudyKind {
     Restitution,
     System,
     Diagram,
+    Fit,
 }
 
 impl StudyKind {
-    pub const ALL: [StudyKind; 8] = [
+    pub const ALL: [StudyKind; 9] = [
         StudyKind::WorkPrecision,
         StudyKind::Current,
         StudyKind::Runs,
@@ -88,6 +92,7 @@ impl StudyKind {
         StudyKind::Restitution,
         StudyKind::System,
         StudyKind::Diagram,
+        StudyKind::Fit,
     ];
 
     pub fn index(self) -> usize {
@@ -101,7 +106,7 @@ impl StudyKind {
     pub fn priority(self) -> u8 {
         match self {
             StudyKind::Current | StudyKind::Runs | StudyKind::System => 0,
-            StudyKind::Sweep | StudyKind::Restitution => 1,
+            StudyKind::Sweep | StudyKind::Restitution | StudyKind::Fit => 1,
             StudyKind::Bounds | StudyKind::Diagram => 2,
             StudyKind::WorkPrecision => 3,
         }
@@ -119,6 +124,7 @@ impl StudySpec {
             StudySpec::Restitution { .. } => StudyKind::Restitution,
             StudySpec::System(_) => StudyKind::System,
             StudySpec::Diagram(_) => StudyKind::Diagram,
+            StudySpec::Fit(_) => StudyKind::Fit,
         }
     }
 }
@@ -223,6 +229,8 @@ pub enum StudyResult {
     System(Arc<SystemRuns>),
     /// Each stop's diagram so far (see [`DiagramData::complete`]).
     Diagram(Arc<DiagramData>),
+    /// The fit, or its progress (see [`FitData::complete`]).
+    Fit(Arc<FitData>),
 }
 
 impl StudyResult {
@@ -236,12 +244,17 @@ impl StudyResult {
             StudyResult::Restitution(_) => StudyKind::Restitution,
             StudyResult::System(_) => StudyKind::System,
             StudyResult::Diagram(_) => StudyKind::Diagram,
+            StudyResult::Fit(_) => StudyKind::Fit,
         }
     }
 
     /// A report of a study still running (a diagram filling in): more will come.
     pub fn is_partial(&self) -> bool {
-        matches!(self, StudyResult::Diagram(d) if !d.complete)
+        match self {
+            StudyResult::Diagram(d) => !d.complete,
+            StudyResult::Fit(f) => !f.complete(),
+            _ => false,
+        }
     }
 }
 
@@ -264,6 +277,19 @@ pub fn run_partially(
     stop: &(dyn Fn() -> bool + Sync),
     partial: &dyn Fn(StudyOutcome),
 ) -> Option<StudyOutcome> {
+    if let StudySpec::Fit(study) = &job.spec {
+        let report = |data| {
+            partial(StudyOutcome {
+                generation: job.generation,
+                result: StudyResult::Fit(Arc::new(data)),
+            })
+        };
+        let data = run_fit(study, stop, &report)?;
+        return (!stop()).then_some(StudyOutcome {
+            generation: job.generation,
+            result: StudyResult::Fit(Arc::new(data)),
+        });
+    }
     let StudySpec::Diagram(study) = &job.spec else {
         return run(job, stop);
     };
@@ -331,7 +357,7 @@ pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutc
             None => return None,
         },
         StudySpec::System(study) => StudyResult::System(Arc::new(run_system(study))),
-        StudySpec::Diagram(_) => return run_partially(job, stop, &|_| {}),
+        StudySpec::Diagram(_) | StudySpec::Fit(_) => return run_partially(job, stop, &|_| {}),
     };
     // A study cut short is incomplete: nobody wants it.
     (!stop()).then_some(StudyOutcome {

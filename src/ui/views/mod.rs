@@ -97,6 +97,7 @@ registry! {
     sweep::Sweep,
     restitution::Restitution,
     system::System,
+    fit::Fit,
 }
 
 const _: () = assert!(!VIEWS.is_empty());

@@ -20,7 +20,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
         } else {
             (theme.style(Role::Key), theme.style(Role::Muted))
         };
-        let [key, title, gap] = labels(tab);
+        let [key, title, gap] = labels(tab, compact(area.width));
         spans.push(Span::styled(key, key_style));
         spans.push(Span::styled(title, title_style));
         spans.push(Span::raw(gap));
@@ -28,20 +28,31 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App) {
     frame.render_widget(Line::from(spans), area);
 }
 
-/// The key, title and gap of a tab's label on the bar.
-fn labels(tab: Tab) -> [String; 3] {
-    [
-        tab.key().map(|key| format!(" {key}")).unwrap_or_default(),
-        format!(" {} ", tab.title()),
-        " ".into(),
-    ]
+/// The key, title and gap of a tab's label on the bar; `compact` drops the spaces between labels.
+fn labels(tab: Tab, compact: bool) -> [String; 3] {
+    let key = tab.key().map(|key| format!(" {key}")).unwrap_or_default();
+    if compact {
+        return [key, format!(" {}", tab.title()), String::new()];
+    }
+    [key, format!(" {} ", tab.title()), " ".into()]
 }
 
-/// The tab whose label covers `column` of the bar (for mouse clicks).
-pub fn tab_at(column: u16) -> Option<Tab> {
+/// Whether the labels with their spaces are wider than a bar of `width` columns (at 80 columns
+/// with seven views): then they go without.
+fn compact(width: u16) -> bool {
+    let wide: usize = Tab::all()
+        .flat_map(|tab| labels(tab, false))
+        .map(|l| l.chars().count())
+        .sum();
+    wide > usize::from(width)
+}
+
+/// The tab whose label covers `column` of a bar `width` columns wide (for mouse clicks).
+pub fn tab_at(column: u16, width: u16) -> Option<Tab> {
     let mut start = 0;
+    let compact = compact(width);
     Tab::all().find(|&tab| {
-        let width: usize = labels(tab).iter().map(|l| l.chars().count()).sum();
+        let width: usize = labels(tab, compact).iter().map(|l| l.chars().count()).sum();
         let end = start + width as u16;
         let hit = (start..end).contains(&column);
         start = end;
