@@ -234,22 +234,38 @@ fn first_difference(shown: &str, printed: &str) -> Option<String> {
     if shown == printed {
         return None;
     }
-    let mut s = shown.lines();
-    let mut p = printed.lines();
-    for i in 1.. {
-        match (s.next(), p.next()) {
-            (a, b) if a == b && a.is_some() => {}
-            (a, b) => {
-                return Some(format!(
-                    "shown line {i} is {:?} but the command prints {:?}",
-                    a.unwrap_or("(nothing)"),
-                    b.unwrap_or("(nothing)")
-                ));
+    let mut p = printed.lines().enumerate().peekable();
+    let mut eliding = false;
+    for (i, line) in shown.lines().enumerate() {
+        if line == ELIDED {
+            eliding = true;
+            continue;
+        }
+        loop {
+            match p.next() {
+                Some((_, printed)) if printed == line => break,
+                Some(_) if eliding => {}
+                other => {
+                    return Some(format!(
+                        "shown line {} is {line:?} but the command prints {:?}",
+                        i + 1,
+                        other.map_or("(nothing)", |(_, l)| l)
+                    ));
+                }
             }
         }
+        eliding = false;
     }
-    None
+    match (eliding, p.next()) {
+        (false, Some((_, extra))) => Some(format!(
+            "the command prints {extra:?} after the shown lines"
+        )),
+        _ => None,
+    }
 }
+
+/// A shown line standing for any number of printed lines (a long output cut in the docs).
+const ELIDED: &str = "…";
 
 /// A TOML block of the document `name` read as what it is; `Err` says why it is refused.
 fn check_toml(name: &str, block: &Block, registry: &Registry) -> Result<(), String> {
@@ -449,6 +465,17 @@ fn the_block_reader_and_the_runner_refuse_what_would_not_run() {
     assert!(
         first_difference(&shown[0].1, "a\n").is_some(),
         "a missing line is found"
+    );
+    assert!(
+        first_difference("a\nb", "a\nb\nc").is_some(),
+        "an extra printed line is found"
+    );
+    let cut = "a\n…\nd\n…";
+    assert_eq!(first_difference(cut, "a\nb\nc\nd\ne\n"), None);
+    assert_eq!(first_difference(cut, "a\nd\n"), None);
+    assert!(
+        first_difference(cut, "a\nb\nc\n").is_some_and(|d| d.contains("\"d\"")),
+        "a shown line after a cut must still be printed"
     );
     let error = check_toml("README.md", &sphere_with_length, &registry).unwrap_err();
     assert!(
