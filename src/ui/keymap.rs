@@ -258,6 +258,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
             fast: true,
         },
         KeyCode::Char('P') => Action::CursorToPeak,
+        KeyCode::Char('b') => Action::Branch,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

@@ -8,6 +8,7 @@
 
 use std::sync::Arc;
 
+use crate::model::study::continuation::ContinuedBranches;
 use crate::model::study::runner::{
     self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
     StudyKind, StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
@@ -152,6 +153,13 @@ impl Studies {
     pub fn diagram(&self) -> Option<&Arc<DiagramData>> {
         match self.result(StudyKind::Diagram) {
             Some(StudyResult::Diagram(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    pub fn continuation(&self) -> Option<&Arc<ContinuedBranches>> {
+        match self.result(StudyKind::Continuation) {
+            Some(StudyResult::Continuation(r)) => Some(r),
             _ => None,
         }
     }

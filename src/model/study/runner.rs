@@ -11,6 +11,7 @@ use crate::model::restitution::{
     REQUESTED, RestitutionRow, realised_curve, requested_grid, table, velocity_curve, velocity_grid,
 };
 use crate::model::scene::Scene;
+use crate::model::study::continuation::{ContinuationStudy, ContinuedBranches, run_continuation};
 use crate::model::study::reference::{SummaryErrors, reference, reference_solution};
 use crate::model::study::stability::{
     StabilityRun, StepBound, critical_step, peak_angular_frequency, runs_at_step,
@@ -63,6 +64,8 @@ pub enum StudySpec {
     System(Box<SystemStudy>),
     /// A system's bifurcation diagram with each stop, reported as it fills in.
     Diagram(Box<DiagramStudy>),
+    /// A system's periodic orbit continued over the diagram's range, reported stop by stop.
+    Continuation(Box<ContinuationStudy>),
 }
 
 /// The kinds of study, one slot each.
@@ -76,10 +79,11 @@ pub enum StudyKind {
     Restitution,
     System,
     Diagram,
+    Continuation,
 }
 
 impl StudyKind {
-    pub const ALL: [StudyKind; 8] = [
+    pub const ALL: [StudyKind; 9] = [
         StudyKind::WorkPrecision,
         StudyKind::Current,
         StudyKind::Runs,
@@ -88,6 +92,7 @@ impl StudyKind {
         StudyKind::Restitution,
         StudyKind::System,
         StudyKind::Diagram,
+        StudyKind::Continuation,
     ];
 
     pub fn index(self) -> usize {
@@ -102,7 +107,7 @@ impl StudyKind {
         match self {
             StudyKind::Current | StudyKind::Runs | StudyKind::System => 0,
             StudyKind::Sweep | StudyKind::Restitution => 1,
-            StudyKind::Bounds | StudyKind::Diagram => 2,
+            StudyKind::Bounds | StudyKind::Diagram | StudyKind::Continuation => 2,
             StudyKind::WorkPrecision => 3,
         }
     }
@@ -119,6 +124,7 @@ impl StudySpec {
             StudySpec::Restitution { .. } => StudyKind::Restitution,
             StudySpec::System(_) => StudyKind::System,
             StudySpec::Diagram(_) => StudyKind::Diagram,
+            StudySpec::Continuation(_) => StudyKind::Continuation,
         }
     }
 }
@@ -223,6 +229,8 @@ pub enum StudyResult {
     System(Arc<SystemRuns>),
     /// Each stop's diagram so far (see [`DiagramData::complete`]).
     Diagram(Arc<DiagramData>),
+    /// Each stop's continued branch so far (see [`ContinuedBranches::complete`]).
+    Continuation(Arc<ContinuedBranches>),
 }
 
 impl StudyResult {
@@ -236,12 +244,17 @@ impl StudyResult {
             StudyResult::Restitution(_) => StudyKind::Restitution,
             StudyResult::System(_) => StudyKind::System,
             StudyResult::Diagram(_) => StudyKind::Diagram,
+            StudyResult::Continuation(_) => StudyKind::Continuation,
         }
     }
 
     /// A report of a study still running (a diagram filling in): more will come.
     pub fn is_partial(&self) -> bool {
-        matches!(self, StudyResult::Diagram(d) if !d.complete)
+        match self {
+            StudyResult::Diagram(d) => !d.complete,
+            StudyResult::Continuation(c) => !c.complete,
+            _ => false,
+        }
     }
 }
 
@@ -264,6 +277,19 @@ pub fn run_partially(
     stop: &(dyn Fn() -> bool + Sync),
     partial: &dyn Fn(StudyOutcome),
 ) -> Option<StudyOutcome> {
+    if let StudySpec::Continuation(study) = &job.spec {
+        let report = |data| {
+            partial(StudyOutcome {
+                generation: job.generation,
+                result: StudyResult::Continuation(Arc::new(data)),
+            })
+        };
+        let data = run_continuation(study, stop, &report)?;
+        return (!stop()).then_some(StudyOutcome {
+            generation: job.generation,
+            result: StudyResult::Continuation(Arc::new(data)),
+        });
+    }
     let StudySpec::Diagram(study) = &job.spec else {
         return run(job, stop);
     };
@@ -331,7 +357,9 @@ pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutc
             None => return None,
         },
         StudySpec::System(study) => StudyResult::System(Arc::new(run_system(study))),
-        StudySpec::Diagram(_) => return run_partially(job, stop, &|_| {}),
+        StudySpec::Diagram(_) | StudySpec::Continuation(_) => {
+            return run_partially(job, stop, &|_| {});
+        }
     };
     // A study cut short is incomplete: nobody wants it.
     (!stop()).then_some(StudyOutcome {
