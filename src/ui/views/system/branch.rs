@@ -91,12 +91,19 @@ fn curve(half: &Branch) -> BranchCurve {
     c
 }
 
-/// The branches over the diagram: [`plot::branch`] with the diagram's axes and range.
+/// Dots of an unstable stretch kept on a terminal: one in this many of [`plot::branch`]'s, which
+/// are denser than braille can show apart (the dotted line would read as solid).
+pub const TERMINAL_THINNING: usize = 6;
+
+/// The branches over the diagram: [`plot::branch`] with the diagram's axes and range, one dot in
+/// `thinning` of its unstable stretches kept, the rigid stop's marks drawn last (over the
+/// compliant ones' labels where they meet).
 pub fn chart(
     diagram: &DiagramData,
     branches: &ContinuedBranches,
     model: &SystemModel,
     budget: (usize, usize),
+    thinning: usize,
 ) -> Chart {
     let columns: Vec<(Approach, DiagramBranch)> = diagram
         .branches
@@ -119,6 +126,19 @@ pub fn chart(
     let drawn: Vec<(Approach, &BranchCurve)> = curves.iter().map(|(a, c)| (*a, c)).collect();
     let under: Vec<(Approach, &DiagramBranch)> = columns.iter().map(|(a, d)| (*a, d)).collect();
     let mut chart = plot::branch(&drawn, &under, &axes, budget);
+    let every = thinning.max(1);
+    for series in chart.series.iter_mut().filter(|s| s.name.ends_with("unstable")) {
+        let last = series.runs.len().saturating_sub(1);
+        let runs = std::mem::take(&mut series.runs);
+        series.runs = runs
+            .into_iter()
+            .enumerate()
+            .filter(|(i, _)| i % every == 0 || *i == last)
+            .map(|(_, r)| r)
+            .collect();
+    }
+    let rigid = Approach::Rigid.look().1;
+    chart.marks.sort_by_key(|m| m.ink == rigid);
     chart.title = format!("branch over the diagram of {}", axes.key);
     chart
 }

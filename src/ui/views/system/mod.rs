@@ -144,7 +144,7 @@ impl View for System {
         let mut charts = motion_charts(app.studies.system().map(|r| &**r), &model, FIGURE_TICKS);
         if let Some(d) = app.studies.diagram() {
             charts.push(match branch::shown(app, d) {
-                Some(b) => branch::chart(d, b, &model, FIGURE_TICKS),
+                Some(b) => branch::chart(d, b, &model, FIGURE_TICKS, 1),
                 None => diagram_chart(d, &model, FIGURE_TICKS),
             });
         }

@@ -309,7 +309,13 @@ fn charts(frame: &mut Frame, area: Rect, app: &App, model: Option<&SystemModel>,
         let b = budget(diagram.width.saturating_sub(9), diagram.height.saturating_sub(6));
         app.studies.diagram().map(|d| {
             let mut chart = match super::branch::shown(app, d) {
-                Some(branches) => super::branch::chart(d, branches, model, b),
+                Some(branches) => super::branch::chart(
+                    d,
+                    branches,
+                    model,
+                    b,
+                    super::branch::TERMINAL_THINNING,
+                ),
                 None => super::diagram_chart(d, model, b),
             };
             let done = d.branches.iter().map(|b| b.columns.len()).sum::<usize>();
