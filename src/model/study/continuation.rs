@@ -1,4 +1,4 @@
-//! The explorer's continuation study (docs/continuation.md §7): the periodic orbit the system
+//! The explorer's continuation study (docs/continuation.md §8): the periodic orbit the system
 //! settles on at the scene's value of the diagram's key, continued both ways to the ends of the
 //! diagram's range with every stop, reported stop by stop so that the rigid branch shows while the
 //! compliant one is computed, and stopped between steps once a newer request supersedes it.

@@ -1,5 +1,5 @@
 //! `b` in the system view: the periodic orbit the run settles on, continued over the diagram's
-//! range (docs/continuation.md §7) as a study on the studies' queue, drawn over the brute-force
+//! range (docs/continuation.md §8) as a study on the studies' queue, drawn over the brute-force
 //! diagram (stable solid, unstable dotted, each stop in its own ink) with its special points
 //! marked by their letter and listed with their values in the notes.
 

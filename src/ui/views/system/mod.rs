@@ -32,7 +32,7 @@ pub struct State {
     /// The row of the form under the cursor (an index into [`Settings::rows`]; on a scene without
     /// `[system]`, into [`settings::SYSTEM_PRESETS`]).
     pub cursor: usize,
-    /// `b`: the continued branch drawn over the diagram (docs/continuation.md §7).
+    /// `b`: the continued branch drawn over the diagram (docs/continuation.md §8).
     pub branch: bool,
 }
 
@@ -79,7 +79,7 @@ impl View for System {
     }
 
     fn help(&self) -> Option<&'static str> {
-        Some("b: the orbit continued over the diagram (stable solid, unstable dotted)")
+        Some("b: continued orbit over the diagram (unstable dotted)")
     }
 
     fn handle(&self, app: &mut App, action: Action) -> Option<Action> {
