@@ -99,7 +99,10 @@ const SHARED: &[(&str, &str)] = &[
         "presets: type to filter; Enter loads; on a material 1 2",
     ),
     ("s e", "save the scene (name or path.toml) · export as CSV"),
-    ("f m t", "figure <scene>-<view>.svg · mouse on/off · engine"),
+    (
+        "f m t b",
+        "figure <scene>-<view>.svg · mouse · engine · sys: branch",
+    ),
     ("paste", "opens the field under the cursor with the text"),
     (
         ", . < > P",

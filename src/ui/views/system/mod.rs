@@ -78,10 +78,6 @@ impl View for System {
         ]
     }
 
-    fn help(&self) -> Option<&'static str> {
-        Some("b: continued orbit over the diagram (unstable dotted)")
-    }
-
     fn handle(&self, app: &mut App, action: Action) -> Option<Action> {
         keys::handle(app, action)
     }
