@@ -9,8 +9,10 @@
 
 pub mod continuation;
 pub mod figure;
+pub mod fit;
 pub mod kind;
 pub mod layout;
+pub mod map;
 pub mod restitution;
 pub mod sample;
 pub mod stability;

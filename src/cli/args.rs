@@ -55,6 +55,10 @@ pub enum Command {
     /// Contact parameters for a simulation engine: its input fragment, calibrated so its realised
     /// restitution at v₀ is the scene's, and what the engine will really give.
     Translate(TranslateArgs),
+    /// Fit every law (or --law …) to measured restitution e(v₀) of a CSV file, rank the laws by an
+    /// information criterion, say whether the data can tell them apart; --write-scene puts the
+    /// fitted law in a scene that solve, translate and the explorer use.
+    Fit(FitArgs),
     /// Write a chart as the explorer draws it to an SVG or PNG figure.
     Plot(PlotArgs),
     /// Simulate a system scene (its `[system]` table): impacts, detected period, time history.
@@ -65,6 +69,55 @@ pub enum Command {
     Bifurcation(BifurcationArgs),
     /// Continue a system's periodic orbit in a key: stability, folds, period doublings, grazing.
     Continue(super::continuation::ContinueArgs),
+    /// A two-parameter map of a system's motion (periodic n:m, chaotic, chattering …), whole or
+    /// one shard (--shard I/N).
+    Map(crate::cli::map::MapArgs),
+    /// Join the shards of a map into the whole map (the file the unsharded run writes).
+    Merge(crate::cli::map::MergeArgs),
+}
+
+/// Options of `hertz-tui fit`.
+#[derive(Debug, Args)]
+pub struct FitArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    /// The data: a CSV of v, e (and optionally sd) with units in the header, e.g. `v (m/s), e, sd`
+    /// (docs/fitting.md).
+    #[arg(long, value_name = "FILE")]
+    pub data: std::path::PathBuf,
+    /// A law to fit: constant-e or a law id (repeatable; default every law with a material
+    /// constant, one per distinct e(v)).
+    #[arg(long = "law", value_name = "LAW")]
+    pub laws: Vec<String>,
+    /// The information criterion that ranks the laws: aicc or bic.
+    #[arg(long, value_name = "C", default_value = "aicc")]
+    pub criterion: crate::model::fit::Criterion,
+    /// Confidence level of the parameters' intervals.
+    #[arg(long, value_name = "P", default_value_t = 0.95, value_parser = level)]
+    pub level: f64,
+    /// Output format: table (ranking, verdict, residuals), json, or csv (the ranking).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Table: the best law's residual at every point (default: their RMS and the largest).
+    #[arg(long)]
+    pub residuals: bool,
+    /// Write the scene with the best fitted law (or the one --law names) as its `[fit]` to OUT.
+    #[arg(long, value_name = "OUT")]
+    pub write_scene: Option<std::path::PathBuf>,
+    /// Also each simulation engine's realised e(v₀), calibrated at the scene's v₀, against the
+    /// data: which engine can reproduce these measurements.
+    #[arg(long)]
+    pub engines: bool,
+}
+
+/// A confidence level in (0, 1).
+fn level(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 && x < 1.0 => Ok(x),
+        _ => Err(format!(
+            "{s} must be a confidence level in (0, 1), e.g. 0.95"
+        )),
+    }
 }
 
 /// Options of `hertz-tui restitution`.
@@ -103,6 +156,12 @@ pub enum ChartChoice {
     ImpactMap,
     /// A system scene's bifurcation diagram over --param from --from to --to (--points values).
     Bifurcation,
+    /// Measured e(v₀) of --data with error bars and every fitted law's curve (the laws --model
+    /// names and constant e, default every fittable law), and the residuals.
+    Fit,
+    /// Measured e(v₀) of --data against each engine's realised e(v₀), the engine's constants
+    /// calibrated at v₀ to the best fit's e.
+    FitEngines,
 }
 
 /// What a sweep chart shows against the swept key.
@@ -170,6 +229,9 @@ pub struct PlotArgs {
     pub contact: ContactArgs,
     #[command(flatten)]
     pub run: RunArgs,
+    /// fit and fit-engines: the measured restitution (the CSV of `hertz-tui fit`).
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
     /// The figure file: .svg (vector) or .png.
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: std::path::PathBuf,
@@ -292,6 +354,10 @@ pub struct TranslateArgs {
     /// Also write the engine's runnable script to FILE (run it as the output says).
     #[arg(long, value_name = "FILE")]
     pub script: Option<std::path::PathBuf>,
+    /// Also the engine's realised e(v₀), its constants calibrated at the scene's v₀, against the
+    /// measured restitution in FILE (the CSV of `hertz-tui fit`): can it reproduce them?
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
     /// Relative tolerance the printed time step keeps on e, F_max and the contact time (default
     /// 0.01).
     #[arg(long, value_name = "T", default_value_t = crate::model::engine::run::DEFAULT_TOLERANCE)]
@@ -348,7 +414,8 @@ pub struct ContactArgs {
     #[arg(long, value_name = "MODEL", default_value = "hunt-crossley")]
     pub law: ForceModel,
     /// How the compliant law's damping is set: per-impact (from each impact's incoming speed),
-    /// calibrated (to realise the scene's e), or a number (the law's own constant).
+    /// calibrated (to realise the scene's e), fitted (the scene's `[fit]` constant, for the law it
+    /// names), or a number (the law's own constant).
     #[arg(long, value_name = "HOW", default_value = "per-impact", value_parser = damping_choice)]
     pub damping: DampingChoice,
 }
@@ -358,6 +425,8 @@ pub struct ContactArgs {
 pub enum DampingChoice {
     PerImpact,
     Calibrated,
+    /// The material constant of the scene's `[fit]`.
+    Fitted,
     Constant(f64),
 }
 
@@ -365,10 +434,11 @@ fn damping_choice(s: &str) -> Result<DampingChoice, String> {
     match s {
         "per-impact" => Ok(DampingChoice::PerImpact),
         "calibrated" => Ok(DampingChoice::Calibrated),
+        "fitted" => Ok(DampingChoice::Fitted),
         _ => match s.parse::<f64>() {
             Ok(x) if x.is_finite() && x >= 0.0 => Ok(DampingChoice::Constant(x)),
             _ => Err(format!(
-                "\"{s}\" is not per-impact, calibrated or a finite number ≥ 0"
+                "\"{s}\" is not per-impact, calibrated, fitted or a finite number ≥ 0"
             )),
         },
     }

@@ -102,7 +102,7 @@ pub fn stream_csv(
     // The header goes with the first column: a diagram refused at once (a key the system lacks,
     // over budget) prints nothing but its error.
     let mut header = Some(header(args.param));
-    for contact in contacts(&args.contact, &model) {
+    for contact in contacts(&args.contact, &model)? {
         let label = csv::field(&contact_label(&contact));
         let mut written: Result<(), std::io::Error> = Ok(());
         let mut text = String::new();
@@ -144,7 +144,7 @@ pub struct BifurcationReport {
 pub fn report(args: &BifurcationArgs, registry: &Registry) -> Result<BifurcationReport, CliError> {
     check(args)?;
     let model = load_system(&args.source, registry)?;
-    let diagrams = contacts(&args.contact, &model)
+    let diagrams = contacts(&args.contact, &model)?
         .iter()
         .map(|contact| {
             let diagram = diagram(&model, contact, args, |_| ControlFlow::Continue(()))

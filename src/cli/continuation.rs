@@ -248,7 +248,7 @@ pub fn report(args: &ContinueArgs, registry: &Registry) -> Result<ContinueReport
     };
     let range = (args.from, args.to);
     let mut results = Vec::new();
-    for contact in contacts(&args.contact, &model) {
+    for contact in contacts(&args.contact, &model)? {
         let branch = continue_orbit(&model, &contact, args.param, range, &guess, &options)
             .map_err(|e| refused(&contact, e))?;
         let doubled = match branch.special(SpecialKind::PeriodDoubling).next() {
@@ -560,7 +560,7 @@ fn charts(
     report: &ContinueReport,
 ) -> Result<Vec<Chart>, CliError> {
     let model = model(args, registry)?;
-    let contacts = contacts(&args.contact, &model);
+    let contacts = contacts(&args.contact, &model)?;
     let mut diagrams = Vec::new();
     if let Some(points) = args.diagram {
         let options = DiagramOptions {

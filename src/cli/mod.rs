@@ -5,11 +5,14 @@ pub mod bench;
 pub mod bifurcation;
 pub mod continuation;
 pub mod error;
+pub mod fit;
 mod in_order;
 mod layout;
 mod list;
+pub mod map;
 pub mod orbit;
 pub mod plot;
+mod plot_fit;
 mod plot_system;
 mod report;
 pub mod restitution;
@@ -67,6 +70,7 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         Command::Sweep(args) => sweep::run(args, &registry)?,
         Command::Restitution(args) => restitution::run(args, &registry)?,
         Command::Translate(args) => translate::run(args, &registry)?,
+        Command::Fit(args) => fit::run(args, &registry)?,
         Command::Plot(args) => plot::run(args, &registry)?,
         Command::System(args) => system::run(args, &registry)?,
         Command::Orbit(args) => orbit::run(args, &registry)?,
@@ -76,6 +80,8 @@ pub fn run(command: &Command, out: &mut dyn Write) -> Result<(), CliError> {
         }
         Command::Bifurcation(args) => bifurcation::run(args, &registry)?,
         Command::Continue(args) => continuation::run(args, &registry)?,
+        Command::Map(args) => return map::run(args, &registry, out),
+        Command::Merge(args) => return map::run_merge(args, out),
     };
     out.write_all(text.as_bytes())?;
     out.flush()?;

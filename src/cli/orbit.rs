@@ -58,7 +58,7 @@ pub fn report(args: &OrbitArgs, registry: &Registry) -> Result<OrbitReport, CliE
         ..OrbitOptions::default()
     };
     let guess = guess(args);
-    let orbits = contacts(&args.contact, &model)
+    let orbits = contacts(&args.contact, &model)?
         .iter()
         .map(|contact| {
             let orbit = system::find_orbit(&model, contact, &guess, &options)

@@ -70,6 +70,9 @@ pub fn run(args: &PlotArgs, registry: &Registry) -> Result<String, CliError> {
         | ChartChoice::Phase
         | ChartChoice::ImpactMap
         | ChartChoice::Bifurcation => vec![super::plot_system::chart(args, registry, BUDGET)?],
+        ChartChoice::Fit | ChartChoice::FitEngines => {
+            super::plot_fit::charts(args, &scenes[0], BUDGET)?
+        }
     };
     figure::write(&charts, &args.out, size).map_err(usage)?;
     Ok(format!(

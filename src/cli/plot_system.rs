@@ -36,7 +36,7 @@ pub fn chart(
         overrides: args.overrides.clone(),
     };
     let model = load_system(&source, registry)?;
-    let contacts = contacts(&args.contact, &model);
+    let contacts = contacts(&args.contact, &model)?;
     let name = model
         .scene
         .as_ref()

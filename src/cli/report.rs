@@ -285,7 +285,13 @@ fn damping_cell(r: &ImpactRow) -> String {
         } else {
             format!(" {}", d.unit)
         };
-        let mark = if r.calibrated { "*" } else { "" };
+        let mark = if r.calibrated {
+            "*"
+        } else if r.fitted {
+            " (fit)"
+        } else {
+            ""
+        };
         format!(
             "{} = {}{unit}{mark}",
             d.symbol,

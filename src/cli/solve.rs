@@ -3,11 +3,11 @@
 use serde::Serialize;
 
 use crate::format::recommendation;
-use crate::model::calibrate::scene_or_calibrated;
 use crate::model::force::Damping;
 use crate::model::impact::{self, ImpactError, ImpactSolution, SolveOptions, TensileCutoff};
 use crate::model::presets::Registry;
 use crate::model::recommend::recommend;
+use crate::model::scene_fit::{FittedLaw, scene_law};
 use crate::model::warnings::{ModelWarning, impact_warnings, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, Quasistatic, Scene};
 
@@ -69,6 +69,9 @@ pub struct ImpactRow {
     pub damping: Option<DampingUsed>,
     /// Whether the damping was calibrated so that e_out = e_requested (`--calibrate`).
     pub calibrated: bool,
+    /// Whether the law is the scene's `[fit]` law, solved with its fitted constant at v₀.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub fitted: bool,
     /// Why `--calibrate` could not calibrate this law (the row then uses the scene's damping).
     pub calibration_error: Option<String>,
     pub x_residual: Option<f64>,
@@ -113,9 +116,10 @@ impl ImpactRow {
         params: &ImpactParams,
         requested: &SolveOptions,
         calibrate: bool,
+        fit: Option<&FittedLaw>,
         warnings: &mut Vec<WarningRow>,
     ) -> Self {
-        let (law, calibration) = match scene_or_calibrated(model, params, calibrate) {
+        let (law, calibration, fitted) = match scene_law(model, params, calibrate, fit) {
             Ok(found) => found,
             Err(e) => return Self::from_result(model, params.restitution, requested, Err(&e)),
         };
@@ -129,6 +133,7 @@ impl ImpactRow {
         }
         let mut row = Self::from_result(model, params.restitution, requested, result.as_ref());
         row.damping = law.damping().map(DampingUsed::from);
+        row.fitted = fitted;
         match calibration {
             Ok(done) => row.calibrated = done,
             Err(why) => row.calibration_error = Some(why.to_string()),
@@ -156,6 +161,7 @@ impl ImpactRow {
                     e_out: Some(s.e_out),
                     damping: None,
                     calibrated: false,
+                    fitted: false,
                     calibration_error: None,
                     x_residual: Some(s.x_residual),
                     energy_dissipated: Some(s.energy_dissipated),
@@ -180,6 +186,7 @@ impl ImpactRow {
                 e_out: None,
                 damping: None,
                 calibrated: false,
+                fitted: false,
                 calibration_error: None,
                 x_residual: None,
                 energy_dissipated: None,
@@ -234,7 +241,16 @@ pub fn report(args: &SolveArgs, registry: &Registry) -> Result<SolveReport, CliE
         .collect();
     let impacts = models_or_all(&args.models)
         .into_iter()
-        .map(|model| ImpactRow::new(model, &params, &options, args.calibrate, &mut warnings))
+        .map(|model| {
+            ImpactRow::new(
+                model,
+                &params,
+                &options,
+                args.calibrate,
+                scene.fit.as_ref(),
+                &mut warnings,
+            )
+        })
         .collect();
     let advice = recommend(&scene, &quasistatic);
     Ok(SolveReport {
@@ -264,7 +280,7 @@ pub fn trajectory(args: &SolveArgs, registry: &Registry) -> Result<ImpactSolutio
     let quasistatic = scene.quasistatic()?;
     let options = solve_options(args);
     let params = scene.impact_params(&quasistatic);
-    let (law, calibration) = scene_or_calibrated(model, &params, args.calibrate)
+    let (law, calibration, _) = scene_law(model, &params, args.calibrate, scene.fit.as_ref())
         .map_err(|source| CliError::Impact { model, source })?;
     if let Err(why) = calibration {
         return Err(CliError::Usage(format!("--calibrate: {why}")));

@@ -9,8 +9,8 @@ use crate::format::verdict as words;
 use crate::model::presets::Registry;
 use crate::model::system::compliant::verdict::{Verdict, verdict_of};
 use crate::model::system::{
-    self, CompliantDamping, Contact, EndReason, History, ImpactKind, ImpactRecord, RunOptions,
-    Stick, SystemError, SystemModel, SystemSample,
+    self, CompliantDamping, Contact, Dents, EndReason, History, ImpactKind, ImpactRecord,
+    RunOptions, Stick, SystemError, SystemModel, SystemSample,
 };
 
 use super::args::{
@@ -42,8 +42,9 @@ pub fn load_system(source: &SceneSelection, registry: &Registry) -> Result<Syste
     Ok(SystemModel::from_scene(&scene, &spec)?)
 }
 
-/// The stops `args` asks for on `model`: rigid with the scene's e, the compliant law, or both.
-pub fn contacts(args: &ContactArgs, model: &SystemModel) -> Vec<Contact> {
+/// The stops `args` asks for on `model`: rigid with the scene's e, the compliant law, or both;
+/// `--damping fitted` needs the scene's `[fit]` to be of the compliant law.
+pub fn contacts(args: &ContactArgs, model: &SystemModel) -> Result<Vec<Contact>, CliError> {
     let rigid = Contact::rigid(model.restitution);
     let compliant = Contact::Compliant {
         model: args.law,
@@ -51,13 +52,31 @@ pub fn contacts(args: &ContactArgs, model: &SystemModel) -> Vec<Contact> {
             DampingChoice::PerImpact => CompliantDamping::PerImpact,
             DampingChoice::Calibrated => CompliantDamping::CalibratedTo(model.restitution),
             DampingChoice::Constant(value) => CompliantDamping::Constant(value),
+            DampingChoice::Fitted => {
+                let fit = model.scene.as_ref().and_then(|s| s.fit.as_ref());
+                match fit {
+                    Some(fit) if fit.kind.model() == Some(args.law) => {
+                        CompliantDamping::Fitted(fit.value)
+                    }
+                    _ => {
+                        return Err(CliError::Usage(format!(
+                            "--damping fitted: the scene has no [fit] of {} ({}); write one with hertz-tui fit --write-scene, or give --law its fitted law",
+                            args.law,
+                            fit.map_or("no [fit] table".to_string(), |f| format!(
+                                "its [fit] is {}",
+                                f.kind
+                            ))
+                        )));
+                    }
+                }
+            }
         },
     };
-    match args.contact {
+    Ok(match args.contact {
         ContactChoice::Rigid => vec![rigid],
         ContactChoice::Compliant => vec![compliant],
         ContactChoice::Both => vec![rigid, compliant],
-    }
+    })
 }
 
 /// How a contact is named in every output: `rigid` or the law's id.
@@ -170,8 +189,29 @@ pub struct RunReport {
     pub impacts_total: usize,
     pub impacts: Vec<ImpactRecord>,
     pub sticks: Vec<Stick>,
+    /// The permanent dents the recorded contacts left, not carried (a plastic law's).
+    #[serde(skip_serializing_if = "no_dents")]
+    pub dents: Dents,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub samples: Vec<SystemSample>,
+}
+
+fn no_dents(d: &Dents) -> bool {
+    d.contacts == 0
+}
+
+/// The warning of a run whose law left permanent dents the stop does not carry.
+pub fn dent_warning(contact: &str, dents: &Dents) -> Option<String> {
+    (dents.contacts > 0).then(|| {
+        format!(
+            "warning: {contact} leaves a permanent dent at {} of the recorded contacts (up to {}, \
+             {} in all), which the stop does not carry: every contact starts from an undeformed \
+             stop (docs/compliant.md §1)",
+            dents.contacts,
+            engineering(dents.largest, "m"),
+            engineering(dents.total, "m"),
+        )
+    })
 }
 
 /// Which approach the system needs (with `--contact both` or `compliant`): the model's verdict
@@ -203,7 +243,7 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
     let samples = args.history.map_or(0, |n| n as usize);
     let options = run_options(&args.run, samples);
     let period = model.spec.period();
-    let histories = contacts(&args.contact, &model)
+    let histories = contacts(&args.contact, &model)?
         .into_iter()
         .map(|contact| Ok((contact, simulate(&model, &contact, &options)?)))
         .collect::<Result<Vec<_>, CliError>>()?;
@@ -241,6 +281,7 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
             impacts_total: h.impacts_total,
             impacts: h.impacts,
             sticks: h.sticks,
+            dents: h.dents,
             samples: h.samples,
         })
         .collect();
@@ -335,6 +376,9 @@ fn table(report: &SystemReport, transient: usize) -> String {
                 "  … the last {TABLE_IMPACTS} of {}; --format csv gives all\n",
                 run.impacts.len()
             ));
+        }
+        if let Some(warning) = dent_warning(&run.contact, &run.dents) {
+            out.push_str(&format!("  {warning}\n"));
         }
     }
     if let Some(v) = &report.verdict {

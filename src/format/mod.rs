@@ -4,10 +4,12 @@
 //! ([`recommendation`]). Neither `cli` nor `ui` keeps its own copy.
 
 pub mod csv;
+pub mod fit_csv;
 mod number;
 pub mod recommendation;
 mod shortest_exp;
 pub mod sweep_csv;
+pub mod trace_csv;
 pub mod translation;
 pub mod units;
 pub mod verdict;

@@ -5,9 +5,11 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use super::body::{Body, Shape};
 use super::error::{ModelError, require, require_positive};
+use super::fit::FitError;
 use super::force::ImpactParams;
 use super::pair::ContactPair;
 use super::quasistatic::{ContactGeometry, PairEstimate, Quasistatic};
+use super::scene_fit::FittedLaw;
 
 /// Conditions of the impact (the `[impact]` table of a scene file).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -91,6 +93,9 @@ pub struct Scene {
     pub impact: ImpactConditions,
     /// Which of e and x_pl the user did not give.
     pub assumed: Assumed,
+    /// The law fitted to measured restitution (the `[fit]` table), if the scene carries one: it
+    /// sets `impact.restitution` at every v₀ ([`Scene::apply_fit`]) and is solved with its constant.
+    pub fit: Option<FittedLaw>,
 }
 
 impl Scene {
@@ -109,6 +114,20 @@ impl Scene {
     /// together overflow double precision (v₀ = 1e200 m/s) are an error, never an infinite result.
     pub fn quasistatic(&self) -> Result<Quasistatic, ModelError> {
         SceneBodies::of(self).quasistatic(&self.impact)
+    }
+
+    /// Sets `impact.restitution` to the e the fitted law realises at the scene's v₀ (nothing
+    /// without a `[fit]`), so that every other law is set or calibrated to the measured e; e is
+    /// then given, not assumed. Called wherever v₀ may have changed (decoding, the explorer's edits).
+    pub fn apply_fit(&mut self) -> Result<(), FitError> {
+        let Some(fit) = &self.fit else {
+            return Ok(());
+        };
+        let quasistatic = self.quasistatic()?;
+        let e = fit.restitution_at(&self.impact_params(&quasistatic))?;
+        self.impact.restitution = e;
+        self.assumed.restitution = false;
+        Ok(())
     }
 
     /// Inputs of the impact solver: the quasistatic law F = k·xⁿ, the reduced mass, the impact
@@ -191,11 +210,14 @@ fn require_finite_results(q: &Quasistatic) -> Result<(), ModelError> {
 /// Serializes in the scene-file schema (materials inline, SI units): what `solve --format json` prints.
 impl Serialize for Scene {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let mut map = serializer.serialize_map(Some(4))?;
+        let mut map = serializer.serialize_map(None)?;
         map.serialize_entry("name", &self.name)?;
         map.serialize_entry("body1", &BodyRecord(&self.body1))?;
         map.serialize_entry("body2", &BodyRecord(&self.body2))?;
         map.serialize_entry("impact", &ImpactRecord(&self.impact, &self.assumed))?;
+        if let Some(fit) = &self.fit {
+            map.serialize_entry("fit", &FitRecord(fit))?;
+        }
         map.end()
     }
 }
@@ -236,6 +258,25 @@ impl Serialize for ImpactRecord<'_> {
         map.serialize_entry("plastic_indentation", &impact.plastic_indentation)?;
         if !assumed.is_empty() {
             map.serialize_entry("assumed", &assumed.keys())?;
+        }
+        map.end()
+    }
+}
+
+/// The `[fit]` table: the law, its constant by its key, and the data file when known.
+struct FitRecord<'a>(&'a FittedLaw);
+
+impl Serialize for FitRecord<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let fit = self.0;
+        let mut map = serializer.serialize_map(None)?;
+        map.serialize_entry("law", fit.kind.id())?;
+        map.serialize_entry(fit.constant().0, &fit.value)?;
+        if let Some(source) = &fit.source {
+            map.serialize_entry("source", source)?;
+        }
+        if let Some(note) = &fit.note {
+            map.serialize_entry("note", note)?;
         }
         map.end()
     }
@@ -283,6 +324,7 @@ pub(crate) mod tests {
                 plastic_indentation: 2.3e-6,
             },
             assumed: Assumed::default(),
+            fit: None,
         }
     }
 

@@ -8,6 +8,7 @@
 
 mod decode;
 mod document;
+mod fit;
 mod schema;
 mod system;
 mod view;
@@ -15,6 +16,7 @@ mod write;
 
 pub use decode::{decode_material, decode_scene, decode_view, parse_scene};
 pub use document::{Document, Location, Problem, SceneFileError, ValueIssue};
+pub use fit::fit_table;
 pub(crate) use schema::{KeyKind, SHAPES, key_kind, shape_keys};
 pub use system::{FORCINGS, SYSTEM_KINDS, decode_system, system_table};
 pub use view::{PAPER_MODELS, SceneView};

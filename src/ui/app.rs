@@ -12,6 +12,7 @@ use crate::model::presets::Registry;
 use crate::model::presets::kebab_case;
 use crate::model::recommend::{Recommendation, recommend};
 use crate::model::scene_file::{SceneView, system_table};
+use crate::model::scene_fit::FittedKind;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::scene_title::{edits, retitled};
 use crate::model::study::runner::{StudyJob, StudySpec};
@@ -658,6 +659,19 @@ impl App {
         let start = Instant::now();
         // Named before it is copied: the valid scene's name and materials are those shown.
         super::edited::name_edited_materials(self);
+        // A fitted scene's e follows v₀ as the data says (docs/fitting.md); an e typed over it
+        // at the same v₀ is the user's, and the fit gives way (never lose an edit).
+        if let Some(valid) = &self.valid
+            && self.draft.scene.fit.is_some()
+            && self.draft.scene.impact.v0 == valid.scene.impact.v0
+            && self.draft.scene.impact.restitution != valid.scene.impact.restitution
+        {
+            self.draft.scene.fit = None;
+            self.say("e edited: the scene's [fit] no longer sets e", false);
+        }
+        if let Err(e) = self.draft.scene.apply_fit() {
+            self.say(format!("[fit]: e at this v0 not computed ({e})"), true);
+        }
         match self.draft.scene.quasistatic() {
             Ok(quasistatic) => {
                 self.scene_error = None;
@@ -695,11 +709,20 @@ impl App {
             return false;
         };
         let params = valid.params;
+        let fit = valid.scene.fit.clone();
         let mut queued = false;
         for model in self.checked_models() {
-            let job = self
-                .solutions
-                .request(model, params, self.draft.options, self.calibrate);
+            let fitted = fit
+                .as_ref()
+                .filter(|f| f.kind == FittedKind::Law(model))
+                .and_then(|f| f.damping_at(params.v0));
+            let job = self.solutions.request_fitted(
+                model,
+                params,
+                self.draft.options,
+                self.calibrate,
+                fitted,
+            );
             if let Some(job) = job {
                 self.outbox.push(job);
                 queued = true;

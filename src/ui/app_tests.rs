@@ -690,3 +690,43 @@ fn shift_c_calibrates_every_checked_law_and_says_so() {
     assert!(!a.calibrate);
     assert!(a.take_jobs().iter().all(|j| !j.calibrate));
 }
+
+/// A scene with a `[fit]`: e follows v₀ by the fitted law (χ = a·v₀), the fitted law is solved
+/// with its constant, and an e typed over the fit is the user's (the fit gives way).
+#[test]
+fn a_fitted_scene_moves_e_with_v0_and_solves_its_law_with_its_constant() {
+    use crate::model::calibrate::hunt_crossley_restitution;
+    use crate::model::fit::Candidate;
+    use crate::model::scene_fit::FittedLaw;
+
+    let a_fit = 2.0;
+    let mut scene = fig5_scene();
+    scene.fit = Some(FittedLaw::new(
+        Candidate::Law(ForceModel::HuntCrossley),
+        a_fit,
+    ));
+    scene.apply_fit().unwrap();
+    let mut a = App::new(
+        scene,
+        Registry::builtin().unwrap(),
+        MarkerStyle::Braille,
+        Theme::Dark,
+    );
+    settle(&mut a);
+    let e_at = |v0: f64| hunt_crossley_restitution(a_fit * v0);
+    assert!((a.draft.scene.impact.restitution - e_at(0.3)).abs() < 1e-12);
+    key(&mut a, KeyCode::Right);
+    assert_eq!(a.draft.scene.impact.v0, 0.31);
+    assert!((a.draft.scene.impact.restitution - e_at(0.31)).abs() < 1e-12);
+    settle(&mut a);
+    let hc = a.solutions.solution(ForceModel::HuntCrossley).unwrap();
+    assert!(
+        (hc.summary.e_out - e_at(0.31)).abs() < 1e-6,
+        "the fitted law at its constant"
+    );
+    // Typing e over the fit: the fit gives way and the typed e stays.
+    a.draft.scene.impact.restitution = 0.5;
+    a.recompute();
+    assert!(a.draft.scene.fit.is_none());
+    assert_eq!(a.draft.scene.impact.restitution, 0.5);
+}

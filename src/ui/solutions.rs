@@ -20,6 +20,9 @@ pub struct Job {
     pub options: SolveOptions,
     /// Calibrate the law's damping so that it realises the scene's e (docs/physics.md §6.4).
     pub calibrate: bool,
+    /// The damping value at v₀ of the scene's `[fit]` law when this model is it: solved with it,
+    /// never calibrated (docs/fitting.md).
+    pub fitted: Option<f64>,
 }
 
 /// What a solve produced; errors are kept as the solver's message.
@@ -40,7 +43,7 @@ pub struct Outcome {
 #[derive(Debug, Clone, Default)]
 struct Slot {
     /// Inputs of the latest request.
-    inputs: Option<(ImpactParams, SolveOptions, bool)>,
+    inputs: Option<(ImpactParams, SolveOptions, bool, Option<f64>)>,
     /// Generation of the latest request.
     generation: u64,
     /// Whether the latest request is still running.
@@ -90,12 +93,25 @@ impl Solutions {
         options: SolveOptions,
         calibrate: bool,
     ) -> Option<Job> {
+        self.request_fitted(model, params, options, calibrate, None)
+    }
+
+    /// [`Solutions::request`] for a scene that carries a fitted law: `fitted` is its damping at
+    /// v₀ when `model` is that law.
+    pub fn request_fitted(
+        &mut self,
+        model: ForceModel,
+        params: ImpactParams,
+        options: SolveOptions,
+        calibrate: bool,
+        fitted: Option<f64>,
+    ) -> Option<Job> {
         let slot = &mut self.slots[index(model)];
-        if slot.inputs == Some((params, options, calibrate)) {
+        if slot.inputs == Some((params, options, calibrate, fitted)) {
             return None;
         }
         self.last_generation += 1;
-        slot.inputs = Some((params, options, calibrate));
+        slot.inputs = Some((params, options, calibrate, fitted));
         slot.generation = self.last_generation;
         slot.pending = true;
         Some(Job {
@@ -104,6 +120,7 @@ impl Solutions {
             params,
             options,
             calibrate,
+            fitted,
         })
     }
 

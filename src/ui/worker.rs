@@ -31,6 +31,12 @@ pub fn solve(job: &Job) -> Outcome {
 
 /// The job's law (calibrated when asked; a law that cannot be, says why).
 fn law_of(job: &Job) -> Result<AnyLaw, String> {
+    if let Some(value) = job.fitted {
+        return job
+            .model
+            .law_with_damping(&job.params, value)
+            .map_err(|e| e.to_string());
+    }
     let (law, calibration) =
         scene_or_calibrated(job.model, &job.params, job.calibrate).map_err(|e| e.to_string())?;
     match calibration {
@@ -86,6 +92,7 @@ mod tests {
             params: fig5_params(0.3),
             options: SolveOptions::default(),
             calibrate: false,
+            fitted: None,
         }
     }
 

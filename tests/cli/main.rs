@@ -2,7 +2,10 @@
 
 mod commands;
 mod continuation;
+mod fit;
+mod fit_data;
 mod laws;
+mod maps;
 mod plot;
 mod readme;
 mod recommendation;

@@ -163,7 +163,10 @@ fn run(command: &str, dir: &Path) -> Result<String, String> {
         "system",
         "orbit",
         "bifurcation",
+        "fit",
         "continue",
+        "map",
+        "merge",
         "help",
     ];
     if !args
@@ -336,9 +339,18 @@ fn check_document(name: &str, markdown: &str, dir: &Path, registry: &Registry) -
 }
 
 /// A temporary folder with an empty user-presets folder, for one test's commands.
+/// A folder for a document's commands, with its own user-presets folder and the shipped example
+/// data at `presets/data/` as in a checkout, so that `--data presets/data/…` runs as written.
 fn command_dir(label: &str) -> TempDir {
     let dir = TempDir(std::env::temp_dir().join(format!("hertz-{label}-{}", std::process::id())));
     fs::create_dir_all(dir.0.join("config")).unwrap();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("presets/data");
+    let copy = dir.0.join("presets/data");
+    fs::create_dir_all(&copy).unwrap();
+    for entry in fs::read_dir(&data).unwrap() {
+        let path = entry.unwrap().path();
+        fs::copy(&path, copy.join(path.file_name().unwrap())).unwrap();
+    }
     dir
 }
 

@@ -262,7 +262,7 @@ fn bad_input_is_named_by_its_key_and_prints_nothing_else() {
 #[test]
 fn set_takes_units_and_a_unit_of_another_quantity_is_named_by_its_key() {
     // The same runs, byte for byte, whether the keys are given in SI or in units.
-    let si = ok(&[
+    let base = [
         "system",
         "--scene",
         "impact-oscillator",
@@ -270,32 +270,33 @@ fn set_takes_units_and_a_unit_of_another_quantity_is_named_by_its_key() {
         "3",
         "--format",
         "json",
-        "--set",
-        "system.gap=0.0005",
-        "--set",
-        "system.stiffness=10000",
-        "--set",
-        "system.frequency=20",
-        "--set",
-        "system.forcing_amplitude=0.5",
-    ]);
-    let units = ok(&[
-        "system",
-        "--scene",
-        "impact-oscillator",
-        "--recorded",
-        "3",
-        "--format",
-        "json",
-        "--set",
-        "system.gap=0.5 mm",
-        "--set",
-        "system.stiffness=1e4 N/m",
-        "--set",
-        "system.frequency=20Hz",
-        "--set",
-        "system.forcing_amplitude=500 mN",
-    ]);
+    ];
+    let si = ok(&with(
+        &base,
+        &[
+            "--set",
+            "system.gap=0.0005",
+            "--set",
+            "system.stiffness=10000",
+            "--set",
+            "system.frequency=20",
+            "--set",
+            "system.forcing_amplitude=0.5",
+        ],
+    ));
+    let units = ok(&with(
+        &base,
+        &[
+            "--set",
+            "system.gap=0.5 mm",
+            "--set",
+            "system.stiffness=1e4 N/m",
+            "--set",
+            "system.frequency=20Hz",
+            "--set",
+            "system.forcing_amplitude=500 mN",
+        ],
+    ));
     assert_eq!(si, units);
     let report: serde_json::Value = serde_json::from_str(&units).unwrap();
     assert_eq!(report["frequency"], 20.0);
@@ -305,8 +306,6 @@ fn set_takes_units_and_a_unit_of_another_quantity_is_named_by_its_key() {
         "bouncing-ball",
         "--recorded",
         "1",
-        "--format",
-        "json",
         "--set",
         "system.amplitude=1.2mm",
         "--set",

@@ -730,6 +730,7 @@ mod round_trip {
                 body2,
                 impact: ImpactConditions { v0, restitution: e, plastic_indentation: x_pl },
                 assumed: Default::default(),
+                fit: None,
             };
             let text = scene_file::to_toml(&scene, Some("round trip"));
             let doc = scene_file::Document::parse("written.toml", &text).unwrap();

@@ -74,6 +74,7 @@ fn sphere_scene() -> impl Strategy<Value = Scene> {
                 plastic_indentation: 0.0,
             },
             assumed: Default::default(),
+            fit: None,
         })
 }
 
@@ -271,6 +272,7 @@ fn cylinder_scene() -> impl Strategy<Value = Scene> {
                 plastic_indentation: 0.0,
             },
             assumed: Default::default(),
+            fit: None,
         })
 }
 
@@ -325,6 +327,7 @@ fn moderate_steel_cylinders_always_evaluate() {
                             plastic_indentation: 0.0,
                         },
                         assumed: Default::default(),
+                        fit: None,
                     };
                     let q = scene.quasistatic().unwrap_or_else(|e| {
                         panic!("R = {radius}, L = {length}, v0 = {v0}, plane {on_plane}: {e}")

@@ -576,3 +576,70 @@ fn compliant_multipliers_reach_the_rigid_det_j_and_agree_with_a_finer_tolerance_
         assert!((0.2..0.45).contains(&r), "{deviations:?}");
     }
 }
+
+#[test]
+fn plastic_dents_are_each_contacts_own_and_are_not_carried_to_the_next() {
+    // Thornton's law yields at the preset ball's impact speeds: each contact leaves the dent of a
+    // free Thornton impact at its own v_in from an undeformed stop (its closed form), summed in
+    // History::dents but not carried; viscoelastic and elastic laws leave no permanent dent.
+    let model = preset_ball(1e-3);
+    let options = RunOptions {
+        transient_impacts: 100,
+        recorded_impacts: 40,
+        ..RunOptions::default()
+    };
+    let run = |law: ForceModel| {
+        simulate_detailed(
+            &model,
+            law,
+            CompliantDamping::PerImpact,
+            &options,
+            CompliantOptions::default(),
+        )
+        .unwrap()
+    };
+    let thornton = ForceModel::with_id("thornton");
+    let r = run(thornton);
+    let base = *stop(&model, thornton, CompliantDamping::PerImpact)
+        .source
+        .base();
+    let mut sum = 0.0;
+    let mut dented = 0;
+    for (i, d) in r.history.impacts.iter().zip(&r.details) {
+        if i.kind != ImpactKind::Impact || d.residual == 0.0 {
+            continue;
+        }
+        let law = thornton
+            .law(&hertz_tui::model::force::ImpactParams { v0: i.v_in, ..base })
+            .unwrap();
+        let exact = law.exact(1e-12).unwrap();
+        // The table and gravity act during the ~100 µs contact: their impulse (g + Aω²)·t_c is
+        // about 7e-3 of v_in at the fastest impacts, and the dent moves by a part of that.
+        assert!(
+            (d.residual / exact.x_residual - 1.0).abs() < 1e-2,
+            "v_in {}: {} against {}",
+            i.v_in,
+            d.residual,
+            exact.x_residual
+        );
+        sum += d.residual;
+        dented += 1;
+    }
+    let dents = r.history.dents;
+    assert!(dented > 20, "{dents:?}");
+    assert_eq!(dents.contacts, dented);
+    assert!((dents.total / sum - 1.0).abs() < 1e-12, "{dents:?} {sum}");
+    for law in [
+        ForceModel::HuntCrossley,
+        ForceModel::with_id("kelvin-voigt"),
+    ] {
+        let r = run(law);
+        assert_eq!(r.history.dents.contacts, 0, "{law:?}");
+        if law != ForceModel::HuntCrossley {
+            assert!(
+                r.details.iter().any(|d| d.residual > 0.0),
+                "clamped: it lets go inside"
+            );
+        }
+    }
+}

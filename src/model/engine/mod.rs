@@ -107,6 +107,19 @@ pub fn translate(id: &str, scene: &Scene) -> Result<Translation, EngineError> {
     (engine.translate)(&EngineScene::new(scene)?)
 }
 
+/// [`translate`] with [`Translation::e_of_v`] at `velocities` (m/s, e.g. those of measured
+/// restitution): the engine's constants calibrated at the scene's v₀, held at every velocity.
+pub fn translate_at(
+    id: &str,
+    scene: &Scene,
+    velocities: &[f64],
+) -> Result<Translation, EngineError> {
+    let engine = find(id)?;
+    let mut engine_scene = EngineScene::new(scene)?;
+    engine_scene.velocities = velocities.to_vec();
+    (engine.translate)(&engine_scene)
+}
+
 /// A translation with what running it takes and gives: the script, its step and claim, the
 /// engine version it was run in, and the scene's regime warnings.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -182,6 +195,9 @@ pub struct EngineScene {
     pub t_contact: f64,
     /// Elastic maximum approach at v₀, m (eq 5).
     pub x_max: f64,
+    /// The impact velocities of [`Translation::e_of_v`], m/s: [`VELOCITY_FACTORS`]·v₀, or the
+    /// velocities of measured data ([`translate_at`]).
+    pub velocities: Vec<f64>,
 }
 
 impl EngineScene {
@@ -200,6 +216,10 @@ impl EngineScene {
             point_contact: pair.kind().is_point_contact(),
             t_contact: quasistatic.t_contact,
             x_max: quasistatic.x_max,
+            velocities: VELOCITY_FACTORS
+                .iter()
+                .map(|f| f * scene.impact.v0)
+                .collect(),
         })
     }
 
@@ -333,7 +353,7 @@ pub struct Translation {
     pub e_requested: f64,
     /// What the engine's law gives at the scene's v₀.
     pub realised: EngineImpact,
-    /// Realised restitution over v₀/10 … 10·v₀.
+    /// Realised restitution over v₀/10 … 10·v₀ (or at [`EngineScene::velocities`]).
     pub e_of_v: Vec<VelocityPoint>,
 }
 

@@ -12,7 +12,7 @@ use crate::model::impact::{SolveOptions, solve_law};
 use crate::model::power_law::PowerLaw;
 
 use super::error::EngineError;
-use super::{EngineScene, VELOCITY_FACTORS, VelocityPoint};
+use super::{EngineScene, VelocityPoint};
 
 /// What an engine's law gives for one impact, SI units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -54,19 +54,18 @@ pub fn solve(law: &AnyLaw) -> Result<EngineImpact, EngineError> {
     })
 }
 
-/// What the engine's law gives: at the scene's v₀, and its restitution at [`VELOCITY_FACTORS`]·v₀
-/// with the engine's constants unchanged; `law_at(v₀)` builds the law for an impact at v₀.
+/// What the engine's law gives: at the scene's v₀, and its restitution at the scene's
+/// [`velocities`](EngineScene::velocities) ([`VELOCITY_FACTORS`](super::VELOCITY_FACTORS)·v₀ by default) with the engine's
+/// constants unchanged; `law_at(v₀)` builds the law for an impact at v₀.
 pub fn realise(
     scene: &EngineScene,
     law_at: impl Fn(f64) -> Result<AnyLaw, EngineError>,
 ) -> Result<(EngineImpact, Vec<VelocityPoint>), EngineError> {
     let at_v0 = solve(&law_at(scene.v0)?)?;
-    let e_of_v = VELOCITY_FACTORS
+    let e_of_v = scene
+        .velocities
         .iter()
-        .map(|f| {
-            let v0 = f * scene.v0;
-            solve(&law_at(v0)?).map(|r| VelocityPoint { v0, e_out: r.e_out })
-        })
+        .map(|&v0| solve(&law_at(v0)?).map(|r| VelocityPoint { v0, e_out: r.e_out }))
         .collect::<Result<_, _>>()?;
     Ok((at_v0, e_of_v))
 }

@@ -155,6 +155,12 @@ macro_rules! law_table {
                 }
             }
 
+            fn residual_is_permanent(&self) -> bool {
+                match self {
+                    $(AnyLaw::$variant(l) => l.residual_is_permanent()),*
+                }
+            }
+
             fn unloading_at_turn(&self, x_turn: f64) -> Self {
                 match self {
                     $(AnyLaw::$variant(l) => AnyLaw::$variant(l.unloading_at_turn(x_turn))),*

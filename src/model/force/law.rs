@@ -118,6 +118,13 @@ pub trait ForceLaw: Copy {
         None
     }
 
+    /// Whether the indentation left where the force returns to zero is permanent (a plastic dent:
+    /// Thornton's once it has yielded, the proposed model's x_pl) rather than recovered by the
+    /// material after separation (a viscoelastic law clamped at F ≥ 0).
+    fn residual_is_permanent(&self) -> bool {
+        false
+    }
+
     /// Whether F depends on x alone within each phase (a rate-independent hysteresis such as
     /// Thornton's), so that ∮F dx over an impact is exact from [`ForceLaw::stored_energy`]: no
     /// quadrature has to resolve the kink where such a law changes branch.

@@ -133,6 +133,11 @@ impl ForceLaw for Proposed {
         self.b > 0.0 && !self.tension_allowed
     }
 
+    /// Its residual at F = 0 is the plastic indentation x_pl the model is built for (eq 18).
+    fn residual_is_permanent(&self) -> bool {
+        self.contact_end() == ContactEnd::ForceZero
+    }
+
     /// F/xⁿ⁻¹ = k·x + b·ẋ.
     fn tension(&self, x: f64, v: f64) -> f64 {
         self.params.law.k * x + self.b * v

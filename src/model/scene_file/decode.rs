@@ -162,6 +162,7 @@ impl Decoder<'_> {
             body2,
             impact,
             assumed,
+            fit: None,
         })
     }
 
@@ -322,8 +323,34 @@ pub fn decode_scene(
     doc: &Document,
     materials: &BTreeMap<String, Material>,
 ) -> Result<Scene, SceneFileError> {
-    let scene = Decoder { doc, materials }.scene()?;
+    let decoder = Decoder { doc, materials };
+    let mut scene = decoder.scene()?;
     scene.validate().map_err(|e| doc.invalid(e))?;
+    scene.fit = decoder.fit(doc.table())?;
+    if let Some(fit) = &scene.fit {
+        if doc.is_overridden("impact.restitution") {
+            return Err(doc.error(
+                "impact.restitution",
+                Problem::BadValue {
+                    key: "impact.restitution".into(),
+                    issue: ValueIssue::Conflict(
+                        "the scene's [fit] sets e at every v0; set fit.<constant> instead, or remove [fit]",
+                    ),
+                },
+            ));
+        }
+        let law = fit.kind.id();
+        scene.apply_fit().map_err(|e| {
+            doc.error(
+                "fit.law",
+                Problem::FitRestitution {
+                    law,
+                    v0: scene.impact.v0,
+                    message: e.to_string(),
+                },
+            )
+        })?;
+    }
     Ok(scene)
 }
 

@@ -73,6 +73,9 @@ pub enum ValueIssue {
         name: String,
         known: &'static [&'static str],
     },
+    /// A `[fit] law` that is neither `constant-e` nor a law with a damping parameter.
+    #[error("unknown fitted law \"{name}\" (expected one of: {ids})", ids = crate::model::scene_fit::fitted_ids().join(", "))]
+    UnknownFitLaw { name: String },
     /// Two keys that exclude each other.
     #[error("{0}")]
     Conflict(&'static str),
@@ -106,6 +109,20 @@ pub enum Problem {
     UnusedKey { key: String, shape: &'static str },
     #[error("`{key}`: {issue}")]
     BadValue { key: String, issue: ValueIssue },
+    /// A constant of `[fit]` that is another law's.
+    #[error("`{key}` is not the constant of {law} (its constant is `fit.{constant}`); remove it")]
+    NotTheConstant {
+        key: String,
+        law: &'static str,
+        constant: &'static str,
+    },
+    /// The fitted law's e at v₀ could not be computed (an impact solve that failed).
+    #[error("[fit] {law}: its restitution at v0 = {v0} m/s could not be computed: {message}")]
+    FitRestitution {
+        law: &'static str,
+        v0: f64,
+        message: String,
+    },
     /// A value outside its physical range; the model error names the dotted field.
     #[error(transparent)]
     Invalid(ModelError),
@@ -173,6 +190,11 @@ impl Document {
     /// Records that `--set` wrote the value at `path`, so messages about it point at the override.
     pub(crate) fn mark_overridden(&mut self, path: &str) {
         self.overridden.insert(path.to_string());
+    }
+
+    /// Whether `--set` wrote the value at `path`.
+    pub(crate) fn is_overridden(&self, path: &str) -> bool {
+        self.overridden.contains(path)
     }
 
     /// The optional `description` string, if present and a string.

@@ -10,6 +10,7 @@ pub(super) const SCENE_KEYS: &[&str] = &[
     "impact",
     "solver",
     "system",
+    "fit",
 ];
 /// Keys of `[body1]` and `[body2]`; which of radius/length are required depends on the shape.
 pub(super) const BODY_KEYS: &[&str] = &["shape", "radius", "length", "mass", "material"];
@@ -62,6 +63,8 @@ pub(crate) fn key_kind(path: &[&str]) -> Option<KeyKind> {
         ["body1" | "body2", key] if BODY_KEYS.contains(key) => Some(KeyKind::Number),
         ["impact", key] if IMPACT_KEYS.contains(key) => Some(KeyKind::Number),
         ["system", "kind" | "forcing"] => Some(KeyKind::Text),
+        ["fit", "law" | "source" | "note"] => Some(KeyKind::Text),
+        ["fit", key] if super::fit::FIT_KEYS.contains(key) => Some(KeyKind::Number),
         ["system", key] if super::system::SYSTEM_KEYS.contains(key) => Some(KeyKind::Number),
         _ => None,
     }

@@ -135,7 +135,7 @@ impl Decoder<'_> {
         Ok(Some(spec))
     }
 
-    fn missing_key(&self, path: &str, why: &'static str) -> SceneFileError {
+    pub(super) fn missing_key(&self, path: &str, why: &'static str) -> SceneFileError {
         self.doc.error(
             path,
             Problem::MissingKey {
@@ -145,7 +145,7 @@ impl Decoder<'_> {
         )
     }
 
-    fn bad_value(&self, path: &str, issue: ValueIssue) -> SceneFileError {
+    pub(super) fn bad_value(&self, path: &str, issue: ValueIssue) -> SceneFileError {
         self.doc.error(
             path,
             Problem::BadValue {

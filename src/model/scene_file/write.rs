@@ -7,6 +7,7 @@ use crate::model::scene::Scene;
 
 use crate::model::system::SystemSpec;
 
+use super::fit::fit_table;
 use super::system::system_table;
 use super::view::SceneView;
 
@@ -100,8 +101,13 @@ pub fn to_toml_with_system(
         "v0 = {}  # m/s, pre-impact relative velocity\n",
         toml_float(i.v0)
     ));
+    let e_comment = if scene.fit.is_some() {
+        "e of the [fit] law at v0, recomputed from [fit] when read"
+    } else {
+        "e, used by the dissipative models"
+    };
     out.push_str(&format!(
-        "restitution = {}  # e, used by the dissipative models\n",
+        "restitution = {}  # {e_comment}\n",
         toml_float(i.restitution)
     ));
     out.push_str(&format!(
@@ -114,6 +120,10 @@ pub fn to_toml_with_system(
             "assumed = [{}]  # not given by the scene's user: stand-ins\n",
             keys.join(", ")
         ));
+    }
+    if let Some(fit) = &scene.fit {
+        out.push('\n');
+        out.push_str(&fit_table(fit));
     }
     if let Some(view) = view {
         out.push('\n');

@@ -6,9 +6,10 @@ use thiserror::Error;
 
 use crate::model::force::ForceModel;
 use crate::model::force::ImpactParams;
-use crate::model::impact::{SolveOptions, solve_impact};
+use crate::model::impact::{SolveOptions, solve_impact, solve_law};
 use crate::model::quasistatic::ContactGeometry;
 use crate::model::scene::{Scene, SceneBodies};
+use crate::model::scene_fit::{FittedLaw, fitted_law_for};
 use crate::model::scene_key::{BodyField, BodyIndex, SceneKey, SceneKeyError};
 
 /// What to sweep and how.
@@ -173,7 +174,17 @@ impl<'a> SweepPlan<'a> {
             Ok(qs) => qs,
             Err(e) => return invalid(e.to_string()),
         };
-        let params = impact.params(&qs);
+        let mut params = impact.params(&qs);
+        // A fitted scene's e follows the swept scene as the data says (docs/fitting.md).
+        if let Some(fit) = &self.base.fit {
+            if self.spec.key == SceneKey::Restitution {
+                return invalid("impact.restitution is set by the scene's [fit]".into());
+            }
+            match fit.restitution_at(&params) {
+                Ok(e) => params.restitution = e,
+                Err(e) => return invalid(format!("[fit] {}: {e}", fit.kind)),
+            }
+        }
         let (contact_radius, half_width) = match qs.geometry {
             ContactGeometry::Point { contact_radius } => (Some(contact_radius), None),
             ContactGeometry::Line { half_width, .. } => (None, Some(half_width)),
@@ -182,7 +193,7 @@ impl<'a> SweepPlan<'a> {
             .spec
             .models
             .iter()
-            .map(|&model| impact_point(model, &params, &self.spec.options))
+            .map(|&model| impact_point(model, &params, self.base.fit.as_ref(), &self.spec.options))
             .collect();
         SweepRow {
             value,
@@ -199,9 +210,20 @@ impl<'a> SweepPlan<'a> {
     }
 }
 
-/// `model`'s impact under `params`, or the error that stopped it.
-fn impact_point(model: ForceModel, params: &ImpactParams, options: &SolveOptions) -> ImpactPoint {
-    match solve_impact(model, params, options) {
+/// `model`'s impact under `params` (the fitted law with its constant where `fit` is its), or the
+/// error that stopped it.
+fn impact_point(
+    model: ForceModel,
+    params: &ImpactParams,
+    fit: Option<&FittedLaw>,
+    options: &SolveOptions,
+) -> ImpactPoint {
+    let solved = match fitted_law_for(fit, model, params) {
+        Ok(Some(law)) => solve_law(&law, options),
+        Ok(None) => solve_impact(model, params, options),
+        Err(e) => Err(e.into()),
+    };
+    match solved {
         Ok(solution) => {
             let s = solution.summary;
             ImpactPoint {
@@ -295,6 +317,47 @@ mod tests {
         let log = sweep_values(&spec(1e-3, 1e1, 5, true)).unwrap();
         assert!((log[1] / 1e-2 - 1.0).abs() < 1e-12);
         assert!((log[4] / 10.0 - 1.0).abs() < 1e-12);
+    }
+
+    /// On a scene with a fitted Hunt–Crossley a, a v₀ sweep's e falls as the fit says: the fitted
+    /// law's e_out is e_HC(a·v₀) at every point, and the scene's e follows (the proposed model
+    /// sets its damping from it); sweeping e itself is refused point by point.
+    #[test]
+    fn a_fitted_scene_sweeps_v0_with_e_from_its_fit() {
+        use crate::model::calibrate::hunt_crossley_restitution;
+        use crate::model::fit::Candidate;
+        let mut scene = crate::model::scene::tests::fig5_scene();
+        scene.fit = Some(FittedLaw::new(
+            Candidate::Law(ForceModel::HuntCrossley),
+            2.0,
+        ));
+        let mut spec = spec(0.1, 1.0, 3, true);
+        spec.models = vec![ForceModel::HuntCrossley];
+        let rows = sweep(&scene, &spec).unwrap();
+        for row in &rows {
+            let e = rows_e(row);
+            assert!(
+                (e - hunt_crossley_restitution(2.0 * row.value)).abs() < 1e-6,
+                "{}",
+                row.value
+            );
+        }
+        assert!(rows_e(&rows[0]) > rows_e(&rows[2]));
+        let mut by_e = spec.clone();
+        by_e.key = SceneKey::Restitution;
+        by_e.from = 0.3;
+        by_e.to = 0.9;
+        by_e.log = false;
+        let rows = sweep(&scene, &by_e).unwrap();
+        assert!(
+            rows.iter()
+                .all(|r| r.error.as_deref()
+                    == Some("impact.restitution is set by the scene's [fit]"))
+        );
+    }
+
+    fn rows_e(row: &SweepRow) -> f64 {
+        row.impacts[0].e_out.unwrap()
     }
 
     #[test]

@@ -33,8 +33,8 @@ use crate::model::ode::Method;
 use crate::model::power_law::PowerLaw;
 
 use super::{
-    CompliantDamping, EndReason, History, ImpactKind, ImpactRecord, RunOptions, State, Stick,
-    SystemError, SystemModel, SystemSample,
+    CompliantDamping, Dents, EndReason, History, ImpactKind, ImpactRecord, RunOptions, State,
+    Stick, SystemError, SystemModel, SystemSample,
 };
 use contact::{ContactResult, ContactSettings, EnergyAudit, Exit, integrate_contact};
 use damping::LawSource;
@@ -309,6 +309,7 @@ pub fn run(
     let mut impacts = Vec::with_capacity(options.recorded_impacts);
     let mut details = Vec::with_capacity(options.recorded_impacts);
     let mut sticks = Vec::new();
+    let mut dents = Dents::default();
     let mut total = 0usize;
     let mut sampler: Option<Sampler> = None;
     let mut touched = false;
@@ -364,6 +365,11 @@ pub fn run(
         }
         if total > options.transient_impacts {
             impacts.push(record(model, omega, x, &c));
+            if c.permanent {
+                dents.contacts += 1;
+                dents.total += c.residual;
+                dents.largest = dents.largest.max(c.residual);
+            }
             if let (true, Exit::Free { .. }) = (c.is_rest(), c.exit) {
                 sticks.push(Stick {
                     start: c.t_start,
@@ -415,6 +421,7 @@ pub fn run(
                 v: state.2,
             },
             end,
+            dents,
         },
         details,
     })

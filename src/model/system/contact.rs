@@ -30,6 +30,10 @@ pub enum CompliantDamping {
     Constant(f64),
     /// Calibrated once so that the law realises this restitution.
     CalibratedTo(f64),
+    /// A material constant fitted to measured restitution (a scene's `[fit]`, docs/fitting.md):
+    /// for the Hunt–Crossley family a = χ/v₀ in s/m, so that χ = a·v_in at each impact; for the
+    /// other laws their damping constant itself, as [`CompliantDamping::Constant`].
+    Fitted(f64),
 }
 
 impl Contact {

@@ -339,7 +339,7 @@ impl Column {
 /// A state of the run at `from` carried to `to` at the same forcing phase, in the first period
 /// (the systems are periodic in t; a small t keeps ωt accurate along a long diagram), with the
 /// same gap and relative velocity to the table, or inside the new stops.
-fn rebase(state: State, from: &SystemModel, to: &SystemModel) -> State {
+pub(super) fn rebase(state: State, from: &SystemModel, to: &SystemModel) -> State {
     let phase = (from.spec.omega() * state.t).rem_euclid(2.0 * PI);
     let t = phase / to.spec.omega();
     match (from.spec.kind, to.spec.kind) {

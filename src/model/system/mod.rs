@@ -26,6 +26,7 @@ mod contact;
 pub mod continuation;
 mod diagram;
 mod error;
+pub mod map;
 mod model;
 mod orbit;
 mod param;
@@ -43,7 +44,8 @@ pub use model::SystemModel;
 pub use orbit::{GuessStart, ImpactPoint, Orbit, OrbitGuess, OrbitOptions};
 pub use param::{Param, SystemKey};
 pub use run::{
-    EndReason, History, ImpactKind, ImpactRecord, RunOptions, State, Stick, StopIndex, SystemSample,
+    Dents, EndReason, History, ImpactKind, ImpactRecord, RunOptions, State, Stick, StopIndex,
+    SystemSample,
 };
 pub use spec::{
     Damping, Forcing, Groups, OscillatorCoefficients, STANDARD_GRAVITY, SystemKind, SystemSpec,

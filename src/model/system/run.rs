@@ -114,6 +114,19 @@ pub struct Stick {
     pub stop: StopIndex,
 }
 
+/// The permanent (plastic) indentations a compliant stop's recorded contacts left — Thornton's
+/// law once yielded, the proposed model — which the stop does not carry from one contact to the
+/// next: every contact starts from an undeformed stop (docs/compliant.md §1 says why).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct Dents {
+    /// Recorded contacts that left one.
+    pub contacts: usize,
+    /// Their sum, m: the dent a stop carrying them would have after the recorded contacts.
+    pub total: f64,
+    /// The largest, m.
+    pub largest: f64,
+}
+
 /// Why a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -142,6 +155,9 @@ pub struct History {
     pub end_state: State,
     /// Why it ended.
     pub end: EndReason,
+    /// The permanent dents of the recorded contacts, not carried (compliant stop; none for the
+    /// rigid one).
+    pub dents: Dents,
 }
 
 impl History {

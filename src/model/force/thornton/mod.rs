@@ -305,6 +305,10 @@ impl ForceLaw for Thornton {
         }
     }
 
+    fn residual_is_permanent(&self) -> bool {
+        self.yielded()
+    }
+
     fn contact_end(&self) -> ContactEnd {
         if self.yielded() {
             ContactEnd::ForceZero

@@ -134,6 +134,9 @@ pub struct ContactResult {
     pub v_out: f64,
     /// δ there, m (0 unless the law let go at F = 0).
     pub residual: f64,
+    /// The residual is a permanent (plastic) dent ([`ForceLaw::residual_is_permanent`]), which
+    /// the stop does not carry into its next contact (docs/compliant.md §1).
+    pub permanent: bool,
     pub peak_force: f64,
     pub t_peak: f64,
     pub max_approach: f64,
@@ -419,6 +422,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
             }
             PieceEnd::Tension => {
                 totals.law_end = Some((tau, y));
+                totals.permanent = law_now.residual_is_permanent();
                 let d = y[0] * scale.x;
                 totals.energy.absorbed += law_now.stored_energy(d, phase);
                 ode_sys.force_on = false;
@@ -432,6 +436,7 @@ pub fn integrate_contact<P: Plant, L: ForceLaw>(
                 ode_sys.force_on = true;
                 ode_sys.phase = Phase::of_velocity(y[1]);
                 totals.law_end = None;
+                totals.permanent = false;
             }
             PieceEnd::Turn => {
                 y[1] = 0.0;
@@ -483,6 +488,8 @@ struct Totals {
     max_approach: f64,
     energy: EnergyAudit,
     pressing_impulse: f64,
+    /// The law let go at F = 0 with a permanent residual.
+    permanent: bool,
     force_evals: usize,
     steps: usize,
     pieces: Vec<ContactPiece>,
@@ -502,6 +509,7 @@ impl Totals {
                 ..EnergyAudit::default()
             },
             pressing_impulse: 0.0,
+            permanent: false,
             force_evals: 0,
             steps: 0,
             pieces: Vec::new(),
@@ -524,6 +532,7 @@ impl Totals {
             t_end,
             v_out,
             residual,
+            permanent: self.permanent && residual > 0.0,
             peak_force: self.peak.0,
             t_peak: self.peak.1,
             max_approach: self.max_approach,

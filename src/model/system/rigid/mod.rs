@@ -3,7 +3,7 @@
 //! and the impact map with its Jacobian for periodic orbits (docs/systems.md).
 
 pub(crate) mod dynamics;
-mod orbit;
+pub(crate) mod orbit;
 pub(crate) mod search;
 mod simulate;
 

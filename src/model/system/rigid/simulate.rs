@@ -216,6 +216,7 @@ impl<'a> Run<'a> {
             model,
             options,
             history: History {
+                dents: Default::default(),
                 samples: Vec::new(),
                 impacts: Vec::with_capacity(options.recorded_impacts.min(1 << 16)),
                 sticks: Vec::new(),

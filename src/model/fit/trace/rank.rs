@@ -1,0 +1,139 @@
+//! Ranking trace fits and telling which the trace cannot separate, as e(v) fits are ranked
+//! (docs/physics.md §9.3).
+
+use crate::model::fit::criterion::{self, DELTA_TIE, Indistinguishable, Verdict};
+use crate::model::fit::{Candidate, LawFit};
+use crate::model::force::ForceModel;
+use crate::model::force::table::Family;
+
+use super::data::TraceData;
+use super::options::TRACE_FLOOR;
+
+/// Sorts `fits` best first by `criterion` (ties: fewer parameters, then the order asked) and
+/// fills Δ and the Akaike weights.
+pub(super) fn rank(fits: &mut [LawFit], criterion: criterion::Criterion, order: &[ForceModel]) {
+    let position = |c: Candidate| {
+        order
+            .iter()
+            .position(|&m| Candidate::Law(m) == c)
+            .unwrap_or(usize::MAX)
+    };
+    fits.sort_by(|a, b| {
+        a.score(criterion)
+            .total_cmp(&b.score(criterion))
+            .then(a.params.len().cmp(&b.params.len()))
+            .then(position(a.candidate).cmp(&position(b.candidate)))
+    });
+    let values: Vec<f64> = fits.iter().map(|f| f.score(criterion)).collect();
+    let w = criterion::weights(&values);
+    for (f, w) in fits.iter_mut().zip(w) {
+        f.delta = f.score(criterion) - values[0];
+        f.weight = w;
+    }
+}
+
+/// Groups the ranked fits the trace cannot tell apart, as e(v) fits are grouped (docs/physics.md
+/// §9.3): a law joins the group of the best-ranked law still ungrouped when their Δ < 2 or when
+/// their fitted traces differ nowhere on the samples by more than the noise (the best fit's
+/// residual standard deviation). `v_range` is the scene's v₀ at both ends: a trace is one impact.
+pub(super) fn verdict(
+    data: &TraceData,
+    fits: &[LawFit],
+    criterion: criterion::Criterion,
+    v0: f64,
+) -> Verdict {
+    let best = &fits[0];
+    let dof = data.samples.len().saturating_sub(best.params.len()).max(1);
+    let peak = data.peak().value.abs();
+    let noise = (best.rss / dof as f64)
+        .sqrt()
+        .max(10.0 * TRACE_FLOOR * peak);
+    // Residuals are model minus data at the same samples: their difference is the models'.
+    let gap = |i: usize, j: usize| -> f64 {
+        fits[i]
+            .residuals
+            .iter()
+            .zip(&fits[j].residuals)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
+    };
+    let mut grouped = vec![false; fits.len()];
+    let mut groups = Vec::new();
+    for i in 0..fits.len() {
+        if grouped[i] {
+            continue;
+        }
+        grouped[i] = true;
+        let mut members = vec![fits[i].candidate];
+        let (mut max_delta, mut max_gap) = (0.0f64, 0.0f64);
+        for j in i + 1..fits.len() {
+            if grouped[j] {
+                continue;
+            }
+            let delta = fits[j].score(criterion) - fits[i].score(criterion);
+            let g = gap(i, j);
+            if delta < DELTA_TIE || g < noise {
+                grouped[j] = true;
+                members.push(fits[j].candidate);
+                max_delta = max_delta.max(delta);
+                max_gap = max_gap.max(g);
+            }
+        }
+        if members.len() > 1 {
+            let same = identical_on_traces(members[0]);
+            groups.push(Indistinguishable {
+                identical: members[1..]
+                    .iter()
+                    .copied()
+                    .filter(|c| same.contains(c))
+                    .collect(),
+                members,
+                max_delta,
+                max_gap,
+                noise,
+            });
+        }
+    }
+    let best_group: Vec<Candidate> = groups
+        .first()
+        .filter(|g| g.members[0] == best.candidate)
+        .map(|g| g.members.clone())
+        .unwrap_or_else(|| vec![best.candidate]);
+    let runner_up = fits
+        .iter()
+        .find(|f| !best_group.contains(&f.candidate))
+        .map(|f| (f.candidate, f.delta));
+    Verdict {
+        best: best.candidate,
+        criterion,
+        best_weight: best.weight,
+        runner_up,
+        v_range: (v0, v0),
+        noise,
+        groups,
+    }
+}
+
+/// The laws whose F(t) and x(t) are the same functions as `candidate`'s on any trace (a
+/// reparametrised copy): the Hunt–Crossley rows among themselves (with χ fitted, each is
+/// F = k·xⁿ·(1 + χ·ẋ/v₀), eq 19, whatever its χ(e)), and the proposed model and Kuwabara–Kono
+/// with F ≥ 0 (b = k·A, docs/physics.md §6.5).
+fn identical_on_traces(candidate: Candidate) -> Vec<Candidate> {
+    let class = |m: ForceModel| -> Option<u8> {
+        if m.spec().family == Family::HuntCrossley {
+            Some(0)
+        } else if m == ForceModel::Proposed || m.name() == "kuwabara-kono" {
+            Some(1)
+        } else {
+            None
+        }
+    };
+    let Some(own) = candidate.model().and_then(class) else {
+        return Vec::new();
+    };
+    ForceModel::ALL
+        .into_iter()
+        .filter(|&m| Candidate::Law(m) != candidate && class(m) == Some(own))
+        .map(Candidate::Law)
+        .collect()
+}

@@ -1,0 +1,22 @@
+//! Two-parameter maps of a system's motion (issue 24; docs/maps.md).
+//!
+//! [`map`] runs the system at every cell of a [`Grid`] of two scene keys and tells its motion
+//! ([`Motion`]): n:m periodic from the recorded impacts, quasi-periodic or chaotic from the
+//! largest Lyapunov exponent of the impact map ([`lyapunov`]: the exact Jacobian for the rigid
+//! stop, two trajectories for the compliant one), chattering, sticking, no impact. Rows run in
+//! parallel on rayon's pool; along a row the attractor of one cell starts the next, so that the
+//! result is fixed by the grid alone: independent of the number of threads and of the [`Shard`]
+//! the rows are dealt into. [`difference`] compares the rigid and compliant maps cell by cell.
+
+mod difference;
+mod grid;
+pub mod lyapunov;
+mod motion;
+mod run;
+
+pub use difference::{Agreement, DifferenceCell, difference};
+pub use grid::{Axis, Grid, Shard};
+pub use motion::{
+    CHATTER_SPEED, HOLDING_CONTACT, Motion, Tolerances, from_exponent, from_history, period_of,
+};
+pub use run::{Cell, MapOptions, MapRows, cell, contact_at, map};

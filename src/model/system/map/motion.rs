@@ -1,0 +1,183 @@
+//! The kind of motion at one point of a map, decided from the recorded impacts and the largest
+//! Lyapunov exponent of the impact map (docs/maps.md §2).
+#![warn(missing_docs)]
+
+use std::f64::consts::TAU;
+
+use serde::Serialize;
+
+use crate::model::system::{EndReason, History, ImpactKind, ImpactRecord};
+
+/// What the body does after the transient.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum Motion {
+    /// At most one impact recorded after the transient within the run's time limit.
+    NoImpact,
+    /// The body rests on a stop for ever (a rigid stop's chatter ends in a stick that never
+    /// releases; a compliant contact is held for [`HELD_PERIODS`](crate::model::system::compliant::HELD_PERIODS)).
+    Sticking,
+    /// Chatter: accumulating impacts ending in sticking phases that release again (rigid), or
+    /// contacts in which the body comes to rest or is held (compliant); `period` if the sequence
+    /// repeats.
+    Chattering {
+        /// n impacts (accumulation points count as one) in m forcing periods.
+        period: Option<(u32, u32)>,
+    },
+    /// n impacts every m forcing periods, isolated impacts only.
+    Periodic {
+        /// n.
+        impacts: u32,
+        /// m.
+        cycles: u32,
+    },
+    /// No period found, largest Lyapunov exponent within the tolerance of 0.
+    QuasiPeriodic,
+    /// No period found, largest Lyapunov exponent above the tolerance.
+    Chaotic,
+    /// No period found within the recorded impacts, yet the exponent is clearly negative: a
+    /// periodic attractor of a longer period, or one the transient has not reached yet.
+    LongPeriod,
+    /// No period found and no exponent (the impact map could not be iterated).
+    Unresolved,
+    /// The run failed (its error is kept beside the cell).
+    Failed,
+}
+
+impl Motion {
+    /// The name in every output: `periodic`, `chaotic`, `no-impact`, …
+    pub fn name(self) -> &'static str {
+        match self {
+            Motion::NoImpact => "no-impact",
+            Motion::Sticking => "sticking",
+            Motion::Chattering { .. } => "chattering",
+            Motion::Periodic { .. } => "periodic",
+            Motion::QuasiPeriodic => "quasi-periodic",
+            Motion::Chaotic => "chaotic",
+            Motion::LongPeriod => "long-period",
+            Motion::Unresolved => "unresolved",
+            Motion::Failed => "failed",
+        }
+    }
+
+    /// (n, m) where the motion has a period.
+    pub fn period(self) -> Option<(u32, u32)> {
+        match self {
+            Motion::Periodic { impacts, cycles } => Some((impacts, cycles)),
+            Motion::Chattering { period } => period,
+            _ => None,
+        }
+    }
+
+    /// The motion named `name` with period `period` (the inverse of [`Motion::name`] and
+    /// [`Motion::period`]), for reading a map file back.
+    pub fn parse(name: &str, period: Option<(u32, u32)>) -> Option<Motion> {
+        Some(match name {
+            "no-impact" => Motion::NoImpact,
+            "sticking" => Motion::Sticking,
+            "chattering" => Motion::Chattering { period },
+            "periodic" => {
+                let (impacts, cycles) = period?;
+                Motion::Periodic { impacts, cycles }
+            }
+            "quasi-periodic" => Motion::QuasiPeriodic,
+            "chaotic" => Motion::Chaotic,
+            "long-period" => Motion::LongPeriod,
+            "unresolved" => Motion::Unresolved,
+            "failed" => Motion::Failed,
+            _ => return None,
+        })
+    }
+}
+
+/// How the recorded impacts are read.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerances {
+    /// Two impacts are the same point of the impact map when their speeds differ by at most this
+    /// fraction of the largest recorded speed and their phases by at most this fraction of 2π.
+    pub period: f64,
+    /// |λ| at most this (per impact) reads as zero: quasi-periodic.
+    pub lyapunov: f64,
+    /// Longest period searched, in impacts (at most half the recorded impacts).
+    pub max_period_impacts: usize,
+}
+
+impl Default for Tolerances {
+    fn default() -> Tolerances {
+        Tolerances {
+            period: 1e-5,
+            lyapunov: 0.01,
+            max_period_impacts: 32,
+        }
+    }
+}
+
+/// The smallest n for which every recorded impact matches the one n before (same stop, speed and
+/// phase within `tolerance`), with the m forcing periods those n impacts span.
+pub fn period_of(
+    impacts: &[ImpactRecord],
+    forcing_period: f64,
+    tolerance: f64,
+    max_n: usize,
+) -> Option<(u32, u32)> {
+    let count = impacts.len();
+    let scale = impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
+    let close = |a: &ImpactRecord, b: &ImpactRecord| {
+        let dphase = (a.phase - b.phase).rem_euclid(TAU);
+        a.stop == b.stop
+            && a.kind == b.kind
+            && (a.v_in - b.v_in).abs() <= tolerance * scale
+            && dphase.min(TAU - dphase) <= tolerance * TAU
+    };
+    (1..=(count / 2).min(max_n)).find_map(|n| {
+        if !(n..count).all(|i| close(&impacts[i], &impacts[i - n])) {
+            return None;
+        }
+        let cycles = ((impacts[count - 1].t - impacts[count - 1 - n].t) / forcing_period).round();
+        (cycles >= 1.0).then_some((n as u32, cycles as u32))
+    })
+}
+
+/// A contact lasting longer than this fraction of a forcing period holds the body: the compliant
+/// image of chatter and sticking.
+pub const HOLDING_CONTACT: f64 = 0.1;
+
+/// An approach speed below this fraction of the largest recorded one is a chatter impact.
+pub const CHATTER_SPEED: f64 = 1e-3;
+
+/// What the history says before any exponent: `Some` when it decides the motion alone (no
+/// impact, sticking, chatter, a period), `None` when the exponent must decide.
+pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) -> Option<Motion> {
+    let impacts = &history.impacts;
+    match history.end {
+        EndReason::StuckForever => return Some(Motion::Sticking),
+        // Out of time with (almost) nothing recorded: the body stopped impacting. With more, the
+        // impacts were only slow to come; what was recorded is read as usual.
+        EndReason::TimeLimit if impacts.len() < 2 => return Some(Motion::NoImpact),
+        EndReason::TimeLimit | EndReason::Recorded => {}
+    }
+    let period = period_of(impacts, forcing_period, tol.period, tol.max_period_impacts);
+    let fastest = impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
+    let chatters = !history.sticks.is_empty()
+        || impacts.iter().any(|i| {
+            // A rigid chatter's accumulation point, or a compliant contact that came to rest.
+            i.kind != ImpactKind::Impact
+                || i.v_in < CHATTER_SPEED * fastest
+                || i.contact_time
+                    .is_some_and(|tc| tc > HOLDING_CONTACT * forcing_period)
+        });
+    if chatters {
+        return Some(Motion::Chattering { period });
+    }
+    period.map(|(impacts, cycles)| Motion::Periodic { impacts, cycles })
+}
+
+/// The motion without a period, from its largest Lyapunov exponent per impact.
+pub fn from_exponent(lyapunov: Option<f64>, tol: &Tolerances) -> Motion {
+    match lyapunov {
+        Some(l) if l > tol.lyapunov => Motion::Chaotic,
+        Some(l) if l >= -tol.lyapunov => Motion::QuasiPeriodic,
+        Some(_) => Motion::LongPeriod,
+        None => Motion::Unresolved,
+    }
+}

@@ -1,0 +1,217 @@
+//! The map engine: rows of the grid on rayon's pool, the attractor followed along each row.
+#![warn(missing_docs)]
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::model::system::diagram::rebase;
+use crate::model::system::{
+    CompliantDamping, Contact, RunOptions, State, SystemError, SystemModel, simulate,
+};
+
+use super::grid::{Grid, Shard};
+use super::lyapunov::{self, NoExponent};
+use super::motion::{self, Motion, Tolerances};
+
+/// How every cell is run and read.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapOptions {
+    /// Each cell's run: transient and recorded impacts, time and impact budgets. Its `initial`
+    /// starts the first cell of every row (None: at rest).
+    pub run: RunOptions,
+    /// Map steps the largest Lyapunov exponent is averaged over (0: no exponent, so no chaos or
+    /// quasi-periodicity is told apart: `unresolved`).
+    pub lyapunov_impacts: usize,
+    /// How impacts are compared and the exponent read.
+    pub tolerances: Tolerances,
+    /// Budget of cells × (transient + recorded + exponent) impacts of the part computed.
+    pub max_total_impacts: u128,
+}
+
+impl Default for MapOptions {
+    fn default() -> MapOptions {
+        MapOptions {
+            run: RunOptions {
+                transient_impacts: 300,
+                recorded_impacts: 64,
+                max_periods: 20_000.0,
+                max_impacts: 100_000,
+                samples_per_period: 0,
+                initial: None,
+            },
+            lyapunov_impacts: 200,
+            tolerances: Tolerances::default(),
+            max_total_impacts: 10_000_000_000,
+        }
+    }
+}
+
+/// One point of the map.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Cell {
+    /// Column index (along x).
+    pub ix: usize,
+    /// Row index (along y).
+    pub iy: usize,
+    /// x value, SI.
+    pub x: f64,
+    /// y value, SI.
+    pub y: f64,
+    /// The motion.
+    pub motion: Motion,
+    /// Largest Lyapunov exponent of the impact map, per impact (where the map of isolated impacts
+    /// could be iterated).
+    pub lyapunov: Option<f64>,
+    /// Why the cell failed (`motion` is then [`Motion::Failed`]).
+    pub error: Option<String>,
+}
+
+/// A computed part of a map: its rows in order, each row's cells in order of x.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MapRows {
+    /// Which rows.
+    pub shard: Shard,
+    /// The rows' cells, row after row.
+    pub cells: Vec<Cell>,
+}
+
+/// The map of `model` with `contact` over `grid`, the rows of `shard` only. Rows run in parallel
+/// on rayon's pool; each row is followed in sequence from its first cell, so the result does not
+/// depend on the number of threads or on the sharding. A cell whose run fails is kept as
+/// [`Motion::Failed`] with its error (the next cell then starts from `options.run.initial`).
+pub fn map(
+    model: &SystemModel,
+    contact: &Contact,
+    grid: &Grid,
+    shard: Shard,
+    options: &MapOptions,
+) -> Result<MapRows, SystemError> {
+    grid.check(model)?;
+    let rows: Vec<usize> = shard.rows(grid.y.points).collect();
+    let per_cell =
+        options.run.transient_impacts + options.run.recorded_impacts + options.lyapunov_impacts;
+    let needed = rows.len() as u128 * grid.x.points as u128 * per_cell as u128;
+    if needed > options.max_total_impacts {
+        return Err(SystemError::DiagramBudget {
+            needed,
+            values: rows.len() * grid.x.points,
+            per_value: per_cell,
+            budget: usize::try_from(options.max_total_impacts).unwrap_or(usize::MAX),
+        });
+    }
+    let cells = rows
+        .par_iter()
+        .map(|&iy| row(model, contact, grid, iy, options))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .flatten()
+        .collect();
+    Ok(MapRows { shard, cells })
+}
+
+/// One row, followed from its first cell.
+fn row(
+    model: &SystemModel,
+    contact: &Contact,
+    grid: &Grid,
+    iy: usize,
+    options: &MapOptions,
+) -> Vec<Cell> {
+    let mut warm: Option<(State, SystemModel)> = None;
+    let mut cells = Vec::with_capacity(grid.x.points);
+    for ix in 0..grid.x.points {
+        let (x, y) = (grid.x.value(ix), grid.y.value(iy));
+        let outcome = grid.model_at(model, ix, iy).and_then(|m| {
+            let run = RunOptions {
+                initial: match &warm {
+                    Some((s, from)) => Some(rebase(*s, from, &m)),
+                    None => options.run.initial,
+                },
+                ..options.run
+            };
+            let (motion, lyapunov, end) = cell(&m, contact, &run, options)?;
+            Ok((motion, lyapunov, end, m))
+        });
+        cells.push(match outcome {
+            Ok((motion, lyapunov, end, m)) => {
+                warm = Some((end, m));
+                Cell {
+                    ix,
+                    iy,
+                    x,
+                    y,
+                    motion,
+                    lyapunov,
+                    error: None,
+                }
+            }
+            Err(e) => {
+                warm = None;
+                Cell {
+                    ix,
+                    iy,
+                    x,
+                    y,
+                    motion: Motion::Failed,
+                    lyapunov: None,
+                    error: Some(e.to_string()),
+                }
+            }
+        });
+    }
+    cells
+}
+
+/// The contact at a cell: a rigid stop takes the cell's e (so that `impact.restitution` can be an
+/// axis), a compliant stop calibrated to e is calibrated to the cell's e.
+pub fn contact_at(contact: &Contact, model: &SystemModel) -> Contact {
+    match *contact {
+        Contact::Rigid { .. } => Contact::rigid(model.restitution),
+        Contact::Compliant {
+            model: law,
+            damping: CompliantDamping::CalibratedTo(_),
+        } => Contact::Compliant {
+            model: law,
+            damping: CompliantDamping::CalibratedTo(model.restitution),
+        },
+        other => other,
+    }
+}
+
+/// The motion at one cell, its exponent, and the state its run ended in (the next cell's start).
+pub fn cell(
+    model: &SystemModel,
+    contact: &Contact,
+    run: &RunOptions,
+    options: &MapOptions,
+) -> Result<(Motion, Option<f64>, State), SystemError> {
+    let contact = contact_at(contact, model);
+    let history = simulate(model, &contact, run)?;
+    let end = history.end_state;
+    let tol = &options.tolerances;
+    let decided = motion::from_history(&history, model.spec.period(), tol);
+    let exponent_needed = matches!(decided, None | Some(Motion::Periodic { .. }));
+    if !exponent_needed || options.lyapunov_impacts == 0 {
+        return Ok((decided.unwrap_or(Motion::Unresolved), None, end));
+    }
+    let Some(last) = lyapunov::start_of(&history.impacts) else {
+        return Ok((decided.unwrap_or(Motion::Unresolved), None, end));
+    };
+    let speed = history.impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
+    let steps = options.lyapunov_impacts;
+    let exponent = match contact {
+        Contact::Rigid { restitution } => lyapunov::rigid(model, restitution, last, speed, steps)?,
+        Contact::Compliant {
+            model: law,
+            damping,
+        } => lyapunov::compliant(model, law, damping, last, speed, steps)?,
+    };
+    Ok(match (decided, exponent) {
+        (Some(periodic), Ok(l)) => (periodic, Some(l), end),
+        (Some(periodic), Err(_)) => (periodic, None, end),
+        (None, Ok(l)) => (motion::from_exponent(Some(l), tol), Some(l), end),
+        (None, Err(NoExponent::Chatters)) => (Motion::Chattering { period: None }, None, end),
+        (None, Err(NoExponent::NoImpact)) => (Motion::NoImpact, None, end),
+        (None, Err(NoExponent::Grazes)) => (Motion::Unresolved, None, end),
+    })
+}
