@@ -76,6 +76,8 @@ pub enum Action {
     },
     /// `P`: the data cursor to the focused model's peak on the first chart.
     CursorToPeak,
+    /// `b`: in the system view, the continued branch over the bifurcation diagram on or off.
+    Branch,
     /// Applies the material selected in the picker to a body.
     ApplyMaterialTo(BodyIndex),
     /// The terminal has this many columns and rows: redraw (and size sweeps to it).

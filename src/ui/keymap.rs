@@ -100,8 +100,8 @@ const SHARED: &[(&str, &str)] = &[
     ),
     ("s e", "save the scene (name or path.toml) · export as CSV"),
     (
-        "f m t o",
-        "figure <scene>-<view>.svg · mouse · engine · open data",
+        "f m t o b",
+        "figure · mouse · engine · open data · sys: branch",
     ),
     ("paste", "opens the field under the cursor with the text"),
     (
@@ -262,6 +262,7 @@ fn normal(key: KeyEvent) -> Option<Action> {
             fast: true,
         },
         KeyCode::Char('P') => Action::CursorToPeak,
+        KeyCode::Char('b') => Action::Branch,
         KeyCode::Char(c) => Action::Tab(Tab::of_key(c)?),
         _ => return None,
     })

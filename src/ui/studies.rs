@@ -8,6 +8,7 @@
 
 use std::sync::Arc;
 
+use crate::model::study::continuation::ContinuedBranches;
 use crate::model::study::fit::FitData;
 use crate::model::study::runner::{
     self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
@@ -161,6 +162,14 @@ impl Studies {
     pub fn fit(&self) -> Option<&Arc<FitData>> {
         match self.result(StudyKind::Fit) {
             Some(StudyResult::Fit(r)) => Some(r),
+            _ => None,
+        }
+    }
+
+    /// The system view's continued branches, or those done so far.
+    pub fn continuation(&self) -> Option<&Arc<ContinuedBranches>> {
+        match self.result(StudyKind::Continuation) {
+            Some(StudyResult::Continuation(r)) => Some(r),
             _ => None,
         }
     }

@@ -241,6 +241,7 @@ fn normal(app: &mut App, action: Action) {
         | Action::CycleChart
         | Action::MoveCursor { .. }
         | Action::CursorToPeak
+        | Action::Branch
         | Action::Cancel
         | Action::Input(_)
         | Action::ApplyMaterialTo(_)

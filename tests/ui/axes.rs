@@ -18,20 +18,20 @@ const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (160, 48)];
 
 /// One chart found in the buffer: its plot cells and its labels.
 #[derive(Debug)]
-struct Found {
+pub(super) struct Found {
     /// Plot columns x0..x1 and rows y0..y1 (exclusive ends).
-    x0: u16,
-    x1: u16,
-    y0: u16,
-    y1: u16,
+    pub(super) x0: u16,
+    pub(super) x1: u16,
+    pub(super) y0: u16,
+    pub(super) y1: u16,
     /// (value, centre column) of each x label, (value, row) of each y label.
-    xs: Vec<(f64, u16)>,
-    ys: Vec<(f64, u16)>,
+    pub(super) xs: Vec<(f64, u16)>,
+    pub(super) ys: Vec<(f64, u16)>,
     /// Text around the chart: its axis titles.
-    titles: String,
+    pub(super) titles: String,
 }
 
-fn sym(buf: &Buffer, x: u16, y: u16) -> &str {
+pub(super) fn sym(buf: &Buffer, x: u16, y: u16) -> &str {
     buf[(x, y)].symbol()
 }
 
@@ -70,7 +70,7 @@ fn numbers(buf: &Buffer, y: u16, from: u16, to: u16) -> Vec<(f64, u16, u16)> {
 
 /// Every chart in the buffer: an axis corner `└` with a run of `─`/`┴` to its right holding
 /// tick marks, and `│`/`┤` above it.
-fn charts(buf: &Buffer) -> Vec<Found> {
+pub(super) fn charts(buf: &Buffer) -> Vec<Found> {
     let mut found = Vec::new();
     let area = buf.area;
     for cy in 1..area.height.saturating_sub(1) {
@@ -125,7 +125,7 @@ fn charts(buf: &Buffer) -> Vec<Found> {
 
 /// Where the labels put `v` along an axis: interpolated between the labels around it, in
 /// log₁₀ of the labels on a log axis.
-fn by_labels(labels: &[(f64, u16)], v: f64, log: bool) -> f64 {
+pub(super) fn by_labels(labels: &[(f64, u16)], v: f64, log: bool) -> f64 {
     let f = |x: f64| if log { x.log10() } else { x };
     let pair = labels
         .windows(2)
@@ -163,7 +163,7 @@ fn sized(mut app: App, tab: Tab, (w, h): (u16, u16)) -> App {
 }
 
 /// The chart whose titles hold every one of `words`.
-fn chart_titled<'a>(charts: &'a [Found], words: &[&str]) -> Option<&'a Found> {
+pub(super) fn chart_titled<'a>(charts: &'a [Found], words: &[&str]) -> Option<&'a Found> {
     charts
         .iter()
         .find(|c| words.iter().all(|w| c.titles.contains(w)))

@@ -10,4 +10,5 @@ mod readme_screen;
 mod render;
 mod results_damping;
 mod system;
+mod system_branch;
 mod system_scene;

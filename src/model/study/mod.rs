@@ -1,5 +1,6 @@
 //! Studies over many solves: speed against accuracy, stability of fixed-step methods, parameter sweeps.
 
+pub mod continuation;
 pub mod fit;
 pub mod reference;
 pub mod runner;

@@ -11,6 +11,7 @@ use crate::model::restitution::{
     REQUESTED, RestitutionRow, realised_curve, requested_grid, table, velocity_curve, velocity_grid,
 };
 use crate::model::scene::Scene;
+use crate::model::study::continuation::{ContinuationStudy, ContinuedBranches, run_continuation};
 use crate::model::study::fit::{FitData, FitStudy, run_fit};
 use crate::model::study::reference::{SummaryErrors, reference, reference_solution};
 use crate::model::study::stability::{
@@ -66,6 +67,8 @@ pub enum StudySpec {
     Diagram(Box<DiagramStudy>),
     /// Every candidate law fitted to measured restitution, with its progress while slow.
     Fit(Box<FitStudy>),
+    /// A system's periodic orbit continued over the diagram's range, reported stop by stop.
+    Continuation(Box<ContinuationStudy>),
 }
 
 /// The kinds of study, one slot each.
@@ -80,10 +83,11 @@ pub enum StudyKind {
     System,
     Diagram,
     Fit,
+    Continuation,
 }
 
 impl StudyKind {
-    pub const ALL: [StudyKind; 9] = [
+    pub const ALL: [StudyKind; 10] = [
         StudyKind::WorkPrecision,
         StudyKind::Current,
         StudyKind::Runs,
@@ -93,6 +97,7 @@ impl StudyKind {
         StudyKind::System,
         StudyKind::Diagram,
         StudyKind::Fit,
+        StudyKind::Continuation,
     ];
 
     pub fn index(self) -> usize {
@@ -107,7 +112,7 @@ impl StudyKind {
         match self {
             StudyKind::Current | StudyKind::Runs | StudyKind::System => 0,
             StudyKind::Sweep | StudyKind::Restitution | StudyKind::Fit => 1,
-            StudyKind::Bounds | StudyKind::Diagram => 2,
+            StudyKind::Bounds | StudyKind::Diagram | StudyKind::Continuation => 2,
             StudyKind::WorkPrecision => 3,
         }
     }
@@ -125,6 +130,7 @@ impl StudySpec {
             StudySpec::System(_) => StudyKind::System,
             StudySpec::Diagram(_) => StudyKind::Diagram,
             StudySpec::Fit(_) => StudyKind::Fit,
+            StudySpec::Continuation(_) => StudyKind::Continuation,
         }
     }
 }
@@ -231,6 +237,8 @@ pub enum StudyResult {
     Diagram(Arc<DiagramData>),
     /// The fit, or its progress (see [`FitData::complete`]).
     Fit(Arc<FitData>),
+    /// Each stop's continued branch so far (see [`ContinuedBranches::complete`]).
+    Continuation(Arc<ContinuedBranches>),
 }
 
 impl StudyResult {
@@ -245,6 +253,7 @@ impl StudyResult {
             StudyResult::System(_) => StudyKind::System,
             StudyResult::Diagram(_) => StudyKind::Diagram,
             StudyResult::Fit(_) => StudyKind::Fit,
+            StudyResult::Continuation(_) => StudyKind::Continuation,
         }
     }
 
@@ -253,6 +262,7 @@ impl StudyResult {
         match self {
             StudyResult::Diagram(d) => !d.complete,
             StudyResult::Fit(f) => !f.complete(),
+            StudyResult::Continuation(c) => !c.complete,
             _ => false,
         }
     }
@@ -277,33 +287,29 @@ pub fn run_partially(
     stop: &(dyn Fn() -> bool + Sync),
     partial: &dyn Fn(StudyOutcome),
 ) -> Option<StudyOutcome> {
-    if let StudySpec::Fit(study) = &job.spec {
-        let report = |data| {
-            partial(StudyOutcome {
-                generation: job.generation,
-                result: StudyResult::Fit(Arc::new(data)),
-            })
-        };
-        let data = run_fit(study, stop, &report)?;
-        return (!stop()).then_some(StudyOutcome {
-            generation: job.generation,
-            result: StudyResult::Fit(Arc::new(data)),
-        });
+    let generation = job.generation;
+    let outcome = |result| StudyOutcome { generation, result };
+    match &job.spec {
+        StudySpec::Fit(study) => {
+            let data = run_fit(study, stop, &|d| {
+                partial(outcome(StudyResult::Fit(Arc::new(d))))
+            })?;
+            (!stop()).then(|| outcome(StudyResult::Fit(Arc::new(data))))
+        }
+        StudySpec::Continuation(study) => {
+            let data = run_continuation(study, stop, &|d| {
+                partial(outcome(StudyResult::Continuation(Arc::new(d))))
+            })?;
+            (!stop()).then(|| outcome(StudyResult::Continuation(Arc::new(data))))
+        }
+        StudySpec::Diagram(study) => {
+            let data = run_diagram(study, stop, &|d| {
+                partial(outcome(StudyResult::Diagram(Arc::new(d))))
+            })?;
+            (!stop()).then(|| outcome(StudyResult::Diagram(Arc::new(data))))
+        }
+        _ => run(job, stop),
     }
-    let StudySpec::Diagram(study) = &job.spec else {
-        return run(job, stop);
-    };
-    let report = |data| {
-        partial(StudyOutcome {
-            generation: job.generation,
-            result: StudyResult::Diagram(Arc::new(data)),
-        })
-    };
-    let data = run_diagram(study, stop, &report)?;
-    (!stop()).then_some(StudyOutcome {
-        generation: job.generation,
-        result: StudyResult::Diagram(Arc::new(data)),
-    })
 }
 
 /// Computes `job` on the calling thread; `None` when `stop` returned true on the way.
@@ -357,7 +363,9 @@ pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutc
             None => return None,
         },
         StudySpec::System(study) => StudyResult::System(Arc::new(run_system(study))),
-        StudySpec::Diagram(_) | StudySpec::Fit(_) => return run_partially(job, stop, &|_| {}),
+        StudySpec::Diagram(_) | StudySpec::Fit(_) | StudySpec::Continuation(_) => {
+            return run_partially(job, stop, &|_| {});
+        }
     };
     // A study cut short is incomplete: nobody wants it.
     (!stop()).then_some(StudyOutcome {

@@ -40,4 +40,7 @@ pub enum ContinuationError {
     /// The special point asked for is not of a kind that can be followed or switched at.
     #[error("continuation: {0}")]
     NoSuchPoint(String),
+    /// Stopped on request before the branch ended (a newer request superseded it).
+    #[error("continuation: stopped before the branch ended")]
+    Stopped,
 }

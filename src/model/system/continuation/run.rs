@@ -11,7 +11,7 @@ use super::engine::{correct, jacobian, tangent};
 use super::error::ContinuationError;
 use super::problem::{OrbitProblem, model_at, varies_restitution};
 use super::rigid::RigidProblem;
-use super::trace::{Augmented, Trace, test_value};
+use super::trace::{Augmented, Trace, never, test_value};
 
 /// A fold or period-doubling curve ends where an impact speed falls below this fraction of the
 /// speed scale: it is running into a grazing point, where J ~ 1/v has no finite limit.
@@ -80,6 +80,20 @@ pub fn continue_orbit(
     guess: &OrbitGuess,
     options: &ContinuationOptions,
 ) -> Result<Branch, ContinuationError> {
+    continue_orbit_until(model, contact, param, range, guess, options, &never)
+}
+
+/// [`continue_orbit`] that polls `stop` before every step and ends with
+/// [`ContinuationError::Stopped`] once it says so (the explorer's job, superseded by an edit).
+pub fn continue_orbit_until(
+    model: &SystemModel,
+    contact: &Contact,
+    param: Param,
+    range: (f64, f64),
+    guess: &OrbitGuess,
+    options: &ContinuationOptions,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Result<Branch, ContinuationError> {
     check_range(param, range)?;
     let keys = vec![param];
     let at_start = model_at(model, &keys, &[range.0])?;
@@ -133,7 +147,7 @@ pub fn continue_orbit(
     let mut toward = DVector::zeros(z.len());
     toward[z.len() - 1] = (range.1 - range.0).signum();
     let t0 = tangent(&jacobian(&eq, &z)?, &toward)?;
-    trace_branch(&eq, z, t0, range, options, false, &contact, param)
+    trace_branch(&eq, z, t0, range, options, (false, stop), &contact, param)
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -143,7 +157,7 @@ fn trace_branch(
     t0: DVector<f64>,
     range: (f64, f64),
     options: &ContinuationOptions,
-    skip_first: bool,
+    (skip_first, stop): (bool, &(dyn Fn() -> bool + Sync)),
     contact: &Contact,
     key: Param,
 ) -> Result<Branch, ContinuationError> {
@@ -156,6 +170,7 @@ fn trace_branch(
         watch: SpecialKind::ALL.to_vec(),
         bounds: (lo, hi),
         min_speed: None,
+        stop,
     };
     let traced = trace.run(z, t0, skip_first)?;
     let (cycles, stops) = eq.problem.signature();
@@ -230,7 +245,7 @@ pub fn switch_at_period_doubling(
     let (z1, _) = correct(&eq, &(&z0 + &t * step), &t, 12)?;
     let chord = (&z1 - &z0).normalize();
     let t1 = tangent(&jacobian(&eq, &z1)?, &chord)?;
-    let mut branch = trace_branch(&eq, z1, t1, range, options, false, contact, param)?;
+    let mut branch = trace_branch(&eq, z1, t1, range, options, (false, &never), contact, param)?;
     // The doubling point itself starts the new branch.
     let trace = Trace {
         eq: &eq,
@@ -238,6 +253,7 @@ pub fn switch_at_period_doubling(
         watch: vec![],
         bounds: (f64::NEG_INFINITY, f64::INFINITY),
         min_speed: None,
+        stop: &never,
     };
     let m0 = eq.monitors(&z0)?;
     let first = trace.point(&z0, &m0, 0.0);
@@ -316,6 +332,7 @@ pub fn continue_special(
             watch: watch.clone(),
             bounds: (lo, hi),
             min_speed,
+            stop: &never,
         };
         halves.push(trace.run(z0.clone(), t0, false)?);
     }

@@ -117,6 +117,14 @@ pub(crate) struct Trace<'a> {
     /// Ends the trace as grazing where the smallest impact speed falls below this (scaled): a
     /// fold or period-doubling curve runs into a grazing point without crossing it (J ~ 1/v).
     pub min_speed: Option<f64>,
+    /// Polled before every step: true ends the trace with [`ContinuationError::Stopped`] (the
+    /// explorer's job superseded by an edit).
+    pub stop: &'a (dyn Fn() -> bool + Sync),
+}
+
+/// The `stop` of a trace nobody stops.
+pub(crate) fn never() -> bool {
+    false
 }
 
 /// The outcome of a trace.
@@ -236,6 +244,9 @@ impl Trace<'_> {
         let last = node.z.len() - 1;
         let (lo, hi) = self.bounds;
         let end = loop {
+            if (self.stop)() {
+                return Err(ContinuationError::Stopped);
+            }
             if points.len() >= o.max_points {
                 break BranchEnd::MaxPoints;
             }

@@ -32,6 +32,7 @@ pub fn handle(app: &mut App, action: Action) -> Option<Action> {
             edited(app, outcome);
         }
         Action::ResetField => reset(app, rows[i]),
+        Action::Branch => super::branch::toggle(app),
         action => return Some(action),
     }
     None

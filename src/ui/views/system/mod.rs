@@ -3,6 +3,7 @@
 //! phase portrait, impact map, and a bifurcation diagram that fills in as it computes. Every edit
 //! (of the scene in the explorer, of the system's keys here) runs it again.
 
+pub mod branch;
 mod keys;
 mod render;
 pub mod settings;
@@ -31,6 +32,8 @@ pub struct State {
     /// The row of the form under the cursor (an index into [`Settings::rows`]; on a scene without
     /// `[system]`, into [`settings::SYSTEM_PRESETS`]).
     pub cursor: usize,
+    /// `b`: the continued branch drawn over the diagram (docs/continuation.md §8).
+    pub branch: bool,
 }
 
 /// The model the view runs: the last valid scene in the draft's `[system]` table, or why there is
@@ -71,6 +74,7 @@ impl View for System {
             ("←→", "step"),
             ("u", "undo"),
             ("[ ]", "law"),
+            ("b", "branch"),
         ]
     }
 
@@ -86,7 +90,11 @@ impl View for System {
     }
 
     fn studies(&self) -> &'static [StudyKind] {
-        &[StudyKind::System, StudyKind::Diagram]
+        &[
+            StudyKind::System,
+            StudyKind::Diagram,
+            StudyKind::Continuation,
+        ]
     }
 
     fn study_specs(&self, app: &App, valid: &Valid) -> Vec<StudySpec> {
@@ -102,7 +110,12 @@ impl View for System {
             to,
             s.values.unwrap_or(settings::DEFAULT_VALUES),
         );
-        vec![
+        let continued = app
+            .views
+            .system
+            .branch
+            .then(|| branch::spec(s, &model, &contacts));
+        let mut specs = vec![
             StudySpec::System(Box::new(SystemStudy {
                 model: model.clone(),
                 contacts: contacts.clone(),
@@ -115,7 +128,9 @@ impl View for System {
                 values,
                 options: settings::diagram_options(s),
             })),
-        ]
+        ];
+        specs.extend(continued);
+        specs
     }
 
     fn charts(&self, app: &App) -> Vec<Chart> {
@@ -124,7 +139,10 @@ impl View for System {
         };
         let mut charts = motion_charts(app.studies.system().map(|r| &**r), &model, FIGURE_TICKS);
         if let Some(d) = app.studies.diagram() {
-            charts.push(diagram_chart(d, &model, FIGURE_TICKS));
+            charts.push(match branch::shown(app, d) {
+                Some(b) => branch::chart(d, b, &model, FIGURE_TICKS, 1),
+                None => diagram_chart(d, &model, FIGURE_TICKS),
+            });
         }
         charts
     }
@@ -176,12 +194,14 @@ pub fn diagram_chart(data: &DiagramData, model: &SystemModel, budget: (usize, us
         .collect();
     let refs: Vec<(Approach, &Branch)> = branches.iter().map(|(a, b)| (*a, b)).collect();
     let mut axes = DiagramAxes::impact_speeds(data.param, model);
-    // The axis spans every value asked for, so that the diagram fills in from the left.
-    axes.range = data
-        .values
-        .iter()
-        .fold(None, |r: Option<(f64, f64)>, &v| {
-            Some(r.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))
-        });
+    axes.range = value_span(&data.values);
     plot::bifurcation(&refs, &axes, budget)
+}
+
+/// The span of a diagram's axis: every value asked for, so that the diagram fills in from the
+/// left.
+pub fn value_span(values: &[f64]) -> Option<(f64, f64)> {
+    values.iter().fold(None, |r: Option<(f64, f64)>, &v| {
+        Some(r.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))))
+    })
 }

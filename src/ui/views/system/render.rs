@@ -210,6 +210,7 @@ pub fn note_texts(app: &App, model: Result<&SystemModel, &String>) -> Vec<(Strin
             None => {}
         }
     }
+    texts.extend(super::branch::notes(app));
     if let Some(d) = app.studies.diagram() {
         for b in &d.branches {
             if let Some(e) = &b.error {
@@ -301,11 +302,22 @@ fn charts(frame: &mut Frame, area: Rect, app: &App, model: Option<&SystemModel>,
     for area in areas {
         chart_pane(frame, area, app, motion.next(), empty, running, roomy);
     }
-    let filling = app.studies.is_pending(StudyKind::Diagram);
+    let continuing =
+        app.views.system.branch && app.studies.is_pending(StudyKind::Continuation);
+    let filling = app.studies.is_pending(StudyKind::Diagram) || continuing;
     let chart = model.and_then(|model| {
         let b = budget(diagram.width.saturating_sub(9), diagram.height.saturating_sub(6));
         app.studies.diagram().map(|d| {
-            let mut chart = super::diagram_chart(d, model, b);
+            let mut chart = match super::branch::shown(app, d) {
+                Some(branches) => super::branch::chart(
+                    d,
+                    branches,
+                    model,
+                    b,
+                    super::branch::TERMINAL_THINNING,
+                ),
+                None => super::diagram_chart(d, model, b),
+            };
             let done = d.branches.iter().map(|b| b.columns.len()).sum::<usize>();
             let all = d.values.len() * d.branches.len();
             if done < all {
