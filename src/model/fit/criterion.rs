@@ -160,6 +160,76 @@ pub struct Verdict {
     pub groups: Vec<Indistinguishable>,
 }
 
+/// The verdict on fits ranked best first (docs/physics.md §9.3): a law joins the group of the
+/// best-ranked law still ungrouped when their Δ < 2, or when `gap(i, j)` — the largest difference
+/// of their fitted curves over the data — stays below `noise`; `same` names the laws identical
+/// to a group's first, `v_range` the velocities the data covers.
+pub(crate) fn judge(
+    fits: &[super::LawFit],
+    criterion: Criterion,
+    noise: f64,
+    gap: impl Fn(usize, usize) -> f64,
+    same: fn(Candidate) -> Vec<Candidate>,
+    v_range: (f64, f64),
+) -> Verdict {
+    let best = &fits[0];
+    let mut grouped = vec![false; fits.len()];
+    let mut groups = Vec::new();
+    for i in 0..fits.len() {
+        if grouped[i] {
+            continue;
+        }
+        grouped[i] = true;
+        let mut members = vec![fits[i].candidate];
+        let (mut max_delta, mut max_gap) = (0.0f64, 0.0f64);
+        for j in i + 1..fits.len() {
+            if grouped[j] {
+                continue;
+            }
+            let delta = fits[j].score(criterion) - fits[i].score(criterion);
+            let g = gap(i, j);
+            if delta < DELTA_TIE || g < noise {
+                grouped[j] = true;
+                members.push(fits[j].candidate);
+                max_delta = max_delta.max(delta);
+                max_gap = max_gap.max(g);
+            }
+        }
+        if members.len() > 1 {
+            let identical = same(members[0]);
+            groups.push(Indistinguishable {
+                identical: members[1..]
+                    .iter()
+                    .copied()
+                    .filter(|c| identical.contains(c))
+                    .collect(),
+                members,
+                max_delta,
+                max_gap,
+                noise,
+            });
+        }
+    }
+    let best_group: Vec<Candidate> = groups
+        .first()
+        .filter(|g| g.members[0] == best.candidate)
+        .map(|g| g.members.clone())
+        .unwrap_or_else(|| vec![best.candidate]);
+    let runner_up = fits
+        .iter()
+        .find(|f| !best_group.contains(&f.candidate))
+        .map(|f| (f.candidate, f.delta));
+    Verdict {
+        best: best.candidate,
+        criterion,
+        best_weight: best.weight,
+        runner_up,
+        v_range,
+        noise,
+        groups,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

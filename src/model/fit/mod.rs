@@ -74,7 +74,7 @@ pub use data::{FitDataError, RestitutionData, RestitutionSample};
 pub use lsq::{LsqError, LsqOptions, LsqProblem, LsqResult, ParamSpec, least_squares};
 pub use restitution::{Forward, restitution_model};
 
-use criterion::{DELTA_TIE, RESIDUAL_FLOOR, Scores};
+use criterion::{RESIDUAL_FLOOR, Scores, judge};
 use lsq::Convergence;
 
 /// Why a fit failed.
@@ -581,59 +581,5 @@ fn verdict(
             _ => f64::INFINITY,
         }
     };
-    let mut grouped = vec![false; fits.len()];
-    let mut groups = Vec::new();
-    for i in 0..fits.len() {
-        if grouped[i] {
-            continue;
-        }
-        grouped[i] = true;
-        let mut members = vec![fits[i].candidate];
-        let (mut max_delta, mut max_gap) = (0.0f64, 0.0f64);
-        for j in i + 1..fits.len() {
-            if grouped[j] {
-                continue;
-            }
-            let delta = fits[j].score(criterion) - fits[i].score(criterion);
-            let g = gap(i, j);
-            if delta < DELTA_TIE || g < noise {
-                grouped[j] = true;
-                members.push(fits[j].candidate);
-                max_delta = max_delta.max(delta);
-                max_gap = max_gap.max(g);
-            }
-        }
-        if members.len() > 1 {
-            let same = identical(members[0]);
-            groups.push(Indistinguishable {
-                identical: members[1..]
-                    .iter()
-                    .copied()
-                    .filter(|c| same.contains(c))
-                    .collect(),
-                members,
-                max_delta,
-                max_gap,
-                noise,
-            });
-        }
-    }
-    let best_group: Vec<Candidate> = groups
-        .first()
-        .filter(|g| g.members[0] == best.candidate)
-        .map(|g| g.members.clone())
-        .unwrap_or_else(|| vec![best.candidate]);
-    let runner_up = fits
-        .iter()
-        .find(|f| !best_group.contains(&f.candidate))
-        .map(|f| (f.candidate, f.delta));
-    Verdict {
-        best: best.candidate,
-        criterion,
-        best_weight: best.weight,
-        runner_up,
-        v_range: (v_lo, v_hi),
-        noise,
-        groups,
-    }
+    judge(fits, criterion, noise, gap, identical, (v_lo, v_hi))
 }

@@ -1,7 +1,7 @@
 //! Ranking trace fits and telling which the trace cannot separate, as e(v) fits are ranked
 //! (docs/physics.md §9.3).
 
-use crate::model::fit::criterion::{self, DELTA_TIE, Indistinguishable, Verdict};
+use crate::model::fit::criterion::{self, Verdict, judge};
 use crate::model::fit::{Candidate, LawFit};
 use crate::model::force::ForceModel;
 use crate::model::force::table::Family;
@@ -57,61 +57,7 @@ pub(super) fn verdict(
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max)
     };
-    let mut grouped = vec![false; fits.len()];
-    let mut groups = Vec::new();
-    for i in 0..fits.len() {
-        if grouped[i] {
-            continue;
-        }
-        grouped[i] = true;
-        let mut members = vec![fits[i].candidate];
-        let (mut max_delta, mut max_gap) = (0.0f64, 0.0f64);
-        for j in i + 1..fits.len() {
-            if grouped[j] {
-                continue;
-            }
-            let delta = fits[j].score(criterion) - fits[i].score(criterion);
-            let g = gap(i, j);
-            if delta < DELTA_TIE || g < noise {
-                grouped[j] = true;
-                members.push(fits[j].candidate);
-                max_delta = max_delta.max(delta);
-                max_gap = max_gap.max(g);
-            }
-        }
-        if members.len() > 1 {
-            let same = identical_on_traces(members[0]);
-            groups.push(Indistinguishable {
-                identical: members[1..]
-                    .iter()
-                    .copied()
-                    .filter(|c| same.contains(c))
-                    .collect(),
-                members,
-                max_delta,
-                max_gap,
-                noise,
-            });
-        }
-    }
-    let best_group: Vec<Candidate> = groups
-        .first()
-        .filter(|g| g.members[0] == best.candidate)
-        .map(|g| g.members.clone())
-        .unwrap_or_else(|| vec![best.candidate]);
-    let runner_up = fits
-        .iter()
-        .find(|f| !best_group.contains(&f.candidate))
-        .map(|f| (f.candidate, f.delta));
-    Verdict {
-        best: best.candidate,
-        criterion,
-        best_weight: best.weight,
-        runner_up,
-        v_range: (v0, v0),
-        noise,
-        groups,
-    }
+    judge(fits, criterion, noise, gap, identical_on_traces, (v0, v0))
 }
 
 /// The laws whose F(t) and x(t) are the same functions as `candidate`'s on any trace (a
