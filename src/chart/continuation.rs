@@ -332,6 +332,31 @@ mod tests {
     }
 
     #[test]
+    fn a_dashed_run_draws_two_thirds_of_each_period_along_its_length() {
+        // A diagonal across both axes (length √2 in their fractions), then a step back along x.
+        let run = [(0.0, 0.0), (2.0, 10.0), (1.0, 10.0)];
+        let dashes = dashed(&run, 0.1, (2.0, 10.0));
+        let length = |d: &Vec<(f64, f64)>| {
+            d.windows(2)
+                .map(|w| ((w[1].0 - w[0].0) / 2.0).hypot((w[1].1 - w[0].1) / 10.0))
+                .sum::<f64>()
+        };
+        let total = 2f64.sqrt() + 0.5;
+        assert_eq!(dashes.len(), (total / 0.1).ceil() as usize, "{dashes:?}");
+        for d in &dashes[..dashes.len() - 1] {
+            assert!((length(d) - 0.1 * 2.0 / 3.0).abs() < 1e-12, "{d:?}");
+        }
+        assert_eq!(dashes[0][0], (0.0, 0.0));
+        // The dash across the corner keeps the corner.
+        assert!(dashes.iter().any(|d| d.contains(&(2.0, 10.0))));
+        let drawn: f64 = dashes.iter().map(length).sum();
+        assert!(
+            (drawn / total - 2.0 / 3.0).abs() < 0.05,
+            "{drawn} of {total}"
+        );
+    }
+
+    #[test]
     fn a_branch_places_its_points_and_marks_at_their_values() {
         let mut c = BranchCurve::default();
         c.push_impact(&[(1.0, 0.5, true), (2.0, 0.7, false), (3.0, 0.9, false)]);
