@@ -93,18 +93,10 @@ fn b_draws_the_branch_over_the_diagram_and_its_period_doubling_reads_the_continu
     let s = screen(&app, SIZE.0, SIZE.1);
     assert!(s.contains("branch over the diagram of Γ"), "{s}");
 
-    // The rigid stop's PD mark: its × (the foreground ink: rigid) with `PD` beside it.
-    let marks: Vec<(u16, u16)> = (chart.y0..chart.y1)
-        .flat_map(|r| (chart.x0..chart.x1).map(move |c| (c, r)))
-        .filter(|&(c, r)| {
-            sym(buf, c, r) == "×"
-                && buf[(c, r)].fg == Color::Reset
-                && c + 3 < chart.x1
-                && sym(buf, c + 2, r) == "P"
-                && sym(buf, c + 3, r) == "D"
-        })
-        .collect();
-    assert_eq!(marks.len(), 1, "one rigid PD mark: {marks:?}\n{s}");
+    // The rigid stop's PD marks: a × (the foreground ink: rigid) with `PD` beside it; the period-1
+    // branch's is the first, the doubled branch's (born there, at a larger Γ) the second.
+    let marks = rigid_pd_marks(buf, &chart);
+    assert_eq!(marks.len(), 2, "two rigid PD marks: {marks:?}\n{s}");
     let (col, row) = marks[0];
     // Read through the ticks: within one cell (the chart's resolution) of continuation's value.
     let read = value_at(&chart.xs, f64::from(col));
