@@ -200,8 +200,8 @@ fn ball_continued_over_the_docs_range() -> App {
 }
 
 /// `hertz-tui continue --doubled` over the same range (docs/continuation.md §5): the doubled
-/// branch's period doubling (Γ, v_in of its first impact) and its points (Γ, v_in of each impact).
-fn cli_doubled() -> ((f64, f64), Vec<(f64, Vec<f64>)>) {
+/// branch's period doubling, Γ and the v_in of its first impact.
+fn cli_doubled() -> (f64, f64) {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
         .args([
             "continue",
@@ -227,30 +227,17 @@ fn cli_doubled() -> ((f64, f64), Vec<(f64, Vec<f64>)>) {
         String::from_utf8_lossy(&out.stderr)
     );
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let doubled = &json["results"][0]["doubled"];
-    let v_in = |p: &serde_json::Value| -> Vec<f64> {
-        p["points"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|q| q["v_in"].as_f64().unwrap())
-            .collect()
-    };
-    let pd = doubled["specials"]
+    let pd = json["results"][0]["doubled"]["specials"]
         .as_array()
         .unwrap()
         .iter()
         .find(|s| s["kind"] == "period-doubling")
         .expect("the doubled branch doubles again");
     let point = &pd["point"];
-    let at = (point["values"][0].as_f64().unwrap(), v_in(point)[0]);
-    let points = doubled["points"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|p| (p["values"][0].as_f64().unwrap(), v_in(p)))
-        .collect();
-    (at, points)
+    (
+        point["values"][0].as_f64().unwrap(),
+        point["points"][0]["v_in"].as_f64().unwrap(),
+    )
 }
 
 /// The rigid stop's marks `× PD` in the chart: (column, row), left to right.
@@ -272,7 +259,7 @@ fn rigid_pd_marks(buf: &Buffer, chart: &Found) -> Vec<(u16, u16)> {
 #[test]
 fn the_doubled_branch_is_switched_onto_and_its_period_doubling_reads_the_cli_value() {
     let app = ball_continued_over_the_docs_range();
-    let ((x_cli, v_cli), _) = cli_doubled();
+    let (x_cli, v_cli) = cli_doubled();
     // `continue --doubled` gives the doubled branch's own doubling (docs/continuation.md §5).
     assert!((x_cli - 1.6671307).abs() < 1e-6, "{x_cli}");
     let data = app.studies.continuation().unwrap().clone();
