@@ -171,6 +171,9 @@ pub struct Branch {
     /// The parameters' scales.
     #[serde(skip)]
     pub(crate) scales: Vec<f64>,
+    /// A compliant branch's stroboscopic section, its forcing phase in rad.
+    #[serde(skip)]
+    pub(crate) section: f64,
 }
 
 impl Branch {
