@@ -27,6 +27,9 @@ use super::problem::{Approach, Monitors, OrbitProblem, model_at};
 /// Stops built for recent parameter values: a Jacobian's columns in the unknowns share one.
 const CACHED: usize = 4;
 
+/// The smallest step of the multipliers' differences, scaled (at a grazing itself).
+const MIN_STEP: f64 = 1e-9;
+
 /// Samples per flight when the section is chosen.
 const SECTION_SAMPLES: usize = 256;
 
@@ -117,6 +120,20 @@ impl CompliantProblem {
         journey(stop, (t0, x, v), t0 + duration, false)
     }
 
+    /// The approaches of an orbit, their phases from the section.
+    fn approaches_of(&self, stop: &CompliantStop, path: &Journey) -> Vec<Approach> {
+        let (t0, _) = self.times(stop);
+        let omega = stop.plant.omega();
+        path.clearances
+            .iter()
+            .map(|c| Approach {
+                phase: omega * (c.t - t0),
+                stop: c.stop,
+                clearance: c.value,
+            })
+            .collect()
+    }
+
     /// The scaled time-mT map.
     fn map(&self, stop: &CompliantStop, y: &[f64]) -> Result<[f64; 2], ContinuationError> {
         let end = self.orbit(stop, y)?.end;
@@ -125,8 +142,15 @@ impl CompliantProblem {
 
     /// The map's Jacobian by central differences at steps h and h/2, combined by Richardson's
     /// extrapolation (4·D(h/2) − D(h))/3, h = rtol^(1/5)/2π in the scaled unknowns: the step
-    /// the compliant `orbit` takes for its multipliers (docs/compliant.md §4).
-    fn jacobian(&self, stop: &CompliantStop, y: &[f64]) -> Result<Matrix2<f64>, ContinuationError> {
+    /// the compliant `orbit` takes for its multipliers (docs/compliant.md §4). Near grazing the
+    /// step is cut to a tenth of the orbit's smallest clearance (over the length scale), so that
+    /// the differences are the map's on this side of the grazing, not a chord across it.
+    fn jacobian(
+        &self,
+        stop: &CompliantStop,
+        y: &[f64],
+        closest: f64,
+    ) -> Result<Matrix2<f64>, ContinuationError> {
         let difference = |h: f64| -> Result<Matrix2<f64>, ContinuationError> {
             let mut j = Matrix2::zeros();
             for col in 0..2 {
@@ -140,7 +164,9 @@ impl CompliantProblem {
             }
             Ok(j)
         };
-        let h = stop.options.rtol.powf(0.2) / TAU;
+        let h = (stop.options.rtol.powf(0.2) / TAU)
+            .min(0.1 * closest / self.length())
+            .max(MIN_STEP);
         Ok((4.0 * difference(0.5 * h)? - difference(h)?) / 3.0)
     }
 }
@@ -233,19 +259,14 @@ impl OrbitProblem for CompliantProblem {
     fn monitors(&self, y: &[f64], lambda: &[f64]) -> Result<Monitors, ContinuationError> {
         let stop = self.stop_at(lambda)?;
         let path = self.orbit(&stop, y)?;
-        let j = self.jacobian(&stop, y)?;
-        let jacobian = [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]];
-        let (t0, _) = self.times(&stop);
-        let omega = stop.plant.omega();
-        let approaches: Vec<Approach> = path
+        let approaches = self.approaches_of(&stop, &path);
+        let closest = path
             .clearances
             .iter()
-            .map(|c| Approach {
-                phase: omega * (c.t - t0),
-                stop: c.stop,
-                clearance: c.value,
-            })
-            .collect();
+            .map(|c| c.value.abs())
+            .fold(f64::INFINITY, f64::min);
+        let j = self.jacobian(&stop, y, closest)?;
+        let jacobian = [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]];
         let min_gap = approaches
             .iter()
             .filter(|a| a.clearance >= 0.0)
@@ -266,6 +287,8 @@ impl OrbitProblem for CompliantProblem {
     }
 
     fn tolerance(&self) -> f64 {
+        // Tighter (1e-10) and Newton no longer converges within the stiff stop's last few
+        // micrometres per second of impact speed before grazing.
         1e-9
     }
 
@@ -279,6 +302,16 @@ impl OrbitProblem for CompliantProblem {
 
     fn section(&self) -> Option<f64> {
         Some(self.section)
+    }
+
+    fn approaches(
+        &self,
+        y: &[f64],
+        lambda: &[f64],
+    ) -> Result<Option<Vec<Approach>>, ContinuationError> {
+        let stop = self.stop_at(lambda)?;
+        let path = self.orbit(&stop, y)?;
+        Ok(Some(self.approaches_of(&stop, &path)))
     }
 
     fn doubled(

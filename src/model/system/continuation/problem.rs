@@ -96,6 +96,15 @@ pub(crate) trait OrbitProblem {
     fn scales(&self) -> (f64, f64);
     /// Forcing periods and the stops of the orbit's impacts.
     fn signature(&self) -> (u32, Vec<usize>);
+    /// A compliant orbit's approaches to the stops alone (without the Jacobian's cost); None for
+    /// a problem that has none.
+    fn approaches(
+        &self,
+        _y: &[f64],
+        _lambda: &[f64],
+    ) -> Result<Option<Vec<Approach>>, ContinuationError> {
+        Ok(None)
+    }
     /// The forcing phase of a stroboscopic section, rad (None: sectioned at the impacts).
     fn section(&self) -> Option<f64> {
         None

@@ -85,13 +85,18 @@ pub(crate) fn curve_test(
     index: usize,
 ) -> Option<f64> {
     match &m.approaches {
-        Some(approaches) if kind.is_grazing() => approaches
-            .iter()
-            .map(|a| a.clearance)
-            .min_by(|a, b| a.abs().total_cmp(&b.abs()))
-            .map(|c| c / scales.1),
+        Some(approaches) if kind.is_grazing() => nearest_surface(approaches, scales),
         _ => test_value(kind, m, scales, Some(index)),
     }
+}
+
+/// The clearance, over the length scale, of the approach nearest a stop's surface.
+fn nearest_surface(approaches: &[Approach], scales: (f64, f64)) -> Option<f64> {
+    approaches
+        .iter()
+        .map(|a| a.clearance)
+        .min_by(|a, b| a.abs().total_cmp(&b.abs()))
+        .map(|c| c / scales.1)
 }
 
 /// The approach of `m` to `stop` nearest in phase to `phase` on the orbit's circle of `span`
@@ -143,13 +148,20 @@ impl Equations for Augmented<'_> {
         let (y, lambda) = self.split(z);
         let mut r = self.problem.residual(&y, &lambda)?;
         if let Some((kind, index)) = self.test {
-            let m = self.problem.monitors(&y, &lambda)?;
-            let value = curve_test(kind, &m, self.problem.scales(), index).ok_or(
-                ContinuationError::NoSuchPoint(format!(
-                    "the {} test function has no value here",
-                    kind.label()
-                )),
-            )?;
+            let scales = self.problem.scales();
+            let approaches = if kind.is_grazing() {
+                self.problem.approaches(&y, &lambda)?
+            } else {
+                None
+            };
+            let value = match approaches {
+                Some(approaches) => nearest_surface(&approaches, scales),
+                None => curve_test(kind, &self.problem.monitors(&y, &lambda)?, scales, index),
+            }
+            .ok_or(ContinuationError::NoSuchPoint(format!(
+                "the {} test function has no value here",
+                kind.label()
+            )))?;
             r.push(value);
         }
         Ok(DVector::from_vec(r))
