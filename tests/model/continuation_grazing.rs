@@ -14,8 +14,8 @@ use hertz_tui::model::system::continuation::{
     Branch, BranchEnd, ContinuationOptions, SpecialKind, continue_orbit, continue_special,
 };
 use hertz_tui::model::system::{
-    CompliantDamping, Contact, Damping, Forcing, OrbitGuess, Param, RunOptions, SystemKey,
-    State, SystemKind, SystemModel, SystemSpec, simulate,
+    CompliantDamping, Contact, Damping, Forcing, OrbitGuess, Param, RunOptions, State, SystemKey,
+    SystemKind, SystemModel, SystemSpec, simulate,
 };
 
 const E: f64 = 0.8;

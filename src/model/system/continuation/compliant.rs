@@ -100,10 +100,7 @@ impl CompliantProblem {
     /// The section's time at λ, s, and the orbit's duration mT.
     fn times(&self, stop: &CompliantStop) -> (f64, f64) {
         let omega = stop.plant.omega();
-        (
-            self.section / omega,
-            f64::from(self.cycles) * TAU / omega,
-        )
+        (self.section / omega, f64::from(self.cycles) * TAU / omega)
     }
 
     /// The motion over one orbit from the scaled state y at the section.
@@ -231,7 +228,9 @@ pub(crate) fn section_of(
         }
     }
     let (t_s, _) = best.ok_or_else(|| {
-        ContinuationError::Unsupported("the compliant orbit has no flight to put a section in".into())
+        ContinuationError::Unsupported(
+            "the compliant orbit has no flight to put a section in".into(),
+        )
     })?;
     let flight = path
         .flights

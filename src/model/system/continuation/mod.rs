@@ -3,9 +3,9 @@
 //! A periodic orbit of fixed impacts (n impacts on given stops in m forcing periods) is a zero of
 //! a residual in scaled unknowns: for the rigid stop, multiple shooting over the closed-form
 //! flights (each impact's phase and the velocity after it); for the compliant stop, shooting
-//! through its solver on a stroboscopic section (the state at a fixed forcing phase). Pseudo-arclength continuation follows
-//! that zero in one scene key ([`continue_orbit`]), with the orbit's Floquet multipliers at
-//! every point, and locates by their test functions:
+//! through its solver on a stroboscopic section (the state at a fixed forcing phase).
+//! Pseudo-arclength continuation follows that zero in one scene key ([`continue_orbit`]), with
+//! the orbit's Floquet multipliers at every point, and locates by their test functions:
 //! - folds, det(J − I) = 0 (a multiplier +1);
 //! - period doublings, det(J + I) = 0 (a multiplier −1); [`switch_at_period_doubling`] follows
 //!   the doubled branch born there;
