@@ -107,10 +107,10 @@ fn measure_all(builds: &[Build], samples: usize, dir: &Path) -> Result<(), Strin
          (median, p99); frames per key (median, range); bytes per key (median: all frames, first)"
     );
     println!(
-        "CPU µs per key (median: the UI thread, the other threads); minor page faults per key (mean)"
+        "CPU µs per key (the UI thread: median and mean; the other threads: median); minor page faults per key (mean)"
     );
     println!(
-        "{:<8} {:<8} {:>6} {:>6} {:>6}   {:>6} {:>6}   {:<9}  {:>6} {:>6}   {:>6} {:>6} {:>6}",
+        "{:<8} {:<8} {:>6} {:>6} {:>6}   {:>6} {:>6}   {:<9}  {:>6} {:>6}   {:>6} {:>6} {:>6} {:>6}",
         "size",
         "build",
         "last",
@@ -122,6 +122,7 @@ fn measure_all(builds: &[Build], samples: usize, dir: &Path) -> Result<(), Strin
         "bytes",
         "first",
         "ui µs",
+        "mean",
         "others",
         "faults"
     );
@@ -202,9 +203,11 @@ fn print_row(width: u16, height: u16, label: &str, answers: &[Answer]) {
     let last = sorted(Answer::latency_ms);
     let first = sorted(Answer::first_ms);
     let frames = sorted(|a| a.frames as f64);
-    let faults = answers.iter().map(|a| a.cost.faults as f64).sum::<f64>() / answers.len() as f64;
+    let mean =
+        |value: fn(&Answer) -> f64| answers.iter().map(value).sum::<f64>() / answers.len() as f64;
+    let faults = mean(|a| a.cost.faults as f64);
     println!(
-        "{:<8} {:<8} {:>6.2} {:>6.2} {:>6.2}   {:>6.2} {:>6.2}   {:>2} ({}–{})  {:>6.0} {:>6.0}   {:>6.0} {:>6.0} {:>6.1}",
+        "{:<8} {:<8} {:>6.2} {:>6.2} {:>6.2}   {:>6.2} {:>6.2}   {:>2} ({}–{})  {:>6.0} {:>6.0}   {:>6.0} {:>6.0} {:>6.0} {:>6.1}",
         format!("{width}x{height}"),
         label,
         percentile(&last, 0.5),
@@ -218,6 +221,7 @@ fn print_row(width: u16, height: u16, label: &str, answers: &[Answer]) {
         percentile(&sorted(|a| a.bytes as f64), 0.5),
         percentile(&sorted(|a| a.first_bytes as f64), 0.5),
         percentile(&sorted(|a| a.cost.ui_ns as f64 / 1e3), 0.5),
+        mean(|a| a.cost.ui_ns as f64 / 1e3),
         percentile(&sorted(|a| a.cost.others_ns as f64 / 1e3), 0.5),
         faults,
     );
