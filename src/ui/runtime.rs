@@ -25,6 +25,7 @@ use std::time::{Duration, Instant};
 
 use color_eyre::eyre::{WrapErr, eyre};
 use ratatui::backend::CrosstermBackend;
+use ratatui::crossterm::cursor::Show;
 use ratatui::crossterm::event::{
     self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
 };
@@ -93,12 +94,15 @@ pub fn event_loop(terminal: &mut DefaultTerminal, app: App) -> color_eyre::Resul
     result
 }
 
-/// Turns mouse capture and bracketed paste off (harmless when they are off already).
+/// Turns mouse capture and bracketed paste off and shows the cursor again (harmless when they
+/// are so already). The cursor is hidden by the frames, whose terminal's own restoring of it on
+/// drop would only join its held bytes, never sent.
 pub fn release_terminal_modes() {
     let _ = execute!(
         std::io::stdout(),
         DisableMouseCapture,
-        DisableBracketedPaste
+        DisableBracketedPaste,
+        Show
     );
 }
 
