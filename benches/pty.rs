@@ -10,6 +10,11 @@
 //! causes several frames; their bytes are counted together. Then 200 keys are written at once: the
 //! frames drawn until the output settles and the time to settle.
 //!
+//! Beside the times, what a key costs the binary whatever else the machine runs: the CPU time of
+//! its threads from the key to the settled output (the kernel's per-thread run time, in
+//! `/proc/<pid>/task/<tid>/schedstat`: the UI thread, the one with the process's id, apart from
+//! the solver and input threads), and its minor page faults (`/proc/<pid>/stat`).
+//!
 //! `HERTZ_TUI_BASELINE=<path of another hertz-tui build>` measures that build too, its sessions
 //! open beside this build's and the keys alternating between them, so both see the same machine.
 //! `HERTZ_PTY_SAMPLES` sets the keys per size and build (default 200).
@@ -102,8 +107,24 @@ fn measure_all(builds: &[Build], samples: usize, dir: &Path) -> Result<(), Strin
          (median, p99); frames per key (median, range); bytes per key (median: all frames, first)"
     );
     println!(
-        "{:<8} {:<8} {:>6} {:>6} {:>6}   {:>6} {:>6}   {:<9}  {:>6} {:>6}",
-        "size", "build", "last", "p99", "max", "first", "p99", "frames", "bytes", "first"
+        "CPU µs per key (the UI thread: median and mean; the other threads: median); minor page faults per key (mean)"
+    );
+    println!(
+        "{:<8} {:<8} {:>6} {:>6} {:>6}   {:>6} {:>6}   {:<9}  {:>6} {:>6}   {:>6} {:>6} {:>6} {:>6}",
+        "size",
+        "build",
+        "last",
+        "p99",
+        "max",
+        "first",
+        "p99",
+        "frames",
+        "bytes",
+        "first",
+        "ui µs",
+        "mean",
+        "others",
+        "faults"
     );
     let mut bursts = Vec::new();
     for (width, height) in SIZES {
@@ -182,8 +203,11 @@ fn print_row(width: u16, height: u16, label: &str, answers: &[Answer]) {
     let last = sorted(Answer::latency_ms);
     let first = sorted(Answer::first_ms);
     let frames = sorted(|a| a.frames as f64);
+    let mean =
+        |value: fn(&Answer) -> f64| answers.iter().map(value).sum::<f64>() / answers.len() as f64;
+    let faults = mean(|a| a.cost.faults as f64);
     println!(
-        "{:<8} {:<8} {:>6.2} {:>6.2} {:>6.2}   {:>6.2} {:>6.2}   {:>2} ({}–{})  {:>6.0} {:>6.0}",
+        "{:<8} {:<8} {:>6.2} {:>6.2} {:>6.2}   {:>6.2} {:>6.2}   {:>2} ({}–{})  {:>6.0} {:>6.0}   {:>6.0} {:>6.0} {:>6.0} {:>6.1}",
         format!("{width}x{height}"),
         label,
         percentile(&last, 0.5),
@@ -196,6 +220,10 @@ fn print_row(width: u16, height: u16, label: &str, answers: &[Answer]) {
         frames[frames.len() - 1],
         percentile(&sorted(|a| a.bytes as f64), 0.5),
         percentile(&sorted(|a| a.first_bytes as f64), 0.5),
+        percentile(&sorted(|a| a.cost.ui_ns as f64 / 1e3), 0.5),
+        mean(|a| a.cost.ui_ns as f64 / 1e3),
+        percentile(&sorted(|a| a.cost.others_ns as f64 / 1e3), 0.5),
+        faults,
     );
 }
 
@@ -222,6 +250,61 @@ struct Answer {
     bytes: usize,
     /// The bytes up to the first frame's end.
     first_bytes: usize,
+    /// What the binary spent on it.
+    cost: Cost,
+}
+
+/// CPU time and page faults of a process, or their growth over a key.
+#[derive(Clone, Copy, Default)]
+struct Cost {
+    /// Run time of the thread whose id is the process's (the event loop's), in ns.
+    ui_ns: u64,
+    /// Run time of its other threads (solvers, input), in ns.
+    others_ns: u64,
+    /// Minor page faults of the whole process.
+    faults: u64,
+}
+
+impl Cost {
+    /// What process `pid` has spent so far (zero where /proc cannot say: the bench still runs).
+    fn of(pid: u32) -> Cost {
+        let mut cost = Cost::default();
+        if let Ok(tasks) = std::fs::read_dir(format!("/proc/{pid}/task")) {
+            for task in tasks.flatten() {
+                let Ok(stat) = std::fs::read_to_string(task.path().join("schedstat")) else {
+                    continue;
+                };
+                let ns: u64 = stat
+                    .split_whitespace()
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .unwrap_or(0);
+                if task.file_name().to_str() == Some(&pid.to_string()) {
+                    cost.ui_ns += ns;
+                } else {
+                    cost.others_ns += ns;
+                }
+            }
+        }
+        // Field 10 of stat is minflt; the command name (field 2) may hold spaces, so count from
+        // its closing parenthesis.
+        cost.faults = std::fs::read_to_string(format!("/proc/{pid}/stat"))
+            .ok()
+            .and_then(|s| {
+                let rest = &s[s.rfind(')')? + 1..];
+                rest.split_whitespace().nth(7)?.parse().ok()
+            })
+            .unwrap_or(0);
+        cost
+    }
+
+    fn since(self, before: Cost) -> Cost {
+        Cost {
+            ui_ns: self.ui_ns.saturating_sub(before.ui_ns),
+            others_ns: self.others_ns.saturating_sub(before.others_ns),
+            faults: self.faults.saturating_sub(before.faults),
+        }
+    }
 }
 
 impl Answer {
@@ -320,12 +403,16 @@ impl Session {
     }
 
     /// Writes `keys`, then reads until the frames they cause have settled.
+    /// Also what the binary spent on them, from just before the write until it settled.
     fn key(&mut self, keys: &[u8]) -> Result<Answer, String> {
+        let before = Cost::of(self.child.id());
         let start = Instant::now();
         self.master
             .write_all(keys)
             .map_err(|e| format!("{}: cannot write a key: {e}", self.label))?;
-        self.settle(start, QUIET)
+        let mut answer = self.settle(start, QUIET)?;
+        answer.cost = Cost::of(self.child.id()).since(before);
+        Ok(answer)
     }
 
     /// Reads until at least one frame has ended and nothing more came for `quiet`.

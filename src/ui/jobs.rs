@@ -3,7 +3,9 @@
 //! ladder never delays a solve; the solves are served by two threads, so that an edit's laws are
 //! solved on both cores). A job belongs to a slot (a model, a kind of study); a newer job of the
 //! same slot supersedes a queued one, and the running one may stop early: it polls whether
-//! [`Jobs::submit`] has recorded a newer generation for its slot since.
+//! [`Jobs::submit`] has recorded a newer generation for its slot since. A queue may also say when
+//! it falls idle (nothing queued, nothing running) after its reports, so that a listener can wait
+//! for a whole batch with one wake-up rather than one per report.
 
 use std::any::Any;
 use std::collections::HashMap;
@@ -54,6 +56,8 @@ struct Shared<J: Background> {
 struct State<J: Background> {
     /// Jobs not yet started.
     queue: Vec<J>,
+    /// Jobs started and not yet reported.
+    running: usize,
     /// The generation of the latest request of every slot.
     latest: HashMap<J::Slot, u64>,
     /// False once the handle is dropped, nobody listens or a job panicked: the threads end.
@@ -65,6 +69,7 @@ impl<J: Background> Shared<J> {
         Shared {
             state: Mutex::new(State {
                 queue: Vec::new(),
+                running: 0,
                 latest: HashMap::new(),
                 open: true,
             }),
@@ -85,6 +90,7 @@ impl<J: Background> Shared<J> {
                 return None;
             }
             if let Some(job) = take_next(&mut state.queue) {
+                state.running += 1;
                 return Some(job);
             }
             state = self
@@ -100,6 +106,13 @@ impl<J: Background> Shared<J> {
             .latest
             .get(&slot)
             .is_some_and(|&newest| newest != generation)
+    }
+
+    /// A started job has reported (or ended without a report): whether the queue is now idle.
+    fn finished(&self) -> bool {
+        let mut state = self.lock();
+        state.running = state.running.saturating_sub(1);
+        state.queue.is_empty() && state.running == 0
     }
 
     fn close(&self) {
@@ -121,13 +134,26 @@ impl<J: Background> Jobs<J> {
         threads: usize,
         deliver: impl Fn(Report<J::Outcome>) -> bool + Send + Sync + 'static,
     ) -> std::io::Result<Jobs<J>> {
+        Jobs::spawn_with_idle(name, threads, deliver, || {})
+    }
+
+    /// [`Jobs::spawn`], and `idle` is called whenever the queue falls idle: every job submitted
+    /// so far has been delivered (or superseded), none is queued or running.
+    pub fn spawn_with_idle(
+        name: &str,
+        threads: usize,
+        deliver: impl Fn(Report<J::Outcome>) -> bool + Send + Sync + 'static,
+        idle: impl Fn() + Send + Sync + 'static,
+    ) -> std::io::Result<Jobs<J>> {
         let shared = Arc::new(Shared::new());
         let deliver = Arc::new(deliver);
+        let idle = Arc::new(idle);
         for _ in 0..threads.max(1) {
-            let (ours, deliver) = (Arc::clone(&shared), Arc::clone(&deliver));
+            let (ours, deliver, idle) =
+                (Arc::clone(&shared), Arc::clone(&deliver), Arc::clone(&idle));
             let started = thread::Builder::new()
                 .name(name.into())
-                .spawn(move || serve(&ours, deliver.as_ref()));
+                .spawn(move || serve(&ours, deliver.as_ref(), idle.as_ref()));
             if let Err(e) = started {
                 shared.close();
                 return Err(e);
@@ -138,14 +164,29 @@ impl<J: Background> Jobs<J> {
 
     /// Queues a job and marks older jobs of its slot as superseded; false if the threads stopped.
     pub fn submit(&self, job: J) -> bool {
+        self.submit_all([job])
+    }
+
+    /// [`Jobs::submit`] for every job of `jobs`, queued together: one lock and one wake-up of
+    /// the threads for an edit's laws, not one each (a wake-up is a system call, and a thread
+    /// woken by the first job would contend for the lock with the queuing of the rest).
+    pub fn submit_all(&self, jobs: impl IntoIterator<Item = J>) -> bool {
         let mut state = self.shared.lock();
         if !state.open {
             return false;
         }
-        state.latest.insert(job.slot(), job.generation());
-        supersede(&mut state.queue, job);
+        let mut queued = 0;
+        for job in jobs {
+            state.latest.insert(job.slot(), job.generation());
+            supersede(&mut state.queue, job);
+            queued += 1;
+        }
         drop(state);
-        self.shared.changed.notify_one();
+        match queued {
+            0 => {}
+            1 => self.shared.changed.notify_one(),
+            _ => self.shared.changed.notify_all(),
+        }
         true
     }
 }
@@ -156,8 +197,14 @@ impl<J: Background> Drop for Jobs<J> {
     }
 }
 
-/// Runs the queue's jobs until it closes; closes it when a job panics or nobody listens.
-fn serve<J: Background>(shared: &Shared<J>, deliver: &dyn Fn(Report<J::Outcome>) -> bool) {
+/// Runs the queue's jobs until it closes; closes it when a job panics or nobody listens. A job's
+/// report is delivered before the job counts as finished, so when `idle` is called every report
+/// of the jobs before it has been delivered, by whichever thread.
+fn serve<J: Background>(
+    shared: &Shared<J>,
+    deliver: &dyn Fn(Report<J::Outcome>) -> bool,
+    idle: &dyn Fn(),
+) {
     while let Some(job) = shared.next() {
         let (slot, generation) = (job.slot(), job.generation());
         let stop = || shared.is_superseded(slot, generation);
@@ -176,6 +223,9 @@ fn serve<J: Background>(shared: &Shared<J>, deliver: &dyn Fn(Report<J::Outcome>)
         if !delivered || panicked {
             shared.close();
             return;
+        }
+        if shared.finished() {
+            idle();
         }
     }
 }
@@ -303,10 +353,14 @@ mod tests {
             state.queue.extend([probe(1, 0, 0), probe(3, 1, 0)]);
         }
         let reports = Mutex::new(Vec::new());
-        serve(&shared, &|r| {
-            reports.lock().unwrap().push(r);
-            false
-        });
+        serve(
+            &shared,
+            &|r| {
+                reports.lock().unwrap().push(r);
+                false
+            },
+            &|| {},
+        );
         assert_eq!(*reports.lock().unwrap(), [Ok(3)]);
         assert!(!shared.lock().open, "closed: nobody listens");
 
@@ -317,6 +371,31 @@ mod tests {
         assert_eq!(rx.recv().unwrap(), Ok(4));
         drop(queue);
         assert!(rx.recv().is_err(), "the threads ended");
+    }
+
+    #[test]
+    fn idle_is_said_once_the_last_queued_job_has_reported() {
+        // Served on this thread: three jobs queued at once report one by one, and the queue says
+        // it is idle once, after the third (the listener's one wake-up for the batch).
+        let shared = Shared::new();
+        shared
+            .lock()
+            .queue
+            .extend([probe(1, 0, 0), probe(2, 1, 0), probe(3, 2, 0)]);
+        let heard = Mutex::new(Vec::new());
+        serve(
+            &shared,
+            &|r| {
+                heard.lock().unwrap().push(format!("{r:?}"));
+                true
+            },
+            &|| {
+                heard.lock().unwrap().push("idle".into());
+                shared.close();
+            },
+        );
+        assert_eq!(*heard.lock().unwrap(), ["Ok(1)", "Ok(2)", "Ok(3)", "idle"]);
+        assert_eq!(shared.lock().running, 0);
     }
 
     #[test]
@@ -331,6 +410,20 @@ mod tests {
         assert_eq!(rx.recv().unwrap(), Ok(3));
         GO.store(true, std::sync::atomic::Ordering::SeqCst);
         assert_eq!(rx.recv().unwrap(), Ok(1));
+    }
+
+    #[test]
+    fn a_batch_is_queued_whole_so_its_own_stale_jobs_never_run() {
+        // Generation 1 and 2 of slot 0 in one batch: no thread can take 1 before 2 replaces it.
+        let (tx, rx) = mpsc::channel();
+        let queue = Jobs::spawn("test-jobs", 2, move |report| tx.send(report).is_ok()).unwrap();
+        assert!(queue.submit_all([probe(1, 0, 0), probe(2, 0, 0), probe(3, 1, 0)]));
+        let mut reports: Vec<Report<u64>> = (0..2).map(|_| rx.recv().unwrap()).collect();
+        reports.sort();
+        assert_eq!(reports, [Ok(2), Ok(3)]);
+        assert!(queue.submit_all([]), "an empty batch queues nothing");
+        drop(queue);
+        assert!(rx.recv().is_err(), "nothing more was reported");
     }
 
     #[test]

@@ -8,23 +8,31 @@
 //! drawn once. The loop never waits for keys that may come; it waits only for the solves a key
 //! has started, which take well under a millisecond for every law of the table, so that the key
 //! and its results are one frame, not a frame of "computing" marks and another soon after; a
-//! slower solve is drawn as computing [`SOLVE_WAIT`] after the key and again when it reports. Each frame is wrapped in synchronized
-//! output (terminals that support it show it at once; others ignore the sequence). Bracketed
-//! paste is on, so that pasted text arrives as one paste and never as keys; mouse capture follows
-//! the app's `m` toggle.
+//! slower solve is drawn as computing [`SOLVE_WAIT`] after the key and again when it reports.
+//! While it waits, the solvers' reports collect in an inbox and wake the loop once, when the
+//! last of them is in (not once a report). Each frame is wrapped in synchronized output
+//! (terminals that support it show it at once; others ignore the sequence) and reaches the
+//! terminal in one write. Bracketed paste is on, so that pasted text arrives as one paste and
+//! never as keys; mouse capture follows the app's `m` toggle.
 
+use std::cell::RefCell;
 use std::io::Write;
+use std::rc::Rc;
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::sync::{Arc, Mutex, PoisonError};
 use std::thread;
 use std::time::{Duration, Instant};
 
 use color_eyre::eyre::{WrapErr, eyre};
+use ratatui::backend::CrosstermBackend;
+use ratatui::crossterm::cursor::Show;
 use ratatui::crossterm::event::{
     self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
 };
-use ratatui::crossterm::execute;
 use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
-use ratatui::{DefaultTerminal, Terminal};
+use ratatui::crossterm::{execute, queue};
+use ratatui::layout::Rect;
+use ratatui::{DefaultTerminal, Terminal, TerminalOptions, Viewport};
 
 use crate::model::study::runner::{StudyJob, StudyOutcome};
 
@@ -40,7 +48,8 @@ use super::update::update;
 enum Wake {
     /// Every terminal event that was waiting when the input thread read (never empty).
     Terminal(Vec<event::Event>),
-    Solver(Report<Outcome>),
+    /// The solvers' inbox has reports.
+    Solver,
     Study(Report<StudyOutcome>),
     InputFailed(String),
 }
@@ -85,30 +94,130 @@ pub fn event_loop(terminal: &mut DefaultTerminal, app: App) -> color_eyre::Resul
     result
 }
 
-/// Turns mouse capture and bracketed paste off (harmless when they are off already).
+/// Turns mouse capture and bracketed paste off and shows the cursor again (harmless when they
+/// are so already). The cursor is hidden by the frames, whose terminal's own restoring of it on
+/// drop would only join its held bytes, never sent.
 pub fn release_terminal_modes() {
     let _ = execute!(
         std::io::stdout(),
         DisableMouseCapture,
-        DisableBracketedPaste
+        DisableBracketedPaste,
+        Show
     );
 }
 
-/// Draws one frame inside a synchronized update, so the terminal shows it whole.
-pub fn draw_synchronized<B>(
-    terminal: &mut Terminal<B>,
-    writer: &mut impl Write,
+/// A frame's bytes, held until the frame is whole. ratatui writes a frame's cells as many small
+/// commands and flushes its backend after them; through the standard output (a line writer of
+/// 1 KiB) that was a write a kilobyte, and the synchronized update's begin, the cursor's hiding
+/// and the update's end a write each: about ten writes a frame at 160×48. Here flushing keeps
+/// the bytes, and [`FrameWriter::send`] writes them at once. Clones share the bytes: the
+/// terminal's backend writes through one, the loop sends through another.
+#[derive(Debug, Default, Clone)]
+pub struct FrameWriter {
+    bytes: Rc<RefCell<Vec<u8>>>,
+}
+
+impl Write for FrameWriter {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.bytes.borrow_mut().extend_from_slice(buf);
+        Ok(buf.len())
+    }
+
+    /// Keeps the bytes: the frame is not whole yet.
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl FrameWriter {
+    /// Writes the held bytes to `out` in one write and flushes it; holds nothing after.
+    pub fn send(&self, out: &mut impl Write) -> std::io::Result<()> {
+        let mut bytes = self.bytes.borrow_mut();
+        out.write_all(&bytes)?;
+        bytes.clear();
+        out.flush()
+    }
+}
+
+/// The terminal frames are drawn through: its writes held by a [`FrameWriter`], its size the
+/// app's screen (set from the terminal's resize events), so a frame neither asks the terminal
+/// for its size (crossterm opens `/dev/tty` and closes it again for that) nor writes in pieces.
+pub struct Frames {
+    terminal: Terminal<CrosstermBackend<FrameWriter>>,
+    held: FrameWriter,
+}
+
+impl Frames {
+    /// Frames of `width` × `height` cells until the app's screen says otherwise.
+    pub fn new(width: u16, height: u16) -> std::io::Result<Frames> {
+        let held = FrameWriter::default();
+        let terminal = Terminal::with_options(
+            CrosstermBackend::new(held.clone()),
+            TerminalOptions {
+                viewport: Viewport::Fixed(Rect::new(0, 0, width, height)),
+            },
+        )?;
+        Ok(Frames { terminal, held })
+    }
+
+    /// The area frames are drawn in.
+    pub fn area(&mut self) -> Rect {
+        self.terminal.get_frame().area()
+    }
+}
+
+/// Draws one frame inside a synchronized update, so the terminal shows it whole, at the app's
+/// screen size (resized first, and so cleared, where that changed), and writes it to `out` at
+/// once.
+pub fn draw_synchronized(
+    frames: &mut Frames,
+    out: &mut impl Write,
     app: &App,
-) -> color_eyre::Result<()>
-where
-    B: ratatui::backend::Backend,
-    B::Error: Send + Sync + 'static,
-{
-    execute!(writer, BeginSynchronizedUpdate)?;
-    let drawn = terminal.draw(|frame| render::draw(frame, app));
-    execute!(writer, EndSynchronizedUpdate)?;
+) -> color_eyre::Result<()> {
+    queue!(frames.held, BeginSynchronizedUpdate)?;
+    let screen = Rect::new(0, 0, app.screen.0, app.screen.1);
+    if frames.area() != screen {
+        frames.terminal.resize(screen)?;
+    }
+    let drawn = frames
+        .terminal
+        .draw(|frame| render::draw(frame, app))
+        .map(|_| ());
+    queue!(frames.held, EndSynchronizedUpdate)?;
+    frames.held.send(out)?;
     drawn?;
     Ok(())
+}
+
+/// The solvers' reports not yet handled. While the loop waits for the solves of its keys
+/// (`holding`), a report only joins the inbox and the queue's falling idle wakes the loop, once
+/// for the batch; otherwise (after a frame's deadline, or a solve nobody waits for) each report
+/// wakes it, so a slow solve is drawn when it reports.
+#[derive(Default)]
+struct Inbox {
+    reports: Vec<Report<Outcome>>,
+    holding: bool,
+}
+
+type SharedInbox = Arc<Mutex<Inbox>>;
+
+/// A report held by the inbox is still a whole one after a panic elsewhere.
+fn lock_inbox(shared: &SharedInbox) -> std::sync::MutexGuard<'_, Inbox> {
+    shared.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Adds `report` to the inbox; whether the loop is to be woken for it now.
+fn post(shared: &SharedInbox, report: Report<Outcome>) -> bool {
+    let mut inbox = lock_inbox(shared);
+    inbox.reports.push(report);
+    !inbox.holding
+}
+
+/// The reports in the inbox, taken out, and whether the loop holds reports back from now on.
+fn collect(shared: &SharedInbox, holding: bool) -> Vec<Report<Outcome>> {
+    let mut inbox = lock_inbox(shared);
+    inbox.holding = holding;
+    std::mem::take(&mut inbox.reports)
 }
 
 /// Threads solving an edit's laws: an edit with every law checked is solved on two cores
@@ -134,10 +243,23 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     let mut mouse = false;
     let (events, wakes) = mpsc::channel();
     spawn_input(events.clone()).wrap_err("cannot start the input thread")?;
-    let reports = events.clone();
-    let solves: Jobs<Job> = Jobs::spawn("hertz-solver", SOLVER_THREADS, move |report| {
-        reports.send(Wake::Solver(report)).is_ok()
-    })
+    let inbox = SharedInbox::default();
+    let (posted, reports) = (Arc::clone(&inbox), events.clone());
+    let (idle, waiting_reports) = (Mutex::new(events.clone()), Arc::clone(&inbox));
+    let solves: Jobs<Job> = Jobs::spawn_with_idle(
+        "hertz-solver",
+        SOLVER_THREADS,
+        move |report| !post(&posted, report) || reports.send(Wake::Solver).is_ok(),
+        // The last report of a batch is in: one wake for all of them.
+        move || {
+            if !lock_inbox(&waiting_reports).reports.is_empty() {
+                let _ = idle
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .send(Wake::Solver);
+            }
+        },
+    )
     .wrap_err("cannot start the solver thread")?;
     let study_reports = events.clone();
     let studies: Jobs<StudyJob> = Jobs::spawn("hertz-studies", 1, move |report| {
@@ -148,12 +270,14 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     // The sweep view sizes its sweeps to the chart: the app needs the size before any resize.
     let size = terminal.size().wrap_err("cannot read the terminal size")?;
     update(&mut app, Action::Resize(size.width, size.height));
+    // ratatui's terminal set the screen up; frames go through one of our own on the same output.
+    let mut frames = Frames::new(size.width, size.height).wrap_err("cannot set up the terminal")?;
     let mut due = Instant::now() + SOLVE_WAIT;
+    // Whether anything happened since the last frame.
+    let mut changed = true;
     loop {
-        for job in app.take_jobs() {
-            if !solves.submit(job) {
-                return Err(eyre!("the solver thread stopped"));
-            }
+        if !solves.submit_all(app.take_jobs()) {
+            return Err(eyre!("the solver thread stopped"));
         }
         for job in app.take_studies() {
             if !studies.submit(job) {
@@ -175,16 +299,40 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
         }
         let (first, after_a_frame) =
             match wait_before_drawing(app.solutions.any_pending(), Instant::now(), due) {
-                Some(wait) => match wakes.recv_timeout(wait) {
-                    Ok(wake) => (wake, false),
-                    // The frame is due: drawn, with what is still computing marked so.
-                    Err(RecvTimeoutError::Timeout) => continue,
-                    Err(RecvTimeoutError::Disconnected) => {
-                        return Err(eyre!("the input and solver threads stopped"));
+                Some(wait) => {
+                    // Reports that came meanwhile are handled first; the rest wake the loop once.
+                    let held = collect(&inbox, true);
+                    if !held.is_empty() {
+                        changed = true;
+                        handle_reports(&mut app, held)?;
+                        continue;
                     }
-                },
+                    match wakes.recv_timeout(wait) {
+                        Ok(wake) => (wake, false),
+                        // The frame is due: drawn, with what is still computing marked so.
+                        Err(RecvTimeoutError::Timeout) => {
+                            let held = collect(&inbox, false);
+                            changed = true;
+                            handle_reports(&mut app, held)?;
+                            continue;
+                        }
+                        Err(RecvTimeoutError::Disconnected) => {
+                            return Err(eyre!("the input and solver threads stopped"));
+                        }
+                    }
+                }
                 None => {
-                    draw_synchronized(terminal, &mut std::io::stdout(), &app)?;
+                    // Solves still running after the frame report one by one.
+                    let held = collect(&inbox, false);
+                    if !held.is_empty() {
+                        changed = true;
+                        handle_reports(&mut app, held)?;
+                        continue;
+                    }
+                    if changed {
+                        draw_synchronized(&mut frames, &mut std::io::stdout(), &app)?;
+                        changed = false;
+                    }
                     let wake = wakes
                         .recv()
                         .wrap_err("the input and solver threads stopped")?;
@@ -192,6 +340,9 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
                 }
             };
         for wake in waiting(first, &wakes) {
+            if !matches!(wake, Wake::Solver) {
+                changed = true;
+            }
             match wake {
                 Wake::Terminal(events) => {
                     for e in events {
@@ -204,8 +355,13 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
                         }
                     }
                 }
-                Wake::Solver(Err(message)) => return Err(eyre!(message)),
-                Wake::Solver(report) => update(&mut app, Action::Solved(report)),
+                Wake::Solver => {
+                    let holding = lock_inbox(&inbox).holding;
+                    let reports = collect(&inbox, holding);
+                    // A wake whose reports an earlier collection took changes nothing.
+                    changed |= !reports.is_empty();
+                    handle_reports(&mut app, reports)?;
+                }
                 Wake::Study(Err(message)) => return Err(eyre!(message)),
                 Wake::Study(report) => update(&mut app, Action::Studied(report)),
                 Wake::InputFailed(message) => {
@@ -224,6 +380,17 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     }
 }
 
+/// The solvers' reports, in the order they came; a solver's panic ends the loop.
+fn handle_reports(app: &mut App, reports: Vec<Report<Outcome>>) -> color_eyre::Result<()> {
+    for report in reports {
+        if let Err(message) = report {
+            return Err(eyre!(message));
+        }
+        update(app, Action::Solved(report));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -231,7 +398,6 @@ mod tests {
     use crate::ui::style::MarkerStyle;
     use crate::ui::style::Theme;
     use crate::ui::testing::fig5_scene;
-    use ratatui::backend::TestBackend;
     use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
     fn key(c: char) -> Event {
@@ -261,26 +427,93 @@ mod tests {
         );
     }
 
-    #[test]
-    fn a_frame_is_one_synchronized_update() {
-        let app = App::new(
+    /// Counts the writes it is given.
+    #[derive(Default)]
+    struct Writes {
+        count: usize,
+        bytes: Vec<u8>,
+    }
+
+    impl Write for Writes {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            self.count += 1;
+            self.bytes.extend_from_slice(buf);
+            Ok(buf.len())
+        }
+
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    fn app_of(width: u16, height: u16) -> App {
+        let mut app = App::new(
             fig5_scene(),
             Registry::builtin().unwrap(),
             MarkerStyle::Braille,
             Theme::Plain,
         );
-        let mut terminal = Terminal::new(TestBackend::new(100, 30)).unwrap();
-        let mut out: Vec<u8> = Vec::new();
+        update(&mut app, Action::Resize(width, height));
+        app
+    }
+
+    #[test]
+    fn a_frame_is_one_synchronized_update_in_one_write() {
+        let mut app = app_of(100, 30);
+        let mut terminal = Frames::new(100, 30).unwrap();
+        let mut out = Writes::default();
         draw_synchronized(&mut terminal, &mut out, &app).unwrap();
-        assert_eq!(
-            out, b"\x1b[?2026h\x1b[?2026l",
-            "begin, then end (mode 2026)"
-        );
-        let screen = format!("{:?}", terminal.backend().buffer());
+        assert_eq!(out.count, 1, "the whole frame in one write");
+        let text = String::from_utf8_lossy(&out.bytes).into_owned();
         assert!(
-            screen.contains("explorer"),
+            text.starts_with("\x1b[?2026h"),
+            "begins the update (mode 2026)"
+        );
+        assert!(text.ends_with("\x1b[?2026l"), "ends it");
+        assert!(
+            text.contains("explorer"),
             "the frame was drawn between them"
         );
+
+        // Nothing changed: the next frame writes nothing but the update's marks and the cursor's
+        // hiding, still at once.
+        let mut again = Writes::default();
+        draw_synchronized(&mut terminal, &mut again, &app).unwrap();
+        assert_eq!(again.count, 1);
+        assert!(
+            again.bytes.len() < 64,
+            "{:?}",
+            String::from_utf8_lossy(&again.bytes)
+        );
+
+        // A resize (the app's screen, from the terminal's resize event) redraws the whole screen
+        // at the new size inside the update.
+        update(&mut app, Action::Resize(120, 40));
+        let mut resized = Writes::default();
+        draw_synchronized(&mut terminal, &mut resized, &app).unwrap();
+        assert_eq!(resized.count, 1);
+        assert_eq!(terminal.area(), Rect::new(0, 0, 120, 40));
+        let text = String::from_utf8_lossy(&resized.bytes).into_owned();
+        assert!(text.starts_with("\x1b[?2026h"));
+        assert!(text.contains("explorer"), "redrawn");
+    }
+
+    /// Reports wake the loop one by one unless it holds them for a batch; a collection takes
+    /// every report in and sets whether later ones are held.
+    #[test]
+    fn the_inbox_holds_reports_while_the_loop_waits_for_a_batch() {
+        let shared = SharedInbox::default();
+        let report = |g| -> Report<Outcome> { Err(format!("report {g}")) };
+        assert!(post(&shared, report(1)), "not holding: wake the loop");
+        assert_eq!(collect(&shared, true).len(), 1);
+        assert!(!post(&shared, report(2)), "holding: no wake");
+        assert!(!post(&shared, report(3)));
+        let held: Vec<String> = collect(&shared, false)
+            .into_iter()
+            .filter_map(Result::err)
+            .collect();
+        assert_eq!(held, ["report 2", "report 3"], "in order");
+        assert!(post(&shared, report(4)), "no longer holding");
     }
 
     #[test]
@@ -311,7 +544,7 @@ mod tests {
     fn every_waiting_wake_shares_one_draw() {
         let (send, wakes) = mpsc::channel();
         send.send(key_wake("llllh")).unwrap();
-        send.send(Wake::Solver(Err("a report".into()))).unwrap();
+        send.send(Wake::Solver).unwrap();
         send.send(key_wake("h")).unwrap();
         let first = wakes.recv().unwrap();
         let batch = waiting(first, &wakes);
