@@ -486,9 +486,8 @@ fn a_run_whose_transient_never_ends_says_so_not_that_the_body_does_not_bounce() 
     ];
     let table = ok(&args);
     assert!(
-        table.contains(
-            "proposed: the transient never ended: the run reached --max-periods after "
-        ) && table.contains("of its 500 transient impacts; 0 impacts recorded"),
+        table.contains("proposed: the transient never ended: the run reached --max-periods after ")
+            && table.contains("of its 500 transient impacts; 0 impacts recorded"),
         "{table}"
     );
     assert!(!table.contains("does not bounce"), "{table}");
@@ -519,5 +518,8 @@ fn a_run_whose_transient_never_ends_says_so_not_that_the_body_does_not_bounce() 
         "--format",
         "json",
     ]);
-    assert!(settles["verdict"]["nothing_recorded"].is_null(), "{settles}");
+    assert!(
+        settles["verdict"]["nothing_recorded"].is_null(),
+        "{settles}"
+    );
 }

@@ -69,8 +69,14 @@ fn both_stops_start_from_the_same_rest() {
     let (tr, vr) = first_impact(&rigid);
     let (tc, vc) = first_impact(&compliant);
     // The contact, about 1e-4 s = 0.2 % of a period, delays the compliant release by a part of it.
-    assert!((tc - tr).abs() < 5e-3 * period, "rigid {tr} s, compliant {tc} s");
-    assert!((vc / vr - 1.0).abs() < 0.02, "rigid {vr} m/s, compliant {vc} m/s");
+    assert!(
+        (tc - tr).abs() < 5e-3 * period,
+        "rigid {tr} s, compliant {tc} s"
+    );
+    assert!(
+        (vc / vr - 1.0).abs() < 0.02,
+        "rigid {vr} m/s, compliant {vc} m/s"
+    );
 }
 
 /// One chatter of the run from rest at Γ = 1.3 (its first forcing period and the release after
@@ -91,11 +97,7 @@ fn chatter(model: &SystemModel, contact: &Contact) -> Chatter {
         .filter(|i| i.kind == ImpactKind::Impact && first_period(i.t))
         .map(|i| (i.t, i.v_in))
         .collect();
-    let rest = h
-        .sticks
-        .iter()
-        .find(|s| first_period(s.start))
-        .unwrap();
+    let rest = h.sticks.iter().find(|s| first_period(s.start)).unwrap();
     Chatter {
         impacts,
         rests_at: rest.start,
@@ -149,7 +151,8 @@ fn a_compliant_chatter_converges_to_the_rigid_one_as_the_stop_stiffens() {
 /// The motion of the map cell at (Γ, e = 0.5) from rest, and what its impacts realise.
 fn cell(model: &SystemModel, contact: &Contact) -> map::Cell {
     let options = MapOptions::default();
-    let (motion, lyapunov, contacts, _) = map::cell(model, contact, &options.run, &options).unwrap();
+    let (motion, lyapunov, contacts, _) =
+        map::cell(model, contact, &options.run, &options).unwrap();
     map::Cell {
         ix: 0,
         iy: 0,
@@ -175,7 +178,10 @@ fn chatter_is_one_definition_for_both_stops() {
         period: Some((4, 1)),
     };
     assert_eq!((rigid.motion, compliant.motion), (chattering, chattering));
-    let d = difference(std::slice::from_ref(&rigid), std::slice::from_ref(&compliant));
+    let d = difference(
+        std::slice::from_ref(&rigid),
+        std::slice::from_ref(&compliant),
+    );
     assert_eq!(d[0].agreement, map::Agreement::Same, "{d:?}");
     assert_eq!(d[0].cause, None);
 }
@@ -202,7 +208,10 @@ fn at_gamma_2_the_stops_differ_by_the_laws_e_or_by_a_chatter_orbit_that_stiffnes
     );
     assert_eq!(per_impact.motion, Motion::Chaotic, "{per_impact:?}");
     assert!(per_impact.lyapunov.unwrap() > 0.5, "{per_impact:?}");
-    let d = difference(std::slice::from_ref(&rigid), std::slice::from_ref(&per_impact));
+    let d = difference(
+        std::slice::from_ref(&rigid),
+        std::slice::from_ref(&per_impact),
+    );
     match d[0].cause {
         Some(Cause::Restitution { rigid, compliant }) => {
             assert_eq!(rigid, 0.5);
@@ -217,7 +226,10 @@ fn at_gamma_2_the_stops_differ_by_the_laws_e_or_by_a_chatter_orbit_that_stiffnes
     // contacts (t_c/T ≈ 2e-3) move it among them. At 10⁴ times the steel's stiffness it is on the
     // rigid ball's 16:8.
     let exact = cell(&model, &exact_hc(0.5));
-    assert!(matches!(exact.motion, Motion::Chattering { .. }), "{exact:?}");
+    assert!(
+        matches!(exact.motion, Motion::Chattering { .. }),
+        "{exact:?}"
+    );
     let d = difference(std::slice::from_ref(&rigid), std::slice::from_ref(&exact));
     assert_eq!(d[0].agreement, map::Agreement::Differs);
     assert!(
