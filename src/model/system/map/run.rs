@@ -188,17 +188,17 @@ pub fn contact_at(contact: &Contact, model: &SystemModel) -> Contact {
 /// The run of a cell with its transient and recorded impacts counted as events outside a
 /// chatter's tail (docs/maps.md §2), the same for both stops: a rigid stop resolves a tail of
 /// some twenty impacts where a compliant one makes a few, so counted in impacts a rigid run would
-/// record a few chatters where a compliant one records many. A run whose record holds fewer such
-/// events is run once more with both counts scaled by its impacts per event.
+/// record a few chatters where a compliant one records many. A run whose record holds a tail is
+/// run once more with both counts scaled by its impacts per event.
 fn events_counted(
     model: &SystemModel,
     contact: &Contact,
     run: &RunOptions,
 ) -> Result<History, SystemError> {
     let history = simulate(model, contact, run)?;
-    let (kept, _) = motion::skeleton(&history.impacts, model.spec.period());
+    let (kept, tail) = motion::skeleton(&history.impacts, model.spec.period());
     let recorded = history.impacts.len();
-    if history.end != EndReason::Recorded || kept.is_empty() || kept.len() >= recorded {
+    if !tail || history.end != EndReason::Recorded || kept.is_empty() {
         return Ok(history);
     }
     let scale = |n: usize| (n as f64 * recorded as f64 / kept.len() as f64).ceil() as usize;
