@@ -117,6 +117,14 @@ fn a_compliant_chatter_converges_to_the_rigid_one_as_the_stop_stiffens() {
     let period = preset_ball(1.3, 1.0).spec.period();
     let rigid = chatter(&preset_ball(1.3, 1.0), &Contact::rigid(0.5));
     assert_eq!(rigid.impacts.len(), 19);
+    // The table lets the ball go where its deceleration reaches g, Γ·sin ωt = 1 (docs/physics.md
+    // §8.4), one period after the release from rest.
+    let release = (1.0 + (1.0 / 1.3_f64).asin() / std::f64::consts::TAU) * period;
+    assert!(
+        (rigid.released_at - release).abs() < 1e-9 * period,
+        "{}",
+        rigid.released_at
+    );
     let mut last: Option<(f64, f64, f64, usize)> = None;
     for stiffer in [1.0, 100.0, 1e4] {
         let c = chatter(&preset_ball(1.3, stiffer), &exact_hc(0.5));
