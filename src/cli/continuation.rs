@@ -382,11 +382,14 @@ fn branch_table(out: &mut String, b: &Branch) {
         let first = s.point.points.first();
         row.push(first.map_or_else(String::new, |p| compact_number(p.v_in, 6)));
         row.push(first.map_or_else(String::new, |p| compact_number(p.phase, 6)));
-        row.push(if s.kind == SpecialKind::GrazingImpact {
-            "— (J singular at zero speed)".into()
-        } else {
-            multiplier_text(&s.point)
-        });
+        // A compliant grazing's J is the stroboscopic map's, finite there.
+        row.push(
+            if s.kind == SpecialKind::GrazingImpact && b.contact == "rigid" {
+                "— (J singular at zero speed)".into()
+            } else {
+                multiplier_text(&s.point)
+            },
+        );
         rows.push(row);
     }
     if rows.len() > 1 {
@@ -581,7 +584,11 @@ fn charts(
         let a = approach(&r.contact, &contacts);
         curves.push((a, curve_of(&r.branch)));
         if let Some(d) = &r.doubled {
-            curves.push((a, curve_of(d)));
+            let doubled = BranchCurve {
+                doubled: true,
+                ..curve_of(d)
+            };
+            curves.push((a, doubled));
         }
     }
     let drawn: Vec<(Approach, &BranchCurve)> = curves.iter().map(|(a, c)| (*a, c)).collect();

@@ -105,6 +105,46 @@ fn the_oscillators_grazing_is_its_closed_form() {
 }
 
 #[test]
+fn the_compliant_oscillators_grazing_is_in_the_csv_as_the_rigid_ones() {
+    // The Hunt–Crossley stop's contact vanishes where the free response touches the stop: the
+    // same F_g as the rigid stop's (docs/continuation.md §6), in a `grazing-impact` row.
+    let csv = ok(&[
+        "continue",
+        "--scene",
+        "impact-oscillator",
+        "--param",
+        "system.forcing_amplitude",
+        "--from",
+        "0.05",
+        "--to",
+        "0.001",
+        "--transient",
+        "100",
+        "--recorded",
+        "20",
+        "--contact",
+        "compliant",
+        "--format",
+        "csv",
+    ]);
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (key, special) = (column("system.forcing_amplitude"), column("special"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let grazing: Vec<&Vec<&str>> = rows
+        .iter()
+        .filter(|r| r[special] == "grazing-impact")
+        .collect();
+    assert_eq!(grazing.len(), 1, "{csv}");
+    assert!(grazing[0][0].contains("hunt-crossley"), "{:?}", grazing[0]);
+    let at: f64 = grazing[0][key].parse().unwrap();
+    // F_g = F₀·(gap/δ_st)·√((1 − r²)² + (2ζr)²) with the preset's groups (r = 0.9, ζ = 0.05,
+    // gap/δ_st = 1.29…): the rigid branch's 13.565299 mN.
+    assert!((at / 0.013565299 - 1.0).abs() < 1e-7, "{at}");
+}
+
+#[test]
 fn the_figure_marks_the_special_points() {
     let path = out_file("continuation", "branch.svg");
     let mut args = BALL.to_vec();

@@ -8,6 +8,7 @@ mod bodies_props;
 mod calibration;
 mod continuation_ball;
 mod continuation_compliant;
+mod continuation_grazing;
 mod continuation_oscillator;
 mod dry_friction_cutoff;
 mod engine_runs;

@@ -163,7 +163,7 @@ impl CompliantStop {
 
     /// [`CompliantStop::flight`] after a contact that ended as it began (a touch with no approach
     /// speed, the body pulled away): the first millionth of a period is known free.
-    fn flight_after_touch(
+    pub(crate) fn flight_after_touch(
         &self,
         from: (f64, f64, f64),
         t_limit: f64,

@@ -46,9 +46,11 @@ pub enum SpecialKind {
     Fold,
     /// A multiplier −1, det(J + I) = 0: a period doubling.
     PeriodDoubling,
-    /// An impact's approach speed reaches zero: the orbit grazes the stop at an impact.
+    /// An impact's approach speed reaches zero: the orbit grazes the stop at an impact (for a
+    /// compliant stop: a contact's largest penetration falls to zero, the contact vanishes).
     GrazingImpact,
-    /// A flight's gap minimum reaches zero: a new, low-speed impact appears.
+    /// A flight's gap minimum reaches zero: a new, low-speed impact appears (for a compliant
+    /// stop: a new contact in a flight).
     GrazingFlight,
 }
 
@@ -94,7 +96,8 @@ pub struct BranchPoint {
     pub jacobian_det: f64,
     /// Every multiplier inside the unit circle (and the orbit physical).
     pub stable: bool,
-    /// The smallest approach speed of its impacts, m/s.
+    /// The smallest approach speed of its impacts, m/s (infinite for an orbit without one: a
+    /// compliant branch past a grazing).
     pub min_speed: f64,
     /// The smallest interior minimum of a gap over its flights, m (None: none, or not watched).
     pub min_gap: Option<f64>,
@@ -171,6 +174,9 @@ pub struct Branch {
     /// The parameters' scales.
     #[serde(skip)]
     pub(crate) scales: Vec<f64>,
+    /// A compliant branch's stroboscopic section, its forcing phase in rad.
+    #[serde(skip)]
+    pub(crate) section: f64,
 }
 
 impl Branch {

@@ -28,6 +28,21 @@ pub(crate) struct Monitors {
     pub min_gap: Option<f64>,
     /// The orbit's impacts.
     pub points: Vec<ImpactPoint>,
+    /// A compliant orbit's approaches to the stops (its contacts and its flights' gap minima),
+    /// whose clearances locate its grazing; None for the rigid stop, whose grazing is watched
+    /// through `speeds` and `min_gap`.
+    pub approaches: Option<Vec<Approach>>,
+}
+
+/// One approach of a compliant orbit to a stop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Approach {
+    /// Its forcing phase from the orbit's section, rad in [0, 2π·m].
+    pub phase: f64,
+    /// Which stop.
+    pub stop: usize,
+    /// The smallest gap, m; in a contact −its largest approach δ_max.
+    pub clearance: f64,
 }
 
 impl Monitors {
@@ -81,6 +96,19 @@ pub(crate) trait OrbitProblem {
     fn scales(&self) -> (f64, f64);
     /// Forcing periods and the stops of the orbit's impacts.
     fn signature(&self) -> (u32, Vec<usize>);
+    /// A compliant orbit's approaches to the stops alone (without the Jacobian's cost); None for
+    /// a problem that has none.
+    fn approaches(
+        &self,
+        _y: &[f64],
+        _lambda: &[f64],
+    ) -> Result<Option<Vec<Approach>>, ContinuationError> {
+        Ok(None)
+    }
+    /// The forcing phase of a stroboscopic section, rad (None: sectioned at the impacts).
+    fn section(&self) -> Option<f64> {
+        None
+    }
     /// The problem of the orbit run twice (2m forcing periods), its unknowns at the same orbit, and
     /// the direction of the doubled branch there from the critical eigenvector `q` (scaled) of J.
     #[allow(clippy::type_complexity)]

@@ -217,6 +217,7 @@ impl OrbitProblem for RigidProblem {
             speeds,
             min_gap,
             points,
+            approaches: None,
         })
     }
 

@@ -6,12 +6,12 @@ use nalgebra::DVector;
 use crate::model::system::{Contact, OrbitGuess, OrbitOptions, Param, SystemModel, find_orbit};
 
 use super::branch::{Branch, ContinuationOptions, SpecialKind, SpecialPoint};
-use super::compliant::CompliantProblem;
+use super::compliant::{CompliantProblem, section_of};
 use super::engine::{correct, jacobian, tangent};
 use super::error::ContinuationError;
 use super::problem::{OrbitProblem, model_at, varies_restitution};
 use super::rigid::RigidProblem;
-use super::trace::{Augmented, Trace, never, test_value};
+use super::trace::{Augmented, Trace, curve_test, never};
 
 /// A fold or period-doubling curve ends where an impact speed falls below this fraction of the
 /// speed scale: it is running into a grazing point, where J ~ 1/v has no finite limit.
@@ -37,13 +37,15 @@ fn check_range(key: Param, (from, to): (f64, f64)) -> Result<(), ContinuationErr
     }
 }
 
-/// The orbit problem of `contact` for orbits of `stops` in `cycles` forcing periods.
+/// The orbit problem of `contact` for orbits of `stops` in `cycles` forcing periods (a compliant
+/// one on the stroboscopic section at forcing phase `section`).
 fn problem(
     model: &SystemModel,
     contact: &Contact,
     keys: Vec<Param>,
     (cycles, stops): (u32, Vec<usize>),
     speed: f64,
+    section: f64,
 ) -> Box<dyn OrbitProblem> {
     match *contact {
         Contact::Rigid { restitution } => Box::new(RigidProblem {
@@ -62,10 +64,10 @@ fn problem(
             keys,
             law,
             damping,
-            stops.first().copied().unwrap_or(0),
-            stops.len() as u32,
+            stops,
             cycles,
             speed,
+            section,
         )),
     }
 }
@@ -109,12 +111,20 @@ pub fn continue_orbit_until(
         .fold(f64::MIN_POSITIVE, f64::max);
     let omega = at_start.spec.omega();
     let stops: Vec<usize> = orbit.points.iter().map(|p| p.stop).collect();
+    let section = match contact {
+        Contact::Rigid { .. } => None,
+        Contact::Compliant {
+            model: law,
+            damping,
+        } => Some(section_of(&at_start, law, damping, &orbit)?),
+    };
     let p = problem(
         model,
         &contact,
         keys,
         (orbit.period_forcing_cycles, stops),
         speed,
+        section.map_or(0.0, |s| s.0),
     );
     let scale = scale_of(range.0, range.1);
     // Unknowns at the found orbit: the rigid problem's (ωt_k, v_k⁺/V) for each impact, the
@@ -133,8 +143,10 @@ pub fn continue_orbit_until(
             }
         }
         Contact::Compliant { .. } => {
-            y.push(omega * first - turn);
-            y.push(orbit.points[0].v_in / speed);
+            // The body's state at the section, over the length and speed scales.
+            let (x, v) = section.map_or((0.0, 0.0), |s| s.1);
+            y.push(x / p.scales().1);
+            y.push(v / speed);
         }
     }
     let mut z = DVector::from_vec(y);
@@ -185,6 +197,7 @@ fn trace_branch(
         end: traced.end,
         speed: eq.problem.scales().0,
         scales: eq.scales.clone(),
+        section: eq.problem.section().unwrap_or(0.0),
     })
 }
 
@@ -200,6 +213,24 @@ pub fn switch_at_period_doubling(
     special: &SpecialPoint,
     options: &ContinuationOptions,
 ) -> Result<Branch, ContinuationError> {
+    switch_at_period_doubling_until(
+        model, contact, param, range, branch, special, options, &never,
+    )
+}
+
+/// [`switch_at_period_doubling`] that polls `stop` before every step and ends with
+/// [`ContinuationError::Stopped`] once it says so (the explorer's job, superseded by an edit).
+#[allow(clippy::too_many_arguments)]
+pub fn switch_at_period_doubling_until(
+    model: &SystemModel,
+    contact: &Contact,
+    param: Param,
+    range: (f64, f64),
+    branch: &Branch,
+    special: &SpecialPoint,
+    options: &ContinuationOptions,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Result<Branch, ContinuationError> {
     if special.kind != SpecialKind::PeriodDoubling {
         return Err(ContinuationError::NoSuchPoint(format!(
             "branch switching needs a period doubling, not a {}",
@@ -214,6 +245,7 @@ pub fn switch_at_period_doubling(
         keys.clone(),
         (branch.cycles, branch.stops.clone()),
         branch.speed,
+        branch.section,
     );
     let z = &special.point.z;
     let n = p.unknowns();
@@ -245,7 +277,7 @@ pub fn switch_at_period_doubling(
     let (z1, _) = correct(&eq, &(&z0 + &t * step), &t, 12)?;
     let chord = (&z1 - &z0).normalize();
     let t1 = tangent(&jacobian(&eq, &z1)?, &chord)?;
-    let mut branch = trace_branch(&eq, z1, t1, range, options, (false, &never), contact, param)?;
+    let mut branch = trace_branch(&eq, z1, t1, range, options, (false, stop), contact, param)?;
     // The doubling point itself starts the new branch.
     let trace = Trace {
         eq: &eq,
@@ -290,6 +322,7 @@ pub fn continue_special(
         keys,
         (branch.cycles, branch.stops.clone()),
         branch.speed,
+        branch.section,
     );
     let n = p.unknowns();
     let z = &special.point.z;
@@ -308,7 +341,7 @@ pub fn continue_special(
         scales,
         test: Some((special.kind, index)),
     };
-    test_value(special.kind, &eq.monitors(&z0)?, p.scales(), Some(index)).ok_or_else(|| {
+    curve_test(special.kind, &eq.monitors(&z0)?, p.scales(), index).ok_or_else(|| {
         ContinuationError::NoSuchPoint(format!("no {} test function here", special.kind.label()))
     })?;
     let lo = range2.0.min(range2.1) / scale2;
@@ -376,5 +409,6 @@ pub fn continue_special(
         end: forward.end,
         speed: branch.speed,
         scales: eq.scales.clone(),
+        section: branch.section,
     })
 }

@@ -7,7 +7,7 @@ use nalgebra::DVector;
 use super::branch::{BranchEnd, BranchPoint, ContinuationOptions, SpecialKind, SpecialPoint};
 use super::engine::{Equations, correct, jacobian, tangent};
 use super::error::ContinuationError;
-use super::problem::{Monitors, OrbitProblem};
+use super::problem::{Approach, Monitors, OrbitProblem};
 
 /// A branch that cannot go on with an impact speed below this fraction of its scale is said to
 /// end near grazing.
@@ -15,6 +15,10 @@ const NEAR_GRAZING: f64 = 0.05;
 
 /// Corrector iterations at most.
 const CORRECTOR_ITERATIONS: usize = 12;
+
+/// A compliant orbit's approach at one point of a branch is the same approach at the next when
+/// it is to the same stop and within this many radians of forcing phase.
+const SAME_APPROACH: f64 = 1.0;
 
 /// The orbit problem with its parameters appended to the unknowns, z = (y, μ₁[, μ₂]) with
 /// λᵢ = μᵢ·scaleᵢ; with a `test`, its value is one more equation (a curve of special points).
@@ -51,6 +55,10 @@ pub(crate) fn test_value(
     scales: (f64, f64),
     speed_index: Option<usize>,
 ) -> Option<f64> {
+    if kind.is_grazing() && m.approaches.is_some() {
+        // A compliant orbit's grazing is watched through its approaches (`crossings`).
+        return None;
+    }
     let (trace, det) = m.trace_det();
     let value = match kind {
         SpecialKind::Fold => 1.0 - trace + det,
@@ -67,6 +75,70 @@ pub(crate) fn test_value(
     value.is_finite().then_some(value)
 }
 
+/// The equation a curve of `kind` adds: its test function, or for a compliant orbit's grazing
+/// the clearance (over the length scale) of the approach nearest the stop's surface, the one that
+/// grazes on the curve.
+pub(crate) fn curve_test(
+    kind: SpecialKind,
+    m: &Monitors,
+    scales: (f64, f64),
+    index: usize,
+) -> Option<f64> {
+    match &m.approaches {
+        Some(approaches) if kind.is_grazing() => nearest_surface(approaches, scales),
+        _ => test_value(kind, m, scales, Some(index)),
+    }
+}
+
+/// The clearance, over the length scale, of the approach nearest a stop's surface.
+fn nearest_surface(approaches: &[Approach], scales: (f64, f64)) -> Option<f64> {
+    approaches
+        .iter()
+        .map(|a| a.clearance)
+        .min_by(|a, b| a.abs().total_cmp(&b.abs()))
+        .map(|c| c / scales.1)
+}
+
+/// The approach of `m` to `stop` nearest in phase to `phase` on the orbit's circle of `span`
+/// radians, if one is within [`SAME_APPROACH`].
+fn matched(m: &Monitors, stop: usize, phase: f64, span: f64) -> Option<Approach> {
+    let distance = |a: &Approach| {
+        let d = (a.phase - phase).rem_euclid(span);
+        d.min(span - d)
+    };
+    m.approaches
+        .as_ref()?
+        .iter()
+        .filter(|a| a.stop == stop && distance(a) < SAME_APPROACH)
+        .min_by(|a, b| distance(a).total_cmp(&distance(b)))
+        .copied()
+}
+
+/// A compliant orbit's grazings between two points: each approach whose clearance changes sign,
+/// with the kind that says which way ([`SpecialKind::GrazingImpact`]: a contact vanishes;
+/// [`SpecialKind::GrazingFlight`]: a flight's gap minimum becomes a new contact).
+fn crossings(before: &Monitors, after: &Monitors, span: f64) -> Vec<(SpecialKind, Approach)> {
+    let Some(approaches) = &before.approaches else {
+        return Vec::new();
+    };
+    let mut out: Vec<(SpecialKind, Approach)> = Vec::new();
+    for a in approaches {
+        let Some(b) = matched(after, a.stop, a.phase, span) else {
+            continue;
+        };
+        if (a.clearance < 0.0) == (b.clearance < 0.0) || out.iter().any(|(_, o)| *o == *a) {
+            continue;
+        }
+        let kind = if a.clearance < 0.0 {
+            SpecialKind::GrazingImpact
+        } else {
+            SpecialKind::GrazingFlight
+        };
+        out.push((kind, *a));
+    }
+    out
+}
+
 impl Equations for Augmented<'_> {
     fn equations(&self) -> usize {
         self.problem.unknowns() + usize::from(self.test.is_some())
@@ -76,13 +148,20 @@ impl Equations for Augmented<'_> {
         let (y, lambda) = self.split(z);
         let mut r = self.problem.residual(&y, &lambda)?;
         if let Some((kind, index)) = self.test {
-            let m = self.problem.monitors(&y, &lambda)?;
-            let value = test_value(kind, &m, self.problem.scales(), Some(index)).ok_or(
-                ContinuationError::NoSuchPoint(format!(
-                    "the {} test function has no value here",
-                    kind.label()
-                )),
-            )?;
+            let scales = self.problem.scales();
+            let approaches = if kind.is_grazing() {
+                self.problem.approaches(&y, &lambda)?
+            } else {
+                None
+            };
+            let value = match approaches {
+                Some(approaches) => nearest_surface(&approaches, scales),
+                None => curve_test(kind, &self.problem.monitors(&y, &lambda)?, scales, index),
+            }
+            .ok_or(ContinuationError::NoSuchPoint(format!(
+                "the {} test function has no value here",
+                kind.label()
+            )))?;
             r.push(value);
         }
         Ok(DVector::from_vec(r))
@@ -288,6 +367,26 @@ impl Trace<'_> {
                     let f = move |_: &DVector<f64>, m: &Monitors| test_value(kind, m, scales, None);
                     match self.locate(&node, (ds, fb), fa, &f) {
                         // A test through a pole (J's 1/v near grazing) is no root.
+                        Ok((s, zs, ms, fs)) if fs.abs() < 1e-6 => found.push((s, kind, zs, ms, fs)),
+                        Ok(_) => {}
+                        Err(_) => lost = true,
+                    }
+                }
+                // A compliant orbit: an approach's clearance through zero, located on it.
+                let (cycles, _) = self.eq.problem.signature();
+                let span = std::f64::consts::TAU * f64::from(cycles);
+                let length = self.eq.problem.scales().1;
+                for (kind, a) in crossings(&node.monitors, &m, span) {
+                    if !self.watch.contains(&kind) {
+                        continue;
+                    }
+                    let Some(b) = matched(&m, a.stop, a.phase, span) else {
+                        continue;
+                    };
+                    let f = move |_: &DVector<f64>, m: &Monitors| {
+                        matched(m, a.stop, a.phase, span).map(|c| c.clearance / length)
+                    };
+                    match self.locate(&node, (ds, b.clearance / length), a.clearance / length, &f) {
                         Ok((s, zs, ms, fs)) if fs.abs() < 1e-6 => found.push((s, kind, zs, ms, fs)),
                         Ok(_) => {}
                         Err(_) => lost = true,
