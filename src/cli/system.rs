@@ -335,10 +335,19 @@ fn table(report: &SystemReport, transient: usize) -> String {
         report.groups.line()
     );
     for run in &report.runs {
+        let words = if run.end == EndReason::TimeLimit && run.impacts_total < transient {
+            format!(
+                "the transient never ended: the run reached --max-periods after {} of its \
+                 {transient} transient impacts",
+                run.impacts_total
+            )
+        } else {
+            period_words(run.period, run.end)
+        };
         out.push_str(&format!(
             "\n{}: {}; {} impacts recorded after {transient}, {} in all\n",
             run.contact,
-            period_words(run.period, run.end),
+            words,
             run.impacts.len(),
             run.impacts_total
         ));

@@ -2,7 +2,7 @@
 //! words with its numbers, for the command line and the explorer alike.
 
 use crate::model::system::compliant::verdict::{
-    LONG_CONTACT, Quantity, Resting, Validity, Verdict,
+    LONG_CONTACT, NothingRecorded, Quantity, Resting, Validity, Verdict,
 };
 
 use super::{Zeros, significant};
@@ -50,9 +50,7 @@ pub fn sentence(verdict: &Verdict) -> String {
         percent(verdict.contact_ratio)
     );
     let mut text = match verdict.comparisons.get(verdict.decisive) {
-        _ if verdict.impacts.1 == 0 => "no impacts to compare: the compliant stop's body does \
-                                        not bounce here"
-            .to_string(),
+        _ if verdict.impacts.1 == 0 => nothing_recorded(verdict.nothing_recorded),
         None => format!("no impacts to compare; {contacts}"),
         Some(c) => {
             let by = difference(c.quantity, c.relative());
@@ -92,6 +90,32 @@ pub fn sentence(verdict: &Verdict) -> String {
         ));
     }
     text
+}
+
+/// Why there is nothing to compare: the compliant run recorded no impact proper.
+fn nothing_recorded(why: Option<NothingRecorded>) -> String {
+    match why {
+        Some(NothingRecorded::TransientUnfinished {
+            impacts,
+            transient,
+            periods,
+        }) => {
+            format!(
+                "no impacts to compare: the compliant run's transient never ended: it reached \
+                 --max-periods ({} forcing periods) after {impacts} of its {transient} transient \
+                 impacts, one every {} forcing periods on average: the motion does not \
+                 settle within the run",
+                significant(periods, 3, Zeros::Trim),
+                significant(periods / impacts.max(1) as f64, 3, Zeros::Trim),
+            )
+        }
+        Some(NothingRecorded::RestsForever) => {
+            "no impacts to compare: the compliant stop's body comes to rest on it for ever".into()
+        }
+        Some(NothingRecorded::NoBounce) | None => {
+            "no impacts to compare: the compliant stop's body does not bounce here".into()
+        }
+    }
 }
 
 /// The resting phases, separate from the contacts: `; the body also rests on the stop 30 % of
@@ -143,6 +167,7 @@ mod tests {
             impacts: (10, 10),
             rigid_resting: Resting::default(),
             compliant_resting: Resting::default(),
+            nothing_recorded: None,
         }
     }
 

@@ -466,3 +466,60 @@ fn the_system_charts_overlay_both_stops_each_in_its_own_look() {
     ]);
     assert!(e.contains("needs --param, --from and --to"), "{e}");
 }
+
+#[test]
+fn a_run_whose_transient_never_ends_says_so_not_that_the_body_does_not_bounce() {
+    // The proposed law with x_pl = 0 (the preset's) is elastic: e = 1, and the ball climbs ever
+    // higher on the vibrating table. Its run reaches --max-periods before its 500 transient
+    // impacts, so nothing is recorded: that is the transient never ending, not a body that does
+    // not bounce.
+    let args = [
+        "system",
+        "--scene",
+        "bouncing-ball",
+        "--contact",
+        "both",
+        "--law",
+        "proposed",
+        "--max-periods",
+        "2000",
+    ];
+    let table = ok(&args);
+    assert!(
+        table.contains("proposed: the transient never ended: the run reached --max-periods after ")
+            && table.contains("of its 500 transient impacts; 0 impacts recorded"),
+        "{table}"
+    );
+    assert!(!table.contains("does not bounce"), "{table}");
+    let report = json(&with(&args, &["--format", "json"]));
+    let verdict = &report["verdict"];
+    let why = &verdict["nothing_recorded"];
+    assert_eq!(why["kind"], "transient-unfinished", "{verdict}");
+    let impacts = why["impacts"].as_u64().unwrap();
+    let periods = why["periods"].as_f64().unwrap();
+    assert!(impacts > 0 && impacts < 500, "{why}");
+    // The run ends at the time limit: 2000 forcing periods from t = 0, to the last flight's end.
+    assert!((periods - 2000.0).abs() < 1e-6, "{why}");
+    let sentence = verdict["sentence"].as_str().unwrap();
+    assert!(
+        sentence.starts_with(&format!(
+            "no impacts to compare: the compliant run's transient never ended: it reached \
+             --max-periods (2000 forcing periods) after {impacts} of its 500 transient impacts"
+        )),
+        "{sentence}"
+    );
+    // A law that settles records its impacts and compares them.
+    let settles = json(&[
+        "system",
+        "--scene",
+        "bouncing-ball",
+        "--contact",
+        "compliant",
+        "--format",
+        "json",
+    ]);
+    assert!(
+        settles["verdict"]["nothing_recorded"].is_null(),
+        "{settles}"
+    );
+}

@@ -153,7 +153,8 @@ fn the_exponent_of_a_period_one_orbit_is_ln_of_its_largest_multiplier() {
             initial: Some(on_period_one(&model, e)),
             ..options.run
         };
-        let (motion, lyapunov, _) = map::cell(&model, &Contact::rigid(e), &run, &options).unwrap();
+        let (motion, lyapunov, _, _) =
+            map::cell(&model, &Contact::rigid(e), &run, &options).unwrap();
         assert_eq!(
             motion,
             Motion::Periodic {
@@ -222,7 +223,7 @@ fn chaos_at_e_0_8_gamma_2_8_has_a_positive_exponent() {
         transient_impacts: 500,
         ..options.run
     };
-    let (motion, lyapunov, end) = map::cell(&model, &Contact::rigid(e), &run, &options).unwrap();
+    let (motion, lyapunov, _, end) = map::cell(&model, &Contact::rigid(e), &run, &options).unwrap();
     assert_eq!(motion, Motion::Chaotic);
     let lyapunov = lyapunov.unwrap();
     let independent = exponent_from_nearby_runs(&model, e, end, 200);
@@ -292,7 +293,7 @@ fn the_compliant_exponent_of_a_period_one_orbit_matches_its_multipliers() {
         }),
         ..options.run
     };
-    let (motion, lyapunov, _) = map::cell(&model, &hc, &run, &options).unwrap();
+    let (motion, lyapunov, _, _) = map::cell(&model, &hc, &run, &options).unwrap();
     assert_eq!(
         motion,
         Motion::Periodic {

@@ -13,7 +13,7 @@ use crate::chart::figure;
 use crate::chart::map::{MapPoint, look, motion_map};
 use crate::model::presets::Registry;
 use crate::model::system::map::{
-    Axis, Cell, Grid, MapOptions, Shard, Tolerances, difference, map as compute,
+    Axis, Cause, Cell, Grid, MapOptions, Shard, Tolerances, difference, map as compute,
 };
 use crate::model::system::{Contact, Param, RunOptions, SystemError, SystemModel};
 
@@ -210,7 +210,8 @@ pub fn compute_file(args: &MapArgs, registry: &Registry) -> Result<MapFile, CliE
                 impacts: None,
                 periods: None,
                 lyapunov: d.lyapunov_change,
-                error: None,
+                // The difference layer's `error` column says why the stops differ, where known.
+                error: d.cause.map(Cause::words),
             })
             .collect();
         layers.push(Layer {

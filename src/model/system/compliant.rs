@@ -249,15 +249,6 @@ pub fn find_orbit(
 /// error by their relative step, 1e-6.
 pub const ORBIT_RTOL: f64 = 1e-12;
 
-/// Where a run starts by default: at rest at t = 0 (the ball on the table, the body at x = 0).
-fn rest_state() -> State {
-    State {
-        t: 0.0,
-        x: 0.0,
-        v: 0.0,
-    }
-}
-
 /// Samples of (t, x, v, stop) at the grid times k·T/samples_per_period inside [a, b).
 struct Sampler {
     dt: f64,
@@ -303,7 +294,11 @@ pub fn run(
     let plant = &stop.plant;
     let period = plant.period();
     let omega = plant.omega();
-    let start = options.initial.unwrap_or_else(rest_state);
+    // At rest at t = 0 as the rigid stop starts (the ball on the table and moving with it, the
+    // body at x = 0): the two stops' runs from rest begin in the same state (docs/maps.md §2).
+    let start = options
+        .initial
+        .unwrap_or_else(|| stop.dynamics.rest_state(0.0));
     let t_limit = start.t + options.max_periods * period;
     let mut state = (start.t, start.x, start.v);
     let mut impacts = Vec::with_capacity(options.recorded_impacts);

@@ -133,6 +133,47 @@ impl Resting {
     }
 }
 
+/// Why the compliant run recorded no impact proper, when it recorded none.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum NothingRecorded {
+    /// The run reached its time limit (`--max-periods`) before its transient impacts were done:
+    /// the motion never settled, so nothing was recorded.
+    TransientUnfinished {
+        /// Impacts made in all.
+        impacts: usize,
+        /// The transient impacts asked for.
+        transient: usize,
+        /// Forcing periods run.
+        periods: f64,
+    },
+    /// The body came to rest on the stop for ever.
+    RestsForever,
+    /// The transient ended and then the body made at most resting contacts until the time limit.
+    NoBounce,
+}
+
+impl NothingRecorded {
+    /// Why `history`, run with `options`, recorded no impact proper (None if it recorded one).
+    pub fn of(history: &History, options: &RunOptions, period: f64) -> Option<NothingRecorded> {
+        if impacts(history).next().is_some() {
+            return None;
+        }
+        let start = options.initial.map_or(0.0, |s| s.t);
+        Some(match history.end {
+            EndReason::StuckForever => NothingRecorded::RestsForever,
+            EndReason::TimeLimit if history.impacts_total < options.transient_impacts => {
+                NothingRecorded::TransientUnfinished {
+                    impacts: history.impacts_total,
+                    transient: options.transient_impacts,
+                    periods: (history.end_state.t - start) / period,
+                }
+            }
+            _ => NothingRecorded::NoBounce,
+        })
+    }
+}
+
 /// The verdict for one system, law and damping.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Verdict {
@@ -157,6 +198,8 @@ pub struct Verdict {
     pub rigid_resting: Resting,
     /// The resting phases of the compliant stop.
     pub compliant_resting: Resting,
+    /// Why the compliant run recorded no impact, when it recorded none.
+    pub nothing_recorded: Option<NothingRecorded>,
 }
 
 /// Runs `model` rigid (at the scene's e and at the law's realised e) and compliant with `law` and
@@ -244,6 +287,7 @@ pub fn verdict_of(
         impacts: (impacts(&rigid_asked).count(), impacts(compliant).count()),
         rigid_resting: Resting::of(&rigid_asked),
         compliant_resting: Resting::of(compliant),
+        nothing_recorded: NothingRecorded::of(compliant, options, period),
     })
 }
 

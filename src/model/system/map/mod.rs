@@ -8,15 +8,18 @@
 //! result is fixed by the grid alone: independent of the number of threads and of the [`Shard`]
 //! the rows are dealt into. [`difference`] compares the rigid and compliant maps cell by cell.
 
+mod contacts;
 mod difference;
 mod grid;
 pub mod lyapunov;
 mod motion;
 mod run;
 
-pub use difference::{Agreement, DifferenceCell, difference};
+pub use contacts::ContactReading;
+pub use difference::{Agreement, Cause, DifferenceCell, difference};
 pub use grid::{Axis, Grid, Shard};
 pub use motion::{
-    CHATTER_SPEED, HOLDING_CONTACT, Motion, Tolerances, from_exponent, from_history, period_of,
+    CHATTER_FLIGHT, HOLDING_CONTACT, Motion, Tolerances, from_exponent, from_history, period_of,
+    skeleton,
 };
 pub use run::{Cell, MapOptions, MapRows, cell, contact_at, map};

@@ -17,11 +17,12 @@ pub enum Motion {
     /// The body rests on a stop for ever (a rigid stop's chatter ends in a stick that never
     /// releases; a compliant contact is held for [`HELD_PERIODS`](crate::model::system::compliant::HELD_PERIODS)).
     Sticking,
-    /// Chatter: accumulating impacts ending in sticking phases that release again (rigid), or
-    /// contacts in which the body comes to rest or is held (compliant); `period` if the sequence
-    /// repeats.
+    /// Chatter: resting phases that release again (a rigid stop's accumulation point, a compliant
+    /// contact in which the body comes to rest or is held) or impacts in a chatter's tail (after
+    /// flights shorter than [`CHATTER_FLIGHT`] of a period); `period` if the sequence repeats.
     Chattering {
-        /// n impacts (accumulation points count as one) in m forcing periods.
+        /// n events outside the chatter's tail (a resting phase counts as one) in m forcing
+        /// periods.
         period: Option<(u32, u32)>,
     },
     /// n impacts every m forcing periods, isolated impacts only.
@@ -142,11 +143,48 @@ pub fn period_of(
 /// image of chatter and sticking.
 pub const HOLDING_CONTACT: f64 = 0.1;
 
-/// An approach speed below this fraction of the largest recorded one is a chatter impact.
-pub const CHATTER_SPEED: f64 = 1e-3;
+/// An impact that ends a flight shorter than this fraction of a forcing period is in a chatter's
+/// tail (docs/maps.md §2): a rigid stop resolves that tail down to its accumulation point, a
+/// compliant one only until a bounce is no longer than a contact, so neither the tail nor its
+/// length is compared between the two.
+pub const CHATTER_FLIGHT: f64 = 0.02;
+
+/// Whether a recorded event is a resting phase: a rigid chatter summed to its accumulation point,
+/// or a compliant contact in which the body came to rest.
+fn rests(impact: &ImpactRecord) -> bool {
+    impact.kind != ImpactKind::Impact
+}
+
+/// The recorded events that are not in a chatter's tail, with whether the history had a tail:
+/// every resting phase, and every impact whose flight (from the event before it) lasted at least
+/// [`CHATTER_FLIGHT`] of a forcing period. The first recorded impact, whose flight began before
+/// the record, is left out.
+pub fn skeleton(impacts: &[ImpactRecord], forcing_period: f64) -> (Vec<ImpactRecord>, bool) {
+    let mut tail = false;
+    let mut kept = Vec::with_capacity(impacts.len());
+    for (k, i) in impacts.iter().enumerate() {
+        if rests(i) {
+            kept.push(*i);
+            continue;
+        }
+        let Some(before) = k.checked_sub(1).map(|b| impacts[b]) else {
+            continue;
+        };
+        if i.t - before.t < CHATTER_FLIGHT * forcing_period {
+            tail = true;
+        } else {
+            kept.push(*i);
+        }
+    }
+    (kept, tail)
+}
 
 /// What the history says before any exponent: `Some` when it decides the motion alone (no
 /// impact, sticking, chatter, a period), `None` when the exponent must decide.
+///
+/// Chatter is one definition for both stops (docs/maps.md §2): a resting phase, an impact in a
+/// chatter's tail, or a contact holding the body; its period is that of the events outside the
+/// tail, a resting phase counting once.
 pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) -> Option<Motion> {
     let impacts = &history.impacts;
     match history.end {
@@ -156,20 +194,20 @@ pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) ->
         EndReason::TimeLimit if impacts.len() < 2 => return Some(Motion::NoImpact),
         EndReason::TimeLimit | EndReason::Recorded => {}
     }
-    let period = period_of(impacts, forcing_period, tol.period, tol.max_period_impacts);
-    let fastest = impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
-    let chatters = !history.sticks.is_empty()
+    let (kept, tail) = skeleton(impacts, forcing_period);
+    let chatters = tail
+        || !history.sticks.is_empty()
         || impacts.iter().any(|i| {
-            // A rigid chatter's accumulation point, or a compliant contact that came to rest.
-            i.kind != ImpactKind::Impact
-                || i.v_in < CHATTER_SPEED * fastest
+            rests(i)
                 || i.contact_time
                     .is_some_and(|tc| tc > HOLDING_CONTACT * forcing_period)
         });
     if chatters {
+        let period = period_of(&kept, forcing_period, tol.period, tol.max_period_impacts);
         return Some(Motion::Chattering { period });
     }
-    period.map(|(impacts, cycles)| Motion::Periodic { impacts, cycles })
+    period_of(impacts, forcing_period, tol.period, tol.max_period_impacts)
+        .map(|(impacts, cycles)| Motion::Periodic { impacts, cycles })
 }
 
 /// The motion without a period, from its largest Lyapunov exponent per impact.

@@ -6,9 +6,11 @@ use serde::Serialize;
 
 use crate::model::system::diagram::rebase;
 use crate::model::system::{
-    CompliantDamping, Contact, RunOptions, State, SystemError, SystemModel, simulate,
+    CompliantDamping, Contact, EndReason, History, RunOptions, State, SystemError, SystemModel,
+    simulate,
 };
 
+use super::contacts::ContactReading;
 use super::grid::{Grid, Shard};
 use super::lyapunov::{self, NoExponent};
 use super::motion::{self, Motion, Tolerances};
@@ -62,6 +64,9 @@ pub struct Cell {
     /// Largest Lyapunov exponent of the impact map, per impact (where the map of isolated impacts
     /// could be iterated).
     pub lyapunov: Option<f64>,
+    /// The restitution the recorded impacts realise and their longest contact (default where the
+    /// cell failed).
+    pub contacts: ContactReading,
     /// Why the cell failed (`motion` is then [`Motion::Failed`]).
     pub error: Option<String>,
 }
@@ -129,11 +134,11 @@ fn row(
                 },
                 ..options.run
             };
-            let (motion, lyapunov, end) = cell(&m, contact, &run, options)?;
-            Ok((motion, lyapunov, end, m))
+            let (motion, lyapunov, contacts, end) = cell(&m, contact, &run, options)?;
+            Ok((motion, lyapunov, contacts, end, m))
         });
         cells.push(match outcome {
-            Ok((motion, lyapunov, end, m)) => {
+            Ok((motion, lyapunov, contacts, end, m)) => {
                 warm = Some((end, m));
                 Cell {
                     ix,
@@ -142,6 +147,7 @@ fn row(
                     y,
                     motion,
                     lyapunov,
+                    contacts,
                     error: None,
                 }
             }
@@ -154,6 +160,7 @@ fn row(
                     y,
                     motion: Motion::Failed,
                     lyapunov: None,
+                    contacts: ContactReading::default(),
                     error: Some(e.to_string()),
                 }
             }
@@ -178,24 +185,52 @@ pub fn contact_at(contact: &Contact, model: &SystemModel) -> Contact {
     }
 }
 
-/// The motion at one cell, its exponent, and the state its run ended in (the next cell's start).
+/// The run of a cell with its transient and recorded impacts counted as events outside a
+/// chatter's tail (docs/maps.md §2), the same for both stops: a rigid stop resolves a tail of
+/// some twenty impacts where a compliant one makes a few, so counted in impacts a rigid run would
+/// record a few chatters where a compliant one records many. A run whose record holds a tail is
+/// run once more with both counts scaled by its impacts per event.
+fn events_counted(
+    model: &SystemModel,
+    contact: &Contact,
+    run: &RunOptions,
+) -> Result<History, SystemError> {
+    let history = simulate(model, contact, run)?;
+    let (kept, tail) = motion::skeleton(&history.impacts, model.spec.period());
+    let recorded = history.impacts.len();
+    if !tail || history.end != EndReason::Recorded || kept.is_empty() {
+        return Ok(history);
+    }
+    let scale = |n: usize| (n as f64 * recorded as f64 / kept.len() as f64).ceil() as usize;
+    let longer = RunOptions {
+        transient_impacts: scale(run.transient_impacts),
+        // One more: the skeleton leaves out the first recorded impact.
+        recorded_impacts: scale(run.recorded_impacts) + 1,
+        ..*run
+    };
+    simulate(model, contact, &longer)
+}
+
+/// The motion at one cell, its exponent, what its impacts realise, and the state its run ended in
+/// (the next cell's start).
 pub fn cell(
     model: &SystemModel,
     contact: &Contact,
     run: &RunOptions,
     options: &MapOptions,
-) -> Result<(Motion, Option<f64>, State), SystemError> {
+) -> Result<(Motion, Option<f64>, ContactReading, State), SystemError> {
     let contact = contact_at(contact, model);
-    let history = simulate(model, &contact, run)?;
+    let history = events_counted(model, &contact, run)?;
     let end = history.end_state;
+    let reading = ContactReading::of(&history, model.spec.period());
     let tol = &options.tolerances;
     let decided = motion::from_history(&history, model.spec.period(), tol);
     let exponent_needed = matches!(decided, None | Some(Motion::Periodic { .. }));
     if !exponent_needed || options.lyapunov_impacts == 0 {
-        return Ok((decided.unwrap_or(Motion::Unresolved), None, end));
+        return Ok((decided.unwrap_or(Motion::Unresolved), None, reading, end));
     }
     let Some(last) = lyapunov::start_of(&history.impacts) else {
-        return Ok((decided.unwrap_or(Motion::Unresolved), None, end));
+        return Ok((decided.unwrap_or(Motion::Unresolved), None, reading, end));
     };
     let speed = history.impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
     let steps = options.lyapunov_impacts;
@@ -207,11 +242,13 @@ pub fn cell(
         } => lyapunov::compliant(model, law, damping, last, speed, steps)?,
     };
     Ok(match (decided, exponent) {
-        (Some(periodic), Ok(l)) => (periodic, Some(l), end),
-        (Some(periodic), Err(_)) => (periodic, None, end),
-        (None, Ok(l)) => (motion::from_exponent(Some(l), tol), Some(l), end),
-        (None, Err(NoExponent::Chatters)) => (Motion::Chattering { period: None }, None, end),
-        (None, Err(NoExponent::NoImpact)) => (Motion::NoImpact, None, end),
-        (None, Err(NoExponent::Grazes)) => (Motion::Unresolved, None, end),
+        (Some(periodic), Ok(l)) => (periodic, Some(l), reading, end),
+        (Some(periodic), Err(_)) => (periodic, None, reading, end),
+        (None, Ok(l)) => (motion::from_exponent(Some(l), tol), Some(l), reading, end),
+        (None, Err(NoExponent::Chatters)) => {
+            (Motion::Chattering { period: None }, None, reading, end)
+        }
+        (None, Err(NoExponent::NoImpact)) => (Motion::NoImpact, None, reading, end),
+        (None, Err(NoExponent::Grazes)) => (Motion::Unresolved, None, reading, end),
     })
 }
