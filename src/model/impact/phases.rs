@@ -232,12 +232,13 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         });
     }
     // Adaptive methods resume with the last full step of loading instead of guessing anew: the
-    // longer of the last two, as the last is usually the landing on maximum compression, cut short.
+    // longest of the last three, as the last is usually the landing on maximum compression, cut
+    // short, and may be followed by the landing's glide onto the event (`ode::integrate`).
     opts.h_initial = loading_dense
         .segments()
         .iter()
         .rev()
-        .take(2)
+        .take(3)
         .map(|seg| seg.t_end() - seg.t_start())
         .reduce(f64::max)
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());
