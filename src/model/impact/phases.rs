@@ -198,9 +198,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             OdeError::StepBudgetExhausted { t, steps } => exhausted(steps, t),
             e => impact_error(ro.method, e, sc.t, sys.growth),
         })?;
-        for segment in tail.dense.segments() {
-            loading.dense.push(segment.clone());
-        }
+        loading.dense.append(&tail.dense);
         loading.stats += tail.stats;
         loading.t = tail.t;
         loading.y = tail.y;
@@ -232,13 +230,12 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
         });
     }
     // Adaptive methods resume with the last full step of loading instead of guessing anew: the
-    // longest of the last three, as the last is usually the landing on maximum compression, cut
-    // short, and may be followed by the landing's glide onto the event (`ode::integrate`).
+    // longer of the last two, as the last is usually the landing on maximum compression, cut short.
     opts.h_initial = loading_dense
         .segments()
         .iter()
         .rev()
-        .take(3)
+        .take(2)
         .map(|seg| seg.t_end() - seg.t_start())
         .reduce(f64::max)
         .filter(|h| *h > 0.0 && ro.method.is_adaptive());

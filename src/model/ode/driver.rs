@@ -168,9 +168,7 @@ fn run<S: Scheme>(
             let (t_hit, y_hit) = match landed {
                 Some(landing) => {
                     dense.truncate_at(t);
-                    for segment in landing.dense.segments() {
-                        dense.push(segment.clone());
-                    }
+                    dense.append(&landing.dense);
                     (landing.t, landing.y)
                 }
                 None => {
@@ -294,6 +292,7 @@ fn land(
     };
     // The remaining corrections glide on from there, each with the secant through the last two
     // states.
+    let g_start = g(t_start, &y_start);
     let (mut t_prev, mut g_prev) = previous.unwrap_or((t_start, g(t_start, &y_start)));
     while corrections <= LANDING_CORRECTIONS {
         let g_now = g(landing.t, &landing.y);
@@ -304,7 +303,11 @@ fn land(
         }
         (t_prev, g_prev) = (landing.t, g_now);
         let dt = -g_now / rate;
-        if settled(dt, landing.t, h_step) || !is_finite(&f) {
+        if !is_finite(&f) {
+            break;
+        }
+        if settled(dt, landing.t, h_step) {
+            cross(&mut landing, &g, g_start, f, dt);
             break;
         }
         let Some(f_new) = glide(sys, stats, &mut landing, f, dt, opts) else {
@@ -314,6 +317,25 @@ fn land(
         corrections += 1;
     }
     Ok(landing)
+}
+
+/// Moves a settled glide onto the far side of the event (or onto g = 0) where rounding left it on
+/// the near side, by Euler moves of a few ulps of t: an integration restarted from there must not
+/// see the same event again right after its start.
+fn cross(landing: &mut Integration, g: &dyn Fn(f64, &State) -> f64, g_start: f64, f: State, dt: f64) {
+    let ulps = 4.0 * f64::EPSILON * landing.t.abs().max(f64::MIN_POSITIVE);
+    let mut step = dt.abs().max(ulps).copysign(dt);
+    for _ in 0..4 {
+        let g_now = g(landing.t, &landing.y);
+        if g_now == 0.0 || g_now.signum() != g_start.signum() || step == 0.0 {
+            return;
+        }
+        let (t1, y1) = (landing.t + step, landing.y + f * step);
+        landing.dense.end_with(t1, y1);
+        landing.t = t1;
+        landing.y = y1;
+        step *= 2.0;
+    }
 }
 
 /// A Newton correction `dt` below rounding of the time.
@@ -327,8 +349,8 @@ fn settled(dt: f64, t: f64, h_step: f64) -> bool {
 const GLIDE_ERROR: f64 = 1e-2;
 
 /// Moves the landed state by `dt` along the solution with Heun's second-order step from its slope
-/// `f` (Hairer–Nørsett–Wanner I, §II.1), extends or cuts the dense output to the new time, and
-/// returns the slope there; `None` (nothing moved) where the move is too long for the tolerance
+/// `f` (Hairer–Nørsett–Wanner I, §II.1), ends the dense output there ([`DenseOutput::end_with`]),
+/// and returns the slope there; `None` (nothing moved) where the move is too long for the tolerance
 /// (its Euler error above [`GLIDE_ERROR`]) or leaves the domain of f.
 fn glide(
     sys: &mut dyn OdeSystem,
@@ -349,19 +371,7 @@ fn glide(
     {
         return None;
     }
-    if dt > 0.0 {
-        // The slope at the Euler end stands in for the one at y1 (they differ by O(dt²)).
-        landing.dense.push(Segment::Hermite {
-            t0,
-            h: dt,
-            y0,
-            y1,
-            f0: f,
-            f1: f_euler,
-        });
-    } else {
-        landing.dense.truncate_at(t1);
-    }
+    landing.dense.end_with(t1, y1);
     landing.t = t1;
     landing.y = y1;
     Some(f_euler)
