@@ -431,4 +431,33 @@ mod tests {
         assert_eq!(s.eval(0.1), State::new(0.3, -1.1));
         assert_eq!(s.eval(0.1 + 0.7), State::new(1.0 / 3.0, 2.0f64.sqrt()));
     }
+
+    #[test]
+    fn an_end_state_is_returned_exactly_at_and_after_the_end() {
+        let mut d = DenseOutput::new();
+        d.push(line(0.0, 1.0, 2.0));
+        // A glide a little past the segment, then one back inside it.
+        let past = State::new(2.0 + 1e-9, 2.0);
+        d.end_with(1.0 + 5e-10, past);
+        assert_eq!(d.t_end(), 1.0 + 5e-10);
+        assert_eq!(d.eval(d.t_end()), past);
+        assert_eq!(d.eval(7.0), past);
+        // Inside, the segment as it was.
+        assert!((d.eval(0.5) - State::new(1.0, 2.0)).norm() < 1e-15);
+        let inside = State::new(1.5, 2.0);
+        d.end_with(0.75, inside);
+        assert_eq!((d.t_end(), d.eval(0.75)), (0.75, inside));
+        // Shifted with the rest; appended to another output it stays its end; a push ends it.
+        d.shift(State::new(1.0, 0.0));
+        assert_eq!(d.eval(0.75), State::new(2.5, 2.0));
+        let mut whole = DenseOutput::new();
+        whole.push(line(-1.0, 1.0, 2.0));
+        whole.append(&d);
+        assert_eq!(
+            (whole.t_end(), whole.eval(0.8)),
+            (0.75, State::new(2.5, 2.0))
+        );
+        whole.push(line(0.75, 1.0, 2.0));
+        assert_eq!(whole.eval(1.75), State::new(3.5, 2.0));
+    }
 }

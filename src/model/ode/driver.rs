@@ -322,7 +322,13 @@ fn land(
 /// Moves a settled glide onto the far side of the event (or onto g = 0) where rounding left it on
 /// the near side, by Euler moves of a few ulps of t: an integration restarted from there must not
 /// see the same event again right after its start.
-fn cross(landing: &mut Integration, g: &dyn Fn(f64, &State) -> f64, g_start: f64, f: State, dt: f64) {
+fn cross(
+    landing: &mut Integration,
+    g: &dyn Fn(f64, &State) -> f64,
+    g_start: f64,
+    f: State,
+    dt: f64,
+) {
     let ulps = 4.0 * f64::EPSILON * landing.t.abs().max(f64::MIN_POSITIVE);
     let mut step = dt.abs().max(ulps).copysign(dt);
     for _ in 0..4 {
