@@ -168,8 +168,9 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     if let Some(known) = known_turn {
         opts.t_max = known.t_turn;
     }
-    let mut loading = ode::integrate(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
-        .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    let mut loading =
+        ode::integrate_gliding(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
+            .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
     // (A breakpoint met at the known turn leaves no tail.)
     if breakpoint.is_some()
         && loading.stop == (Stop::Event { index: 1 - skip })
@@ -190,7 +191,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             max_steps: ro.max_steps - spent,
             ..opts
         };
-        let tail = ode::integrate(
+        let tail = ode::integrate_gliding(
             ro.method,
             &mut sys,
             loading.t,
@@ -288,7 +289,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     let mut sys = ImpactSystem::new(law, Phase::Unloading, usc);
     sys.x_offset = offset;
     let shift = State::new(offset, 0.0);
-    let mut unloading = ode::integrate(
+    let mut unloading = ode::integrate_gliding(
         ro.method,
         &mut sys,
         t_switch,

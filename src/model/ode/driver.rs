@@ -42,6 +42,7 @@ pub(super) fn integrate(
     y0: State,
     events: &[Event],
     opts: &Options,
+    glide: bool,
 ) -> Result<Integration, OdeError> {
     validate(method, t0, opts)?;
     if !is_finite(&y0) {
@@ -59,19 +60,19 @@ pub(super) fn integrate(
             // `validate` guarantees dt is present and positive.
             let dt = opts.dt.unwrap_or(f64::NAN);
             let scheme = FixedStep::new(kind, sys, &mut stats, t0, &y0, dt, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
         Method::Dopri5 => {
             let scheme = Dopri5::new(sys, &mut stats, t0, &y0, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
         Method::Dop853 => {
             let scheme = Dop853::new(sys, &mut stats, t0, &y0, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
         Method::Radau5 => {
             let scheme = Radau5::new(sys, &mut stats, t0, &y0, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
     }
 }
@@ -133,6 +134,7 @@ fn run<S: Scheme>(
     y0: State,
     events: &[Event],
     opts: &Options,
+    glide: bool,
 ) -> Result<Integration, OdeError> {
     let mut dense = DenseOutput::with_capacity(RESERVED_SEGMENTS);
     let mut tracker = EventTracker::new(events, t0, &y0);
@@ -160,6 +162,7 @@ fn run<S: Scheme>(
                     &events[hit.index],
                     hit.t,
                     opts,
+                    glide,
                 )?)
             } else {
                 None
@@ -218,7 +221,8 @@ const LANDING_CORRECTIONS: usize = 3;
 /// event function along the new end state (its rate first taken from the straddling `segment`,
 /// then by secant through the landed states).
 ///
-/// A correction is a short move along the solution from the landed state ([`glide`]) when it
+/// With `glides` (`ode::integrate_gliding`), a correction is a short move along the solution from
+/// the landed state ([`glide`]) when it
 /// is short enough for a second-order step to keep the tolerance — after the first landing it
 /// nearly always is, the interpolant's root being off by about the local error — and a retaken
 /// step otherwise. A glide costs one force evaluation (the first two) where a retaken DOP853 step
@@ -233,6 +237,7 @@ fn land(
     event: &Event,
     t_hit: f64,
     opts: &Options,
+    glides: bool,
 ) -> Result<Integration, OdeError> {
     let g = |t: f64, y: &State| (event.g)(t, y);
     // dg/dt along the solution, by a central difference on the straddling step's interpolant.
@@ -259,7 +264,7 @@ fn land(
             max_steps: opts.max_steps.saturating_sub(spent).max(1),
             ..*opts
         };
-        let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts)?;
+        let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts, false)?;
         *stats += landing.stats;
         let segments = landing.dense.segments();
         first_step = (segments.len() > 1).then(|| segments[0].t_end() - segments[0].t_start());
@@ -280,6 +285,10 @@ fn land(
             || next > t_start + 2.0 * h_step
         {
             return Ok(landing);
+        }
+        if !glides {
+            target = next;
+            continue;
         }
         let f = rhs(sys, stats, landing.t, &landing.y);
         let mut landing = landing;
