@@ -28,6 +28,7 @@ mod impact_paper;
 mod impact_props;
 mod impact_stability;
 mod impact_trajectory;
+mod integrated_landing;
 mod laws_common;
 mod laws_kuwabara_kono;
 mod laws_line_exact;

@@ -46,6 +46,10 @@ pub(crate) struct KnownEnds {
     pub t_turn: f64,
     pub t_end: f64,
     pub end: End,
+    /// Loading still finds maximum compression as its event (and unloading runs to `t_end`):
+    /// the sampled curves meet the turn, where dry friction's force jumps and peaks, where the
+    /// integration reaches it.
+    pub find_turn: bool,
 }
 
 /// Both phases of one integrated impact.
@@ -154,17 +158,19 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     let mut sys = ImpactSystem::new(law, Phase::Loading, *sc);
     // Maximum compression is watched for unless known (then its event is skipped); the
     // breakpoint where there is one, after it.
-    let skip = usize::from(ro.known.is_some());
+    let known_turn = ro.known.filter(|known| !known.find_turn);
+    let skip = usize::from(known_turn.is_some());
     let events = if breakpoint.is_some() {
         &loading_events[skip..]
     } else {
         &loading_events[skip..1]
     };
-    if let Some(known) = ro.known {
+    if let Some(known) = known_turn {
         opts.t_max = known.t_turn;
     }
-    let mut loading = ode::integrate(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
-        .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
+    let mut loading =
+        ode::integrate_gliding(ro.method, &mut sys, 0.0, sc.xw(0.0, 1.0), events, &opts)
+            .map_err(|e| impact_error(ro.method, e, sc.t, sys.growth))?;
     // (A breakpoint met at the known turn leaves no tail.)
     if breakpoint.is_some()
         && loading.stop == (Stop::Event { index: 1 - skip })
@@ -185,7 +191,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             max_steps: ro.max_steps - spent,
             ..opts
         };
-        let tail = ode::integrate(
+        let tail = ode::integrate_gliding(
             ro.method,
             &mut sys,
             loading.t,
@@ -198,15 +204,13 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
             OdeError::StepBudgetExhausted { t, steps } => exhausted(steps, t),
             e => impact_error(ro.method, e, sc.t, sys.growth),
         })?;
-        for segment in tail.dense.segments() {
-            loading.dense.push(segment.clone());
-        }
+        loading.dense.append(&tail.dense);
         loading.stats += tail.stats;
         loading.t = tail.t;
         loading.y = tail.y;
         loading.stop = tail.stop;
     }
-    if loading.stop == Stop::TimeLimit && ro.known.is_none() {
+    if loading.stop == Stop::TimeLimit && known_turn.is_none() {
         return Err(no_separation);
     }
     let mut force_evals = sys.force_evals;
@@ -285,7 +289,7 @@ pub(crate) fn run<L: ForceLaw>(law: &L, sc: &Scales, ro: &RunOptions) -> Result<
     let mut sys = ImpactSystem::new(law, Phase::Unloading, usc);
     sys.x_offset = offset;
     let shift = State::new(offset, 0.0);
-    let mut unloading = ode::integrate(
+    let mut unloading = ode::integrate_gliding(
         ro.method,
         &mut sys,
         t_switch,

@@ -231,8 +231,12 @@ impl Segment {
 pub struct DenseOutput {
     segments: Vec<Segment>,
     /// End of the covered interval: the last segment's end, or the located event / `t_max` after
-    /// [`DenseOutput::truncate_at`] (the last segment may extend beyond it).
+    /// [`DenseOutput::truncate_at`] (the last segment may extend beyond it), or a little beyond
+    /// the last segment after [`DenseOutput::end_with`].
     end: f64,
+    /// The state at `end` when it is not the last segment's value there: an event's landed state
+    /// after its last glide (`ode::integrate`).
+    end_state: Option<State>,
 }
 
 impl DenseOutput {
@@ -245,12 +249,36 @@ impl DenseOutput {
         DenseOutput {
             segments: Vec::with_capacity(n),
             end: 0.0,
+            end_state: None,
         }
     }
 
     pub fn push(&mut self, segment: Segment) {
         self.end = segment.t_end();
+        self.end_state = None;
         self.segments.push(segment);
+    }
+
+    /// Appends `other`'s segments, and its end: a continuation of this output from where it ends.
+    pub fn append(&mut self, other: &DenseOutput) {
+        for segment in other.segments() {
+            self.push(segment.clone());
+        }
+        if !other.is_empty() {
+            self.end = other.end;
+            self.end_state = other.end_state;
+        }
+    }
+
+    /// Ends the solution at (t, y), t within rounding of the last segment's covered interval or
+    /// a few local errors beyond it: an event's state, moved onto the event by a glide from the
+    /// landed step's end. Evaluation at or after t returns y exactly; before t, the segments.
+    pub fn end_with(&mut self, t: f64, y: State) {
+        self.segments.retain(|s| s.t_start() < t);
+        if !self.segments.is_empty() {
+            self.end = t;
+            self.end_state = Some(y);
+        }
     }
 
     pub fn segments(&self) -> &[Segment] {
@@ -270,12 +298,16 @@ impl DenseOutput {
         for segment in &mut self.segments {
             segment.shift(dy);
         }
+        if let Some(y) = &mut self.end_state {
+            *y += dy;
+        }
     }
 
     /// Keeps the solution up to t (the located event) and drops what lies beyond; the covered
     /// interval then ends exactly at t.
     pub fn truncate_at(&mut self, t: f64) {
         self.segments.retain(|s| s.t_start() < t);
+        self.end_state = None;
         self.end = match self.segments.last() {
             Some(last) => t.min(last.t_end()),
             None => 0.0,
@@ -307,6 +339,11 @@ impl DenseOutput {
         let Some(last) = self.segments.last() else {
             return State::zeros();
         };
+        if let Some(y) = self.end_state
+            && t >= self.end
+        {
+            return y;
+        }
         // max/min rather than clamp: never panics, even for hand-pushed segments out of order.
         let t = t.max(self.t_start()).min(self.end);
         let i = match *at {
@@ -393,5 +430,34 @@ mod tests {
         };
         assert_eq!(s.eval(0.1), State::new(0.3, -1.1));
         assert_eq!(s.eval(0.1 + 0.7), State::new(1.0 / 3.0, 2.0f64.sqrt()));
+    }
+
+    #[test]
+    fn an_end_state_is_returned_exactly_at_and_after_the_end() {
+        let mut d = DenseOutput::new();
+        d.push(line(0.0, 1.0, 2.0));
+        // A glide a little past the segment, then one back inside it.
+        let past = State::new(2.0 + 1e-9, 2.0);
+        d.end_with(1.0 + 5e-10, past);
+        assert_eq!(d.t_end(), 1.0 + 5e-10);
+        assert_eq!(d.eval(d.t_end()), past);
+        assert_eq!(d.eval(7.0), past);
+        // Inside, the segment as it was.
+        assert!((d.eval(0.5) - State::new(1.0, 2.0)).norm() < 1e-15);
+        let inside = State::new(1.5, 2.0);
+        d.end_with(0.75, inside);
+        assert_eq!((d.t_end(), d.eval(0.75)), (0.75, inside));
+        // Shifted with the rest; appended to another output it stays its end; a push ends it.
+        d.shift(State::new(1.0, 0.0));
+        assert_eq!(d.eval(0.75), State::new(2.5, 2.0));
+        let mut whole = DenseOutput::new();
+        whole.push(line(-1.0, 1.0, 2.0));
+        whole.append(&d);
+        assert_eq!(
+            (whole.t_end(), whole.eval(0.8)),
+            (0.75, State::new(2.5, 2.0))
+        );
+        whole.push(line(0.75, 1.0, 2.0));
+        assert_eq!(whole.eval(1.75), State::new(3.5, 2.0));
     }
 }

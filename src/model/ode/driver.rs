@@ -6,7 +6,7 @@ use super::dopri5::Dopri5;
 use super::events::EventTracker;
 use super::fixed_step::{FixedKind, FixedStep};
 use super::radau5::Radau5;
-use super::step_control::{is_finite, rhs};
+use super::step_control::{error_norm, is_finite, rhs};
 use super::{
     DenseOutput, Event, Integration, Method, OdeError, OdeSystem, Options, Segment, State, Stats,
     Stop,
@@ -42,6 +42,7 @@ pub(super) fn integrate(
     y0: State,
     events: &[Event],
     opts: &Options,
+    glide: bool,
 ) -> Result<Integration, OdeError> {
     validate(method, t0, opts)?;
     if !is_finite(&y0) {
@@ -59,19 +60,19 @@ pub(super) fn integrate(
             // `validate` guarantees dt is present and positive.
             let dt = opts.dt.unwrap_or(f64::NAN);
             let scheme = FixedStep::new(kind, sys, &mut stats, t0, &y0, dt, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
         Method::Dopri5 => {
             let scheme = Dopri5::new(sys, &mut stats, t0, &y0, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
         Method::Dop853 => {
             let scheme = Dop853::new(sys, &mut stats, t0, &y0, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
         Method::Radau5 => {
             let scheme = Radau5::new(sys, &mut stats, t0, &y0, opts)?;
-            run(method, scheme, sys, stats, t0, y0, events, opts)
+            run(method, scheme, sys, stats, t0, y0, events, opts, glide)
         }
     }
 }
@@ -133,6 +134,7 @@ fn run<S: Scheme>(
     y0: State,
     events: &[Event],
     opts: &Options,
+    glide: bool,
 ) -> Result<Integration, OdeError> {
     let mut dense = DenseOutput::with_capacity(RESERVED_SEGMENTS);
     let mut tracker = EventTracker::new(events, t0, &y0);
@@ -160,6 +162,7 @@ fn run<S: Scheme>(
                     &events[hit.index],
                     hit.t,
                     opts,
+                    glide,
                 )?)
             } else {
                 None
@@ -168,9 +171,7 @@ fn run<S: Scheme>(
             let (t_hit, y_hit) = match landed {
                 Some(landing) => {
                     dense.truncate_at(t);
-                    for segment in landing.dense.segments() {
-                        dense.push(segment.clone());
-                    }
+                    dense.append(&landing.dense);
                     (landing.t, landing.y)
                 }
                 None => {
@@ -219,6 +220,13 @@ const LANDING_CORRECTIONS: usize = 3;
 /// end exactly at the located time `t_hit`, and that time is corrected by Newton's method on the
 /// event function along the new end state (its rate first taken from the straddling `segment`,
 /// then by secant through the landed states).
+///
+/// With `glides` (`ode::integrate_gliding`), a correction is a short move along the solution from
+/// the landed state ([`glide`]) when it
+/// is short enough for a second-order step to keep the tolerance — after the first landing it
+/// nearly always is, the interpolant's root being off by about the local error — and a retaken
+/// step otherwise. A glide costs one force evaluation (the first two) where a retaken DOP853 step
+/// costs sixteen.
 #[allow(clippy::too_many_arguments)]
 fn land(
     method: Method,
@@ -229,6 +237,7 @@ fn land(
     event: &Event,
     t_hit: f64,
     opts: &Options,
+    glides: bool,
 ) -> Result<Integration, OdeError> {
     let g = |t: f64, y: &State| (event.g)(t, y);
     // dg/dt along the solution, by a central difference on the straddling step's interpolant.
@@ -245,7 +254,7 @@ fn land(
     // there (a step ending on the event can be harder than the one straddling it, e.g. a force
     // ∝ x^¼ ending at x = 0), and the corrections move the target by far less than a step.
     let mut first_step: Option<f64> = None;
-    loop {
+    let (mut landing, mut f) = loop {
         let spent = stats.steps + stats.rejected_steps;
         let span = target - t_start;
         let sub_opts = Options {
@@ -255,7 +264,7 @@ fn land(
             max_steps: opts.max_steps.saturating_sub(spent).max(1),
             ..*opts
         };
-        let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts)?;
+        let landing = integrate(method, sys, t_start, y_start, &[], &sub_opts, false)?;
         *stats += landing.stats;
         let segments = landing.dense.segments();
         first_step = (segments.len() > 1).then(|| segments[0].t_end() - segments[0].t_start());
@@ -269,20 +278,118 @@ fn land(
         previous = Some((landing.t, g_landed));
         let dt = -g_landed / rate;
         corrections += 1;
-        // Corrections below rounding of t, a non-finite rate, or a target that would fall out of
-        // the straddling step's reach: the landed state stands.
-        let settled =
-            !(dt.is_finite()) || dt.abs() <= 4.0 * f64::EPSILON * target.abs().max(h_step);
         let next = target + dt;
-        if settled
+        if settled(dt, target, h_step)
             || corrections > LANDING_CORRECTIONS
             || next <= t_start
             || next > t_start + 2.0 * h_step
         {
             return Ok(landing);
         }
+        if !glides {
+            target = next;
+            continue;
+        }
+        let f = rhs(sys, stats, landing.t, &landing.y);
+        let mut landing = landing;
+        if is_finite(&f)
+            && let Some(f_new) = glide(sys, stats, &mut landing, f, dt, opts)
+        {
+            break (landing, f_new);
+        }
         target = next;
+    };
+    // The remaining corrections glide on from there, each with the secant through the last two
+    // states.
+    let g_start = g(t_start, &y_start);
+    let (mut t_prev, mut g_prev) = previous.unwrap_or((t_start, g(t_start, &y_start)));
+    while corrections <= LANDING_CORRECTIONS {
+        let g_now = g(landing.t, &landing.y);
+        let secant = (g_now - g_prev) / (landing.t - t_prev);
+        // Both g's are near rounding by now: a secant of the other sign is their noise.
+        if secant.is_finite() && secant * rate > 0.0 {
+            rate = secant;
+        }
+        (t_prev, g_prev) = (landing.t, g_now);
+        let dt = -g_now / rate;
+        if !is_finite(&f) {
+            break;
+        }
+        if settled(dt, landing.t, h_step) {
+            cross(&mut landing, &g, g_start, f, dt);
+            break;
+        }
+        let Some(f_new) = glide(sys, stats, &mut landing, f, dt, opts) else {
+            break;
+        };
+        f = f_new;
+        corrections += 1;
     }
+    Ok(landing)
+}
+
+/// Moves a settled glide onto the far side of the event (or onto g = 0) where rounding left it on
+/// the near side, by Euler moves of a few ulps of t: an integration restarted from there must not
+/// see the same event again right after its start.
+fn cross(
+    landing: &mut Integration,
+    g: &dyn Fn(f64, &State) -> f64,
+    g_start: f64,
+    f: State,
+    dt: f64,
+) {
+    let ulps = 4.0 * f64::EPSILON * landing.t.abs().max(f64::MIN_POSITIVE);
+    let mut step = dt.abs().max(ulps).copysign(dt);
+    for _ in 0..4 {
+        let g_now = g(landing.t, &landing.y);
+        if g_now == 0.0 || g_now.signum() != g_start.signum() || step == 0.0 {
+            return;
+        }
+        let (t1, y1) = (landing.t + step, landing.y + f * step);
+        landing.dense.end_with(t1, y1);
+        landing.t = t1;
+        landing.y = y1;
+        step *= 2.0;
+    }
+}
+
+/// A Newton correction `dt` below rounding of the time.
+fn settled(dt: f64, t: f64, h_step: f64) -> bool {
+    !(dt.is_finite()) || dt.abs() <= 4.0 * f64::EPSILON * t.abs().max(h_step)
+}
+
+/// The largest error an Euler step over a glide's move may have, in units of the local tolerance
+/// (estimated as ½·dt·(f(y + f·dt) − f), Hairer–Nørsett–Wanner I, §II.4): Heun's step over the same
+/// move is a further factor of about dt·y‴/y″ below it.
+const GLIDE_ERROR: f64 = 1e-2;
+
+/// Moves the landed state by `dt` along the solution with Heun's second-order step from its slope
+/// `f` (Hairer–Nørsett–Wanner I, §II.1), ends the dense output there ([`DenseOutput::end_with`]),
+/// and returns the slope there; `None` (nothing moved) where the move is too long for the tolerance
+/// (its Euler error above [`GLIDE_ERROR`]) or leaves the domain of f.
+fn glide(
+    sys: &mut dyn OdeSystem,
+    stats: &mut Stats,
+    landing: &mut Integration,
+    f: State,
+    dt: f64,
+    opts: &Options,
+) -> Option<State> {
+    let (t0, y0) = (landing.t, landing.y);
+    let t1 = t0 + dt;
+    let f_euler = rhs(sys, stats, t1, &(y0 + f * dt));
+    let euler_error = (f_euler - f) * (0.5 * dt);
+    let y1 = y0 + (f + f_euler) * (0.5 * dt);
+    if !is_finite(&y1)
+        || !is_finite(&f_euler)
+        || error_norm(&euler_error, &y0, &y1, opts.atol, opts.rtol) > GLIDE_ERROR
+    {
+        return None;
+    }
+    landing.dense.end_with(t1, y1);
+    landing.t = t1;
+    landing.y = y1;
+    Some(f_euler)
 }
 
 /// The last accepted state also passes the system's check before it is returned.

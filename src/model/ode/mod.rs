@@ -272,5 +272,22 @@ pub fn integrate(
     events: &[Event],
     opts: &Options,
 ) -> Result<Integration, OdeError> {
-    driver::integrate(method, sys, t0, y0, events, opts)
+    driver::integrate(method, sys, t0, y0, events, opts, false)
+}
+
+/// [`integrate`], with the Newton corrections of an event's time after its first landing taken
+/// as glides along the solution from the landed state (Heun's step over the correction, one
+/// force evaluation, kept only where even an Euler step over it is within a hundredth of the
+/// tolerance) rather than as retaken steps (sixteen for DOP853): the same accuracy for fewer
+/// evaluations, and a final state on the event's far side or on it. The impact solver's phases
+/// land this way; other callers keep [`integrate`]'s states bit for bit.
+pub fn integrate_gliding(
+    method: Method,
+    sys: &mut dyn OdeSystem,
+    t0: f64,
+    y0: State,
+    events: &[Event],
+    opts: &Options,
+) -> Result<Integration, OdeError> {
+    driver::integrate(method, sys, t0, y0, events, opts, true)
 }
