@@ -13,10 +13,12 @@ mod grid;
 pub mod lyapunov;
 mod motion;
 mod run;
+mod start;
 
 pub use difference::{Agreement, DifferenceCell, difference};
 pub use grid::{Axis, Grid, Shard};
 pub use motion::{
     CHATTER_SPEED, HOLDING_CONTACT, Motion, Tolerances, from_exponent, from_history, period_of,
 };
-pub use run::{Cell, MapOptions, MapRows, cell, contact_at, map};
+pub use run::{Cell, MapOptions, MapRows, cell, check, contact_at, map, row};
+pub use start::period_one;
