@@ -90,9 +90,13 @@ pub fn fitted(app: &App) -> (usize, usize) {
 /// The study the settings ask for on `model`.
 pub fn study(app: &App, model: &SystemModel) -> MapStudy {
     let s = &app.views.map.settings;
+    let mut contacts = system_settings::contacts(model, app.focused);
+    if s.rigid_only {
+        contacts.truncate(1);
+    }
     MapStudy {
         model: model.clone(),
-        contacts: system_settings::contacts(model, app.focused),
+        contacts,
         grid: s.grid(model, fitted(app)),
         options: s.options(),
         start: s.start,

@@ -288,7 +288,7 @@ fn form(frame: &mut Frame, a: &Areas, app: &App, model: &SystemModel, roomy: boo
                 (false, _) => "  ←→↑↓ the cursor · PgUp the form",
                 (_, Some(Row::Key(_))) => "  ← → any key of the system",
                 (_, Some(Row::Points(_))) => "  Enter types · ← → ½× 2×",
-                (_, Some(Row::Start | Row::Shown)) => "  ← → the other",
+                (_, Some(Row::Start | Row::Stops | Row::Shown)) => "  ← → the other",
                 _ => "  Enter types it (0.5 mm) · ← → 5 %",
             },
             theme.style(Role::Muted),
@@ -352,7 +352,7 @@ fn map_pane(
         frame.render_widget(block, a.pane);
         let text = match (computing, data(app)) {
             (true, _) => "computing…",
-            (false, Some(_)) if shown != Shown::Rigid => "no compliant map: see the notes",
+            (false, Some(_)) if shown != Shown::Rigid => "no compliant map: stops are rigid only",
             _ if app.views.map.cancelled.is_some() => "cancelled: Enter on the map computes it",
             _ => "no map yet",
         };

@@ -32,11 +32,12 @@ pub enum Row {
     To(Which),
     Points(Which),
     Start,
+    Stops,
     Shown,
 }
 
 /// Every row, in order.
-pub const ROWS: [Row; 10] = [
+pub const ROWS: [Row; 11] = [
     Row::Key(Which::X),
     Row::From(Which::X),
     Row::To(Which::X),
@@ -46,6 +47,7 @@ pub const ROWS: [Row; 10] = [
     Row::To(Which::Y),
     Row::Points(Which::Y),
     Row::Start,
+    Row::Stops,
     Row::Shown,
 ];
 
@@ -61,6 +63,7 @@ impl Row {
             Row::To(Which::Y) => "y to",
             Row::Points(Which::Y) => "y points",
             Row::Start => "rows start",
+            Row::Stops => "stops",
             Row::Shown => "map shown",
         }
     }
@@ -111,6 +114,8 @@ pub struct Settings {
     pub x: AxisSetting,
     pub y: AxisSetting,
     pub start: Start,
+    /// The rigid stop only: no compliant map (nor difference), a map in a fraction of the time.
+    pub rigid_only: bool,
     pub shown: Shown,
     /// Transient, recorded and exponent impacts of each cell; `None`: those of `hertz-tui map`
     /// (300, 64, 200).
@@ -243,6 +248,11 @@ impl Settings {
                 Start::Rest => "at rest".into(),
                 Start::PeriodOne => "on the period-1 orbit".into(),
             },
+            Row::Stops => if self.rigid_only {
+                "rigid only".into()
+            } else {
+                "rigid and compliant".into()
+            },
             Row::Shown => self.shown.name().into(),
         }
     }
@@ -255,6 +265,7 @@ impl Settings {
                 Start::Rest => "rest".into(),
                 Start::PeriodOne => "period-1".into(),
             },
+            Row::Stops => if self.rigid_only { "rigid" } else { "both" }.into(),
             _ => self.show(row, model, fitted),
         }
     }
@@ -293,6 +304,16 @@ impl Settings {
                         return Err(format!(
                             "rows start: \"{text}\" is not rest or period-1"
                         ));
+                    }
+                };
+                Ok(())
+            }
+            Row::Stops => {
+                self.rigid_only = match text {
+                    "rigid" | "rigid only" => true,
+                    "both" | "rigid and compliant" => false,
+                    _ => {
+                        return Err(format!("stops: \"{text}\" is not rigid or both"));
                     }
                 };
                 Ok(())
@@ -393,6 +414,10 @@ impl Settings {
                     Start::Rest => Start::PeriodOne,
                     Start::PeriodOne => Start::Rest,
                 };
+                Ok(())
+            }
+            Row::Stops => {
+                self.rigid_only = !self.rigid_only;
                 Ok(())
             }
             Row::Shown => {
