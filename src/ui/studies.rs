@@ -278,15 +278,27 @@ mod tests {
         let second = s.request(bounds(0.4)).unwrap();
         let stop = s.cancel(StudyKind::Bounds).unwrap();
         assert_eq!(stop.spec, StudySpec::Stop(StudyKind::Bounds));
-        assert!(stop.generation > second.generation, "supersedes the running one");
+        assert!(
+            stop.generation > second.generation,
+            "supersedes the running one"
+        );
         assert!(!s.is_pending(StudyKind::Bounds));
-        assert!(!s.accept(failed(&second, 1)), "the cancelled one's outcome is dropped");
+        assert!(
+            !s.accept(failed(&second, 1)),
+            "the cancelled one's outcome is dropped"
+        );
         assert!(matches!(
             s.bounds(),
             Some(Err(StudyError::Sweep(SweepError::TooFewPoints(0))))
         ));
-        assert!(runner::run(&stop, &|| false).is_none(), "a stop computes nothing");
-        assert!(s.request(bounds(0.4)).is_some(), "the same inputs run again");
+        assert!(
+            runner::run(&stop, &|| false).is_none(),
+            "a stop computes nothing"
+        );
+        assert!(
+            s.request(bounds(0.4)).is_some(),
+            "the same inputs run again"
+        );
     }
 
     #[test]

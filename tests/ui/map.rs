@@ -23,6 +23,8 @@ use hertz_tui::ui::update::update;
 use hertz_tui::ui::views::map::settings::{ROWS, Row, Which};
 use ratatui::crossterm::event::KeyCode;
 
+use hertz_tui::model::study::runner;
+
 use super::render::settle;
 use super::system::{press, screen, type_in};
 
@@ -39,6 +41,27 @@ fn app_on(name: &str, width: u16, height: u16) -> App {
     update(&mut app, Action::Tab(Tab::named("map").unwrap()));
     app.take_studies();
     app
+}
+
+/// Runs the latest request of each kind of study only: the earlier ones, superseded on the
+/// app's queue, would only cost the tests time.
+fn settle_latest(app: &mut App) {
+    loop {
+        let jobs = app.take_studies();
+        if jobs.is_empty() {
+            break;
+        }
+        let mut latest: Vec<StudyJob> = Vec::new();
+        for job in jobs {
+            latest.retain(|j| j.spec.kind() != job.spec.kind());
+            latest.push(job);
+        }
+        for job in latest {
+            if let Some(outcome) = runner::run(&job, &|| false) {
+                update(app, Action::Studied(Ok(outcome)));
+            }
+        }
+    }
 }
 
 /// Moves the form's cursor to `row` and types `value` into it.
@@ -84,7 +107,12 @@ fn command_cells(app: &App, contact: &str) -> Vec<CliCell> {
     .to_vec();
     for a in [&grid.x, &grid.y] {
         args.extend([
-            if std::ptr::eq(a, &grid.x) { "--x" } else { "--y" }.to_string(),
+            if std::ptr::eq(a, &grid.x) {
+                "--x"
+            } else {
+                "--y"
+            }
+            .to_string(),
             a.param.path(),
             "--from".into(),
             a.from.to_string(),
@@ -100,7 +128,11 @@ fn command_cells(app: &App, contact: &str) -> Vec<CliCell> {
         .args(&args)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8(out.stdout).unwrap();
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("contact,"))
@@ -144,7 +176,8 @@ fn plot_of(g: &[Vec<char>]) -> Plot {
         .enumerate()
         .find_map(|(r, l)| {
             // The axis line: its corner after the y labels' blank columns.
-            let c = (7..l.len()).find(|&c| l[c] == '└' && l[c - 7..c].iter().all(|&ch| ch == ' '))?;
+            let c =
+                (7..l.len()).find(|&c| l[c] == '└' && l[c - 7..c].iter().all(|&ch| ch == ' '))?;
             Some((r, c))
         })
         .expect("an x axis");
@@ -190,7 +223,10 @@ fn si(unit: &str, base: &str) -> f64 {
 
 /// The unit in brackets on the legend's line of an axis (`across` or `up`).
 fn axis_unit(s: &str, which: &str) -> String {
-    let line = s.lines().find(|l| l.contains(&format!("{which}: "))).unwrap();
+    let line = s
+        .lines()
+        .find(|l| l.contains(&format!("{which}: ")))
+        .unwrap();
     let open = line.find('[').unwrap();
     let close = line.find(']').unwrap();
     line[open + 1..close].to_string()
@@ -220,7 +256,7 @@ fn a_cell_read_through_the_ticks_and_the_cursor_is_the_commands_cell() {
     let mut app = app_on("bouncing-ball", w, h);
     set(&mut app, Row::Points(Which::X), "12");
     set(&mut app, Row::Points(Which::Y), "5");
-    settle(&mut app);
+    settle_latest(&mut app);
     let cli = command_cells(&app, "both");
     let law = app.focused.to_string();
     let data = hertz_tui::ui::views::map::data(&app).unwrap().clone();
@@ -229,12 +265,18 @@ fn a_cell_read_through_the_ticks_and_the_cursor_is_the_commands_cell() {
     let s = screen(&app, w, h);
     let plot = plot_of(&grid_of(&s));
     assert!(plot.x_ticks.len() >= 3 && plot.y_ticks.len() >= 2, "{s}");
-    let (xs, ys) = (si(&axis_unit(&s, "across"), "Hz"), si(&axis_unit(&s, "up"), "m"));
+    let (xs, ys) = (
+        si(&axis_unit(&s, "across"), "Hz"),
+        si(&axis_unit(&s, "up"), "m"),
+    );
     let nearest = |a: &hertz_tui::model::system::map::Axis, v: f64| {
         let t = (v - a.from) / (a.to - a.from) * (a.points - 1) as f64;
         let i = t.round() as usize;
         // The tick's cell is the one nearest its value: within half a cell.
-        assert!((t - i as f64).abs() <= 0.5 + 1e-9, "{v} is off the grid {a:?}");
+        assert!(
+            (t - i as f64).abs() <= 0.5 + 1e-9,
+            "{v} is off the grid {a:?}"
+        );
         i
     };
     let g = grid_of(&s);
@@ -243,7 +285,11 @@ fn a_cell_read_through_the_ticks_and_the_cursor_is_the_commands_cell() {
         for &(row, vy) in &plot.y_ticks {
             let (ix, iy) = (nearest(&grid.x, vx * xs), nearest(&grid.y, vy * ys));
             let cell = find(&cli, "rigid", ix, iy);
-            assert_eq!(g[row][col], look_of(cell).1, "({vx}, {vy}) → ({ix}, {iy}) {cell:?}\n{s}");
+            assert_eq!(
+                g[row][col],
+                look_of(cell).1,
+                "({vx}, {vy}) → ({ix}, {iy}) {cell:?}\n{s}"
+            );
             read += 1;
             // The cursor there reads both stops' values, as the command has them.
             update(&mut app, Action::Click(col as u16, row as u16));
@@ -253,7 +299,10 @@ fn a_cell_read_through_the_ticks_and_the_cursor_is_the_commands_cell() {
             let line = |name: &str| s.lines().find(|l| l.contains(name)).unwrap().to_string();
             for stop in ["rigid", law.as_str()] {
                 let c = find(&cli, stop, ix, iy);
-                assert!(line(" motion ").contains(&format!(" {} ", c.motion)), "{c:?}\n{s}");
+                assert!(
+                    line(" motion ").contains(&format!(" {} ", c.motion)),
+                    "{c:?}\n{s}"
+                );
                 let nm = match (c.impacts, c.periods) {
                     (Some(n), Some(m)) => format!("{n}:{m}"),
                     _ => "—".into(),
@@ -273,7 +322,7 @@ fn the_legend_counts_are_the_commands_for_every_map() {
     let mut app = app_on("impact-oscillator", w, h);
     set(&mut app, Row::Points(Which::X), "10");
     set(&mut app, Row::Points(Which::Y), "4");
-    settle(&mut app);
+    settle_latest(&mut app);
     let cli = command_cells(&app, "both");
     let law = app.focused.to_string();
     for (contact, title) in [
@@ -302,4 +351,165 @@ fn the_legend_counts_are_the_commands_for_every_map() {
         assert_eq!(text.matches(" %)").count(), counts.len(), "{text}");
         press(&mut app, KeyCode::Char('c'));
     }
+}
+
+/// Γ_SN = π(1−e)/(1+e) and Γ_PD = √(Γ_SN² + (2(1+e²)/(1+e)²)²) (docs/physics.md §8.1).
+fn thresholds(e: f64) -> (f64, f64) {
+    let sn = std::f64::consts::PI * (1.0 - e) / (1.0 + e);
+    let b = 2.0 * (1.0 + e * e) / (1.0 + e).powi(2);
+    (sn, (sn * sn + b * b).sqrt())
+}
+
+#[test]
+fn the_bouncing_balls_period_one_region_lies_between_gamma_sn_and_gamma_pd() {
+    let (w, h) = (160, 48);
+    let mut app = app_on("bouncing-ball", w, h);
+    app.views.map.settings.budget = None;
+    set(&mut app, Row::Stops, "rigid");
+    set(&mut app, Row::Start, "period-1");
+    set(&mut app, Row::Key(Which::X), "system.gamma");
+    set(&mut app, Row::From(Which::X), "1.1");
+    set(&mut app, Row::To(Which::X), "1.7");
+    set(&mut app, Row::Points(Which::X), "25");
+    set(&mut app, Row::Key(Which::Y), "impact.restitution");
+    set(&mut app, Row::From(Which::Y), "0.5");
+    set(&mut app, Row::To(Which::Y), "0.6");
+    set(&mut app, Row::Points(Which::Y), "2");
+    settle_latest(&mut app);
+    let s = screen(&app, w, h);
+    let g = grid_of(&s);
+    let plot = plot_of(&g);
+    // Γ at a column, from the x ticks (a label is its column's cell to half a cell).
+    let (&(c0, v0), &(c1, v1)) = (plot.x_ticks.first().unwrap(), plot.x_ticks.last().unwrap());
+    let gamma = |col: usize| v0 + (v1 - v0) * (col as f64 - c0 as f64) / (c1 as f64 - c0 as f64);
+    let cell = (1.7 - 1.1) / 24.0;
+    let (mut inside, mut beyond) = (0, 0);
+    assert_eq!(plot.y_ticks.len(), 2, "a tick a row\n{s}");
+    for &(row, e) in &plot.y_ticks {
+        let (sn, pd) = thresholds(e);
+        let first = (0..c0)
+            .rev()
+            .find(|&c| matches!(g[row][c], '│' | '┤'))
+            .unwrap()
+            + 1;
+        for col in first..g[row].len() {
+            let glyph = g[row][col];
+            if glyph == ' ' || glyph == '│' {
+                break;
+            }
+            let at = gamma(col);
+            // Within 0.03 of a threshold a multiplier is near the unit circle: the transient is
+            // slow (tests/model/systems_map.rs); a cell's width more for reading it off the ticks.
+            if at > sn + 0.03 + cell && at < pd - 0.03 - cell {
+                inside += 1;
+                assert_eq!(
+                    glyph, '1',
+                    "Γ = {at:.3}, e = {e}: inside ({sn:.3}, {pd:.3})\n{s}"
+                );
+            } else if at > pd + 0.03 + cell {
+                beyond += 1;
+                assert_ne!(glyph, '1', "Γ = {at:.3}, e = {e}: past Γ_PD = {pd:.3}\n{s}");
+            }
+        }
+    }
+    assert!(inside >= 40 && beyond >= 20, "{inside} {beyond}\n{s}");
+    assert!(s.contains("periodic, n = 1 impact"), "{s}");
+}
+
+#[test]
+fn esc_cancels_a_map_being_computed_and_keeps_the_rows_done() {
+    let (w, h) = (120, 40);
+    let mut app = app_on("bouncing-ball", w, h);
+    set(&mut app, Row::Stops, "rigid");
+    set(&mut app, Row::Points(Which::X), "400");
+    set(&mut app, Row::Points(Which::Y), "200");
+    let map_job = app
+        .take_studies()
+        .into_iter()
+        .rev()
+        .find(|j| j.spec.kind() == StudyKind::Map)
+        .unwrap();
+    let (tx, rx) = mpsc::channel();
+    let queue = Jobs::spawn("test-map", 1, move |report| tx.send(report).is_ok()).unwrap();
+    assert!(queue.submit(map_job));
+    // 80 000 cells: rows come in reports long before the end.
+    let first = rx.recv().unwrap().unwrap();
+    assert!(first.result.is_partial());
+    update(&mut app, Action::Studied(Ok(first)));
+    let s = screen(&app, w, h);
+    assert!(s.contains("computing…") && s.contains("/200 rows"), "{s}");
+    press(&mut app, KeyCode::Esc);
+    assert!(!app.studies.is_pending(StudyKind::Map));
+    let jobs = app.take_studies();
+    assert_eq!(jobs.len(), 1, "{jobs:?}");
+    assert_eq!(jobs[0].spec, StudySpec::Stop(StudyKind::Map));
+    assert!(queue.submit(jobs.into_iter().next().unwrap()));
+    // A quick study after it: the queue's one thread reaches it only once the map has stopped,
+    // and a map that ran on to its end would report the whole first.
+    let model = hertz_tui::ui::views::map::model(&app).unwrap();
+    assert!(queue.submit(StudyJob {
+        generation: 1,
+        spec: StudySpec::System(Box::new(SystemStudy {
+            model,
+            contacts: Vec::new(),
+            run: RunOptions::default(),
+        })),
+    }));
+    loop {
+        let outcome = rx.recv().unwrap().unwrap();
+        match &outcome.result {
+            StudyResult::Map(d) => {
+                assert!(!d.complete, "the map ran to its end");
+                update(&mut app, Action::Studied(Ok(outcome)));
+            }
+            StudyResult::System(_) => break,
+            other => panic!("{other:?}"),
+        }
+    }
+    let s = screen(&app, w, h);
+    assert!(s.contains("cancelled"), "{s}");
+    assert!(s.contains("map cancelled"), "the status line says so\n{s}");
+    assert!(
+        s.contains(" cells ("),
+        "the rows done stay, with their legend\n{s}"
+    );
+    // Not asked for again by the next key, until asked on the map.
+    press(&mut app, KeyCode::Char('c'));
+    assert!(app.take_studies().is_empty());
+    press(&mut app, KeyCode::PageDown);
+    press(&mut app, KeyCode::Enter);
+    let again = app.take_studies();
+    assert!(
+        again.iter().any(|j| j.spec.kind() == StudyKind::Map),
+        "{again:?}"
+    );
+}
+
+#[test]
+fn a_scene_without_a_system_says_how_to_add_one_and_takes_every_key() {
+    let mut app = app_on("fig5-steel-sphere-r10-plate", 120, 40);
+    for (w, h) in [(80, 24), (120, 40)] {
+        let s = screen(&app, w, h);
+        assert!(s.contains("no [system] table"), "{s}");
+        assert!(s.contains("system view (6)"), "{s}");
+        assert!(s.contains("kind = \"bouncing-ball\""), "{s}");
+    }
+    for code in [
+        KeyCode::Up,
+        KeyCode::Down,
+        KeyCode::Left,
+        KeyCode::Right,
+        KeyCode::Enter,
+        KeyCode::Esc,
+        KeyCode::PageDown,
+        KeyCode::Char('c'),
+        KeyCode::Char('f'),
+        KeyCode::Char('r'),
+    ] {
+        press(&mut app, code);
+        let _ = screen(&app, 80, 24);
+    }
+    update(&mut app, Action::Click(100, 20));
+    assert!(app.take_studies().is_empty(), "nothing to map");
+    assert!(hertz_tui::ui::views::VIEWS.iter().any(|v| v.id() == "map"));
 }

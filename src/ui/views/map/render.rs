@@ -314,22 +314,26 @@ fn ticks(axis: &Axis, model: &SystemModel, max: usize) -> (Vec<Tick>, String) {
     let nice = nice_axis(lo, hi, u, max);
     let half = (hi - lo) / (2.0 * (axis.points.max(2) - 1) as f64);
     let n = axis.points.max(2);
-    let ticks = nice
-        .labels
-        .iter()
-        .filter_map(|label| {
-            let value = label.parse::<f64>().ok()? * nice.scale;
-            if value < lo - half || value > hi + half {
-                return None;
-            }
-            let t = (value - axis.from) / (axis.to - axis.from) * (n - 1) as f64;
-            let index = (t.round().max(0.0) as usize).min(n - 1);
-            Some(Tick {
-                label: label.clone(),
-                index,
-            })
-        })
-        .collect();
+    // Each cell keeps the tick nearest its value: a label is its cell's value to half a cell.
+    let mut ticks: Vec<(Tick, f64)> = Vec::new();
+    for label in &nice.labels {
+        let Ok(shown) = label.parse::<f64>() else {
+            continue;
+        };
+        let value = shown * nice.scale;
+        if value < lo - half || value > hi + half {
+            continue;
+        }
+        let t = (value - axis.from) / (axis.to - axis.from) * (n - 1) as f64;
+        let index = (t.round().max(0.0) as usize).min(n - 1);
+        let off = (value - axis.value(index)).abs();
+        match ticks.iter_mut().find(|(tick, _)| tick.index == index) {
+            Some(entry) if entry.1 <= off => {}
+            Some(entry) => *entry = (Tick { label: label.clone(), index }, off),
+            None => ticks.push((Tick { label: label.clone(), index }, off)),
+        }
+    }
+    let ticks = ticks.into_iter().map(|(tick, _)| tick).collect();
     let unit = format!("{}{}", nice.prefix.symbol, u.symbol);
     (ticks, unit)
 }
