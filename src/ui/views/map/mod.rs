@@ -81,9 +81,14 @@ pub fn screen_areas(app: &App) -> Option<Areas> {
 
 /// The points that fit the map's pane at the app's terminal size.
 pub fn fitted(app: &App) -> (usize, usize) {
+    let cap = if app.views.map.settings.rigid_only {
+        settings::MAX_RIGID_CELLS
+    } else {
+        settings::MAX_CELLS
+    };
     match screen_areas(app) {
-        Some(a) => fitted_points(a.cells.width, a.cells.height),
-        None => fitted_points(48, 12),
+        Some(a) => fitted_points(a.cells.width, a.cells.height, cap),
+        None => fitted_points(48, 12, cap),
     }
 }
 
@@ -118,7 +123,7 @@ impl View for Map {
     }
 
     fn help(&self) -> Option<&'static str> {
-        Some("PgDn cursor on the map · c rigid/compliant/diff · Esc cancel")
+        Some("PgDn map cursor · c rigid/compliant/diff · Esc stop")
     }
 
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {

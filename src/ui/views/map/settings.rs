@@ -14,6 +14,9 @@ use crate::ui::views::system::settings::unit as key_unit;
 /// (docs/maps.md §5), so 300 cells are a few seconds on two cores.
 pub const MAX_CELLS: usize = 300;
 
+/// Cells at most unless set, with the rigid stop only: a rigid cell costs about 0.3 ms.
+pub const MAX_RIGID_CELLS: usize = 5000;
+
 /// Points of an axis at most, typed or stepped.
 pub const MAX_POINTS: usize = 400;
 
@@ -138,14 +141,14 @@ pub fn unit(param: Param, model: &SystemModel) -> Unit {
 }
 
 /// Points of each axis that fit a map of `columns` × `rows` terminal cells: a cell two columns
-/// (about square) or one, at most [`MAX_CELLS`] cells in all.
-pub fn fitted_points(columns: u16, rows: u16) -> (usize, usize) {
+/// (about square) or one, at most `cap` cells in all.
+pub fn fitted_points(columns: u16, rows: u16, cap: usize) -> (usize, usize) {
     let (mut nx, mut ny) = (
         (usize::from(columns) / 2).max(2),
         usize::from(rows).max(2),
     );
-    if nx * ny > MAX_CELLS {
-        let shrink = (MAX_CELLS as f64 / (nx * ny) as f64).sqrt();
+    if nx * ny > cap {
+        let shrink = (cap as f64 / (nx * ny) as f64).sqrt();
         nx = ((nx as f64 * shrink).floor() as usize).max(2);
         ny = ((ny as f64 * shrink).floor() as usize).max(2);
     }
@@ -438,9 +441,10 @@ mod tests {
 
     #[test]
     fn fitted_points_make_a_cell_two_columns_and_stay_under_the_cap() {
-        assert_eq!(fitted_points(40, 12), (20, 12));
+        assert_eq!(fitted_points(40, 12, MAX_CELLS), (20, 12));
+        assert_eq!(fitted_points(100, 30, MAX_RIGID_CELLS), (50, 30));
         for (w, h) in [(120, 40), (200, 60), (80, 20)] {
-            let (nx, ny) = fitted_points(w, h);
+            let (nx, ny) = fitted_points(w, h, MAX_CELLS);
             assert!(nx * ny <= MAX_CELLS, "{w}×{h}: {nx}×{ny}");
             assert!(usize::from(w) / nx >= 2 && usize::from(h) / ny >= 1);
             // The shape is kept: a cell about as wide (in columns) as twice its height.
