@@ -392,8 +392,7 @@ fn the_bouncing_balls_period_one_region_lies_between_gamma_sn_and_gamma_pd() {
             .find(|&c| matches!(g[row][c], '│' | '┤'))
             .unwrap()
             + 1;
-        for col in first..g[row].len() {
-            let glyph = g[row][col];
+        for (col, &glyph) in g[row].iter().enumerate().skip(first) {
             if glyph == ' ' || glyph == '│' {
                 break;
             }

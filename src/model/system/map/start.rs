@@ -28,7 +28,7 @@ pub fn period_one(
             let gamma = amplitude * omega * omega / gravity;
             // Γ_SN = π(1 − e)/(1 + e) (docs/physics.md §8.1).
             let sn = PI * (1.0 - e) / (1.0 + e);
-            if !(gamma > sn) {
+            if gamma.partial_cmp(&sn) != Some(std::cmp::Ordering::Greater) {
                 return Err(SystemError::OrbitDegenerate(
                     "no period-1 orbit below Γ_SN = π(1 − e)/(1 + e)",
                 ));
