@@ -122,10 +122,6 @@ impl View for Map {
         "map"
     }
 
-    fn help(&self) -> Option<&'static str> {
-        Some("PgDn map cursor · c rigid/compliant/diff · Esc stop")
-    }
-
     fn render(&self, frame: &mut Frame, screen: &ScreenLayout, app: &App) {
         render::render(frame, screen, app);
     }
