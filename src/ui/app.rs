@@ -16,7 +16,7 @@ use crate::model::scene_file::{SceneView, system_table};
 use crate::model::scene_fit::FittedKind;
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::model::scene_title::{edits, retitled};
-use crate::model::study::runner::{StudyJob, StudySpec};
+use crate::model::study::runner::{StudyJob, StudyKind, StudySpec};
 use crate::model::system::SystemSpec;
 use crate::model::warnings::{ModelWarning, scene_warnings};
 use crate::model::{ForceModel, ImpactParams, ModelError, Quasistatic, Scene};
@@ -550,6 +550,17 @@ impl App {
     pub(crate) fn queue_study(&mut self, spec: StudySpec) {
         if let Some(job) = self.studies.request(spec) {
             self.study_outbox.push(job);
+        }
+    }
+
+    /// Cancels the study of `kind` if one is pending (its result so far stays); whether it was.
+    pub(crate) fn cancel_study(&mut self, kind: StudyKind) -> bool {
+        match self.studies.cancel(kind) {
+            Some(job) => {
+                self.study_outbox.push(job);
+                true
+            }
+            None => false,
         }
     }
 

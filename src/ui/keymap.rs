@@ -116,7 +116,7 @@ const CLOSING: &[(&str, &str)] = &[
     ("? Esc", "this help · close, cancel, clear the message"),
     (
         "q Ctrl-C",
-        "quit (unsaved: asks; s saves and quits); Ctrl-C twice: now",
+        "quit (unsaved: asks; s saves, quits); Ctrl-C twice: now",
     ),
 ];
 

@@ -10,6 +10,7 @@ use std::sync::Arc;
 
 use crate::model::study::continuation::ContinuedBranches;
 use crate::model::study::fit::FitData;
+use crate::model::study::map::MapData;
 use crate::model::study::runner::{
     self, CurrentPoint, MeasuredBound, RestitutionData, StabilityData, StudyError, StudyJob,
     StudyKind, StudyOutcome, StudyResult, StudySpec, SweepData, WorkPrecisionData,
@@ -100,6 +101,24 @@ impl Studies {
         true
     }
 
+    /// Cancels the running or queued study of `kind`: the job that stops it (none if nothing of
+    /// that kind is pending). Its result so far stays shown; asking for the same inputs again
+    /// computes it anew.
+    pub fn cancel(&mut self, kind: StudyKind) -> Option<StudyJob> {
+        let slot = &mut self.slots[kind.index()];
+        if !slot.pending {
+            return None;
+        }
+        self.last_generation += 1;
+        slot.inputs = None;
+        slot.generation = self.last_generation;
+        slot.pending = false;
+        Some(StudyJob {
+            generation: self.last_generation,
+            spec: StudySpec::Stop(kind),
+        })
+    }
+
     pub fn is_pending(&self, kind: StudyKind) -> bool {
         self.slots[kind.index()].pending
     }
@@ -174,6 +193,14 @@ impl Studies {
         }
     }
 
+    /// The map view's maps, or the rows done so far.
+    pub fn map(&self) -> Option<&Arc<MapData>> {
+        match self.result(StudyKind::Map) {
+            Some(StudyResult::Map(r)) => Some(r),
+            _ => None,
+        }
+    }
+
     pub fn restitution(&self) -> Option<&Result<Arc<RestitutionData>, StudyError>> {
         match self.result(StudyKind::Restitution) {
             Some(StudyResult::Restitution(r)) => Some(r),
@@ -240,6 +267,38 @@ mod tests {
             other => panic!("the tests queue no {other:?} study"),
         };
         StudyJob { generation, spec }
+    }
+
+    #[test]
+    fn a_cancel_stops_the_running_study_keeps_what_it_showed_and_asks_again_on_request() {
+        let mut s = Studies::default();
+        assert_eq!(s.cancel(StudyKind::Bounds), None, "nothing to cancel");
+        let first = s.request(bounds(0.3)).unwrap();
+        assert!(s.accept(failed(&first, 0)));
+        let second = s.request(bounds(0.4)).unwrap();
+        let stop = s.cancel(StudyKind::Bounds).unwrap();
+        assert_eq!(stop.spec, StudySpec::Stop(StudyKind::Bounds));
+        assert!(
+            stop.generation > second.generation,
+            "supersedes the running one"
+        );
+        assert!(!s.is_pending(StudyKind::Bounds));
+        assert!(
+            !s.accept(failed(&second, 1)),
+            "the cancelled one's outcome is dropped"
+        );
+        assert!(matches!(
+            s.bounds(),
+            Some(Err(StudyError::Sweep(SweepError::TooFewPoints(0))))
+        ));
+        assert!(
+            runner::run(&stop, &|| false).is_none(),
+            "a stop computes nothing"
+        );
+        assert!(
+            s.request(bounds(0.4)).is_some(),
+            "the same inputs run again"
+        );
     }
 
     #[test]

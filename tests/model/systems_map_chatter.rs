@@ -169,6 +169,7 @@ fn cell(model: &SystemModel, contact: &Contact) -> map::Cell {
         motion,
         lyapunov,
         contacts,
+        slowest_impact: None,
         error: None,
     }
 }

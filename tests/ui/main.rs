@@ -5,6 +5,7 @@ mod contrast;
 mod cut_words;
 mod e2e_tmux;
 mod fit;
+mod map;
 mod models_pane;
 mod readme_screen;
 mod render;

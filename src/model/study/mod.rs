@@ -2,6 +2,7 @@
 
 pub mod continuation;
 pub mod fit;
+pub mod map;
 pub mod reference;
 pub mod runner;
 pub mod stability;

@@ -13,6 +13,7 @@ use crate::model::restitution::{
 use crate::model::scene::Scene;
 use crate::model::study::continuation::{ContinuationStudy, ContinuedBranches, run_continuation};
 use crate::model::study::fit::{FitData, FitStudy, run_fit};
+use crate::model::study::map::{MapData, MapStudy, run_map};
 use crate::model::study::reference::{SummaryErrors, reference, reference_solution};
 use crate::model::study::stability::{
     StabilityRun, StepBound, critical_step, peak_angular_frequency, runs_at_step,
@@ -69,6 +70,11 @@ pub enum StudySpec {
     Fit(Box<FitStudy>),
     /// A system's periodic orbit continued over the diagram's range, reported stop by stop.
     Continuation(Box<ContinuationStudy>),
+    /// A two-parameter map of a system's motion with each stop, reported row by row.
+    Map(Box<MapStudy>),
+    /// Stops the running study of a kind and computes nothing (a cancel: its result so far stays
+    /// shown).
+    Stop(StudyKind),
 }
 
 /// The kinds of study, one slot each.
@@ -84,10 +90,11 @@ pub enum StudyKind {
     Diagram,
     Fit,
     Continuation,
+    Map,
 }
 
 impl StudyKind {
-    pub const ALL: [StudyKind; 10] = [
+    pub const ALL: [StudyKind; 11] = [
         StudyKind::WorkPrecision,
         StudyKind::Current,
         StudyKind::Runs,
@@ -98,6 +105,7 @@ impl StudyKind {
         StudyKind::Diagram,
         StudyKind::Fit,
         StudyKind::Continuation,
+        StudyKind::Map,
     ];
 
     pub fn index(self) -> usize {
@@ -112,7 +120,7 @@ impl StudyKind {
         match self {
             StudyKind::Current | StudyKind::Runs | StudyKind::System => 0,
             StudyKind::Sweep | StudyKind::Restitution | StudyKind::Fit => 1,
-            StudyKind::Bounds | StudyKind::Diagram | StudyKind::Continuation => 2,
+            StudyKind::Bounds | StudyKind::Diagram | StudyKind::Continuation | StudyKind::Map => 2,
             StudyKind::WorkPrecision => 3,
         }
     }
@@ -131,6 +139,8 @@ impl StudySpec {
             StudySpec::Diagram(_) => StudyKind::Diagram,
             StudySpec::Fit(_) => StudyKind::Fit,
             StudySpec::Continuation(_) => StudyKind::Continuation,
+            StudySpec::Map(_) => StudyKind::Map,
+            StudySpec::Stop(kind) => *kind,
         }
     }
 }
@@ -239,6 +249,8 @@ pub enum StudyResult {
     Fit(Arc<FitData>),
     /// Each stop's continued branch so far (see [`ContinuedBranches::complete`]).
     Continuation(Arc<ContinuedBranches>),
+    /// Each stop's map so far (see [`MapData::complete`]).
+    Map(Arc<MapData>),
 }
 
 impl StudyResult {
@@ -254,6 +266,7 @@ impl StudyResult {
             StudyResult::Diagram(_) => StudyKind::Diagram,
             StudyResult::Fit(_) => StudyKind::Fit,
             StudyResult::Continuation(_) => StudyKind::Continuation,
+            StudyResult::Map(_) => StudyKind::Map,
         }
     }
 
@@ -263,6 +276,7 @@ impl StudyResult {
             StudyResult::Diagram(d) => !d.complete,
             StudyResult::Fit(f) => !f.complete(),
             StudyResult::Continuation(c) => !c.complete,
+            StudyResult::Map(m) => !m.complete,
             _ => false,
         }
     }
@@ -307,6 +321,12 @@ pub fn run_partially(
                 partial(outcome(StudyResult::Diagram(Arc::new(d))))
             })?;
             (!stop()).then(|| outcome(StudyResult::Diagram(Arc::new(data))))
+        }
+        StudySpec::Map(study) => {
+            let data = run_map(study, stop, &|d| {
+                partial(outcome(StudyResult::Map(Arc::new(d))))
+            })?;
+            (!stop()).then(|| outcome(StudyResult::Map(Arc::new(data))))
         }
         _ => run(job, stop),
     }
@@ -363,9 +383,13 @@ pub fn run(job: &StudyJob, stop: &(dyn Fn() -> bool + Sync)) -> Option<StudyOutc
             None => return None,
         },
         StudySpec::System(study) => StudyResult::System(Arc::new(run_system(study))),
-        StudySpec::Diagram(_) | StudySpec::Fit(_) | StudySpec::Continuation(_) => {
+        StudySpec::Diagram(_)
+        | StudySpec::Fit(_)
+        | StudySpec::Continuation(_)
+        | StudySpec::Map(_) => {
             return run_partially(job, stop, &|_| {});
         }
+        StudySpec::Stop(_) => return None,
     };
     // A study cut short is incomplete: nobody wants it.
     (!stop()).then_some(StudyOutcome {

@@ -98,6 +98,7 @@ registry! {
     restitution::Restitution,
     system::System,
     fit::Fit,
+    map::Map,
 }
 
 const _: () = assert!(!VIEWS.is_empty());

@@ -14,6 +14,7 @@ mod grid;
 pub mod lyapunov;
 mod motion;
 mod run;
+mod start;
 
 pub use contacts::ContactReading;
 pub use difference::{Agreement, Cause, DifferenceCell, difference};
@@ -22,4 +23,5 @@ pub use motion::{
     CHATTER_FLIGHT, HOLDING_CONTACT, Motion, Tolerances, from_exponent, from_history, period_of,
     skeleton,
 };
-pub use run::{Cell, MapOptions, MapRows, cell, contact_at, map};
+pub use run::{Cell, MapOptions, MapRows, cell, check, contact_at, map, row};
+pub use start::period_one;

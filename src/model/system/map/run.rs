@@ -67,6 +67,9 @@ pub struct Cell {
     /// The restitution the recorded impacts realise and their longest contact (default where the
     /// cell failed).
     pub contacts: ContactReading,
+    /// The slowest recorded approach speed, m/s (where an impact was recorded): how close the
+    /// motion comes to grazing or chatter.
+    pub slowest_impact: Option<f64>,
     /// Why the cell failed (`motion` is then [`Motion::Failed`]).
     pub error: Option<String>,
 }
@@ -91,22 +94,11 @@ pub fn map(
     shard: Shard,
     options: &MapOptions,
 ) -> Result<MapRows, SystemError> {
-    grid.check(model)?;
     let rows: Vec<usize> = shard.rows(grid.y.points).collect();
-    let per_cell =
-        options.run.transient_impacts + options.run.recorded_impacts + options.lyapunov_impacts;
-    let needed = rows.len() as u128 * grid.x.points as u128 * per_cell as u128;
-    if needed > options.max_total_impacts {
-        return Err(SystemError::DiagramBudget {
-            needed,
-            values: rows.len() * grid.x.points,
-            per_value: per_cell,
-            budget: usize::try_from(options.max_total_impacts).unwrap_or(usize::MAX),
-        });
-    }
+    check(model, grid, rows.len(), options)?;
     let cells = rows
         .par_iter()
-        .map(|&iy| row(model, contact, grid, iy, options))
+        .filter_map(|&iy| row(model, contact, grid, iy, options, &|| false))
         .collect::<Vec<_>>()
         .into_iter()
         .flatten()
@@ -114,17 +106,44 @@ pub fn map(
     Ok(MapRows { shard, cells })
 }
 
-/// One row, followed from its first cell.
-fn row(
+/// Checks the grid and the budget of `rows` rows of `grid` before any work.
+pub fn check(
+    model: &SystemModel,
+    grid: &Grid,
+    rows: usize,
+    options: &MapOptions,
+) -> Result<(), SystemError> {
+    grid.check(model)?;
+    let per_cell =
+        options.run.transient_impacts + options.run.recorded_impacts + options.lyapunov_impacts;
+    let needed = rows as u128 * grid.x.points as u128 * per_cell as u128;
+    if needed > options.max_total_impacts {
+        return Err(SystemError::DiagramBudget {
+            needed,
+            values: rows * grid.x.points,
+            per_value: per_cell,
+            budget: usize::try_from(options.max_total_impacts).unwrap_or(usize::MAX),
+        });
+    }
+    Ok(())
+}
+
+/// Row `iy`, followed from its first cell (started from `options.run.initial`); `None` once
+/// `stop` says so, checked before every cell.
+pub fn row(
     model: &SystemModel,
     contact: &Contact,
     grid: &Grid,
     iy: usize,
     options: &MapOptions,
-) -> Vec<Cell> {
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Option<Vec<Cell>> {
     let mut warm: Option<(State, SystemModel)> = None;
     let mut cells = Vec::with_capacity(grid.x.points);
     for ix in 0..grid.x.points {
+        if stop() {
+            return None;
+        }
         let (x, y) = (grid.x.value(ix), grid.y.value(iy));
         let outcome = grid.model_at(model, ix, iy).and_then(|m| {
             let run = RunOptions {
@@ -134,20 +153,21 @@ fn row(
                 },
                 ..options.run
             };
-            let (motion, lyapunov, contacts, end) = cell(&m, contact, &run, options)?;
-            Ok((motion, lyapunov, contacts, end, m))
+            let (reading, end) = read(&m, contact, &run, options)?;
+            Ok((reading, end, m))
         });
         cells.push(match outcome {
-            Ok((motion, lyapunov, contacts, end, m)) => {
+            Ok((reading, end, m)) => {
                 warm = Some((end, m));
                 Cell {
                     ix,
                     iy,
                     x,
                     y,
-                    motion,
-                    lyapunov,
-                    contacts,
+                    motion: reading.motion,
+                    lyapunov: reading.lyapunov,
+                    contacts: reading.contacts,
+                    slowest_impact: reading.slowest_impact,
                     error: None,
                 }
             }
@@ -161,12 +181,13 @@ fn row(
                     motion: Motion::Failed,
                     lyapunov: None,
                     contacts: ContactReading::default(),
+                    slowest_impact: None,
                     error: Some(e.to_string()),
                 }
             }
         });
     }
-    cells
+    Some(cells)
 }
 
 /// The contact at a cell: a rigid stop takes the cell's e (so that `impact.restitution` can be an
@@ -219,18 +240,44 @@ pub fn cell(
     run: &RunOptions,
     options: &MapOptions,
 ) -> Result<(Motion, Option<f64>, ContactReading, State), SystemError> {
+    read(model, contact, run, options).map(|(r, end)| (r.motion, r.lyapunov, r.contacts, end))
+}
+
+/// What a cell's run shows.
+struct Reading {
+    motion: Motion,
+    lyapunov: Option<f64>,
+    contacts: ContactReading,
+    /// The slowest recorded approach speed, m/s.
+    slowest_impact: Option<f64>,
+}
+
+/// [`cell`] with the slowest recorded approach speed.
+fn read(
+    model: &SystemModel,
+    contact: &Contact,
+    run: &RunOptions,
+    options: &MapOptions,
+) -> Result<(Reading, State), SystemError> {
     let contact = contact_at(contact, model);
     let history = events_counted(model, &contact, run)?;
     let end = history.end_state;
-    let reading = ContactReading::of(&history, model.spec.period());
+    let contacts = ContactReading::of(&history, model.spec.period());
+    let slowest_impact = history.impacts.iter().map(|i| i.v_in).reduce(f64::min);
+    let reading = |motion, lyapunov| Reading {
+        motion,
+        lyapunov,
+        contacts,
+        slowest_impact,
+    };
     let tol = &options.tolerances;
     let decided = motion::from_history(&history, model.spec.period(), tol);
     let exponent_needed = matches!(decided, None | Some(Motion::Periodic { .. }));
     if !exponent_needed || options.lyapunov_impacts == 0 {
-        return Ok((decided.unwrap_or(Motion::Unresolved), None, reading, end));
+        return Ok((reading(decided.unwrap_or(Motion::Unresolved), None), end));
     }
     let Some(last) = lyapunov::start_of(&history.impacts) else {
-        return Ok((decided.unwrap_or(Motion::Unresolved), None, reading, end));
+        return Ok((reading(decided.unwrap_or(Motion::Unresolved), None), end));
     };
     let speed = history.impacts.iter().map(|i| i.v_in).fold(0.0, f64::max);
     let steps = options.lyapunov_impacts;
@@ -241,14 +288,13 @@ pub fn cell(
             damping,
         } => lyapunov::compliant(model, law, damping, last, speed, steps)?,
     };
-    Ok(match (decided, exponent) {
-        (Some(periodic), Ok(l)) => (periodic, Some(l), reading, end),
-        (Some(periodic), Err(_)) => (periodic, None, reading, end),
-        (None, Ok(l)) => (motion::from_exponent(Some(l), tol), Some(l), reading, end),
-        (None, Err(NoExponent::Chatters)) => {
-            (Motion::Chattering { period: None }, None, reading, end)
-        }
-        (None, Err(NoExponent::NoImpact)) => (Motion::NoImpact, None, reading, end),
-        (None, Err(NoExponent::Grazes)) => (Motion::Unresolved, None, reading, end),
-    })
+    let (motion, lyapunov) = match (decided, exponent) {
+        (Some(periodic), Ok(l)) => (periodic, Some(l)),
+        (Some(periodic), Err(_)) => (periodic, None),
+        (None, Ok(l)) => (motion::from_exponent(Some(l), tol), Some(l)),
+        (None, Err(NoExponent::Chatters)) => (Motion::Chattering { period: None }, None),
+        (None, Err(NoExponent::NoImpact)) => (Motion::NoImpact, None),
+        (None, Err(NoExponent::Grazes)) => (Motion::Unresolved, None),
+    };
+    Ok((reading(motion, lyapunov), end))
 }
