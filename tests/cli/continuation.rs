@@ -189,3 +189,19 @@ fn bad_input_is_named() {
         "{e}"
     );
 }
+
+#[test]
+fn a_negative_start_speed_is_refused_as_orbit_refuses_it() {
+    let start = ["--phase", "0", "--speed", "-1"];
+    let mut args = BALL.to_vec();
+    args.extend(start);
+    let e = refused(&args);
+    assert!(
+        e.contains("--speed") && e.contains("-1 must be a finite number > 0"),
+        "{e}"
+    );
+    let mut args = vec!["orbit", "--scene", "bouncing-ball"];
+    args.extend(start);
+    let first_line = |s: &str| s.lines().next().unwrap_or_default().to_string();
+    assert_eq!(first_line(&refused(&args)), first_line(&e));
+}
