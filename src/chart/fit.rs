@@ -2,7 +2,7 @@
 //! error bars and every fitted law's curve in the law's own style, the residuals, and the
 //! engines' realised e(v₀) against the same data.
 
-use crate::chart::ticks::{NiceAxis, log_axis, nice_axis};
+use crate::chart::ticks::{self, NiceAxis, log_axis, nice_axis};
 use crate::chart::{Chart, Hue, Ink, Mark, Rule, Series, model_glyph};
 use crate::format::units::{DIMENSIONLESS, METRE_PER_SECOND};
 use crate::model::ForceModel;
@@ -82,12 +82,9 @@ pub fn sample_velocities(axis: &NiceAxis, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The finite values' span, (∞, −∞) without any.
 fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    values
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        })
+    ticks::span(values).unwrap_or((f64::INFINITY, f64::NEG_INFINITY))
 }
 
 /// The data as a series of error bars (one run per point with a standard deviation) and a
