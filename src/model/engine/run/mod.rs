@@ -256,6 +256,26 @@ print "RESULT e_out ${{e_out}} F_max ${{fmax}} contact_time ${{contact_time}}"
     )
 }
 
+/// The comment lines a LAMMPS-family input opens with: the command that printed it, the release
+/// and command it runs as printed in, and what hertz-tui's model of its velocity-Verlet stepping
+/// (`choice`) gives.
+pub fn verlet_header(
+    t: &Translation,
+    scene: &EngineScene,
+    checked_in: &str,
+    command: &str,
+    choice: &StepChoice,
+) -> String {
+    format!(
+        "# hertz-tui translate --engine {engine}: {name}\n# Runs as printed in {checked_in}: {command}\n# One sphere impact, no gravity, velocity Verlet (fix nve/sphere) at the step hertz-tui chose:\n# its model of this stepping gives e = {e}, F_max = {f} N, contact time {tc} s.",
+        engine = t.engine,
+        name = scene.scene.name,
+        e = num(choice.at_step.e_out),
+        f = num(choice.at_step.f_max),
+        tc = num(choice.at_step.t_contact),
+    )
+}
+
 /// The number of steps a script runs at most: 200 continuous contact times.
 pub fn max_steps(scene: &EngineScene, step: f64) -> u64 {
     (200.0 * scene.t_contact / step).ceil() as u64
