@@ -2,7 +2,9 @@
 //! as lines and unstable parts dotted, special points marked and labelled, over the brute-force
 //! diagram when there is one; and a two-parameter curve of special points, one line per stop.
 //!
-//! The builders take plain data in SI units ([`BranchCurve`]), like [`super::system`]'s.
+//! The builders take plain data in SI units ([`BranchCurve`]), like [`super::system`]'s. A doubled
+//! branch (born at a period doubling) has a look of its own: its stable stretches dashed and
+//! [`DOUBLED_GLYPH`], so that it reads apart from the branch it was born on in the same ink.
 
 use crate::chart::system::{Approach, Branch, DiagramAxes};
 use crate::chart::ticks::{axis_title, nice_axis, span};
@@ -11,12 +13,24 @@ use crate::chart::{Chart, Ink, Mark, Series};
 /// Dots of an unstable stretch across the x axis: dense enough to read as a dotted line.
 const DOTS: f64 = 240.0;
 
+/// Dashes of a doubled branch's stable stretch across the plot (a figure's; a terminal asks for
+/// fewer, [`BranchCurve::dashes`]).
+pub const DASHES: usize = 60;
+
+/// The glyph of a doubled branch: none of the laws' glyphs, nor the rigid stop's.
+pub const DOUBLED_GLYPH: char = 'D';
+
 /// One stop's branch: per impact of the orbit, the runs of (parameter, v_in) of one stability,
 /// and the special points (parameter, v_in, label).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BranchCurve {
     /// What tells it from the stop's other branches in the legend (`period-2`), if anything.
     pub label: String,
+    /// Born at a period doubling: drawn in the doubled branch's look (stable stretches dashed,
+    /// [`DOUBLED_GLYPH`]).
+    pub doubled: bool,
+    /// Dashes of its stable stretches across the plot when doubled (0: [`DASHES`]).
+    pub dashes: usize,
     /// (stable, points) in the order of the arclength.
     pub runs: Vec<(bool, Vec<(f64, f64)>)>,
     pub specials: Vec<(f64, f64, String)>,
@@ -58,6 +72,48 @@ fn dotted(run: &[(f64, f64)], step: f64) -> Vec<Vec<(f64, f64)>> {
         dots.push(vec![last]);
     }
     dots
+}
+
+/// The points of a run as dashes, each a run of its own: two thirds of every `period` of its
+/// length drawn, the length measured in fractions of the axes' spans `scale` (so that a steep
+/// stretch is dashed like a flat one).
+fn dashed(run: &[(f64, f64)], period: f64, scale: (f64, f64)) -> Vec<Vec<(f64, f64)>> {
+    let on = period * 2.0 / 3.0;
+    let mut dashes = Vec::new();
+    let mut dash: Vec<(f64, f64)> = run.first().copied().into_iter().collect();
+    // Drawing a dash or leaving a gap, and the length left of it.
+    let (mut drawing, mut left) = (true, on);
+    for pair in run.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        let length = ((b.0 - a.0) / scale.0).hypot((b.1 - a.1) / scale.1);
+        if !(length.is_finite() && length > 0.0) {
+            continue;
+        }
+        let mut done = 0.0;
+        loop {
+            let rest = length - done;
+            if left > rest {
+                left -= rest;
+                if drawing {
+                    dash.push(b);
+                }
+                break;
+            }
+            done += left;
+            let f = done / length;
+            let p = (a.0 + f * (b.0 - a.0), a.1 + f * (b.1 - a.1));
+            dash.push(p);
+            if drawing {
+                dashes.push(std::mem::take(&mut dash));
+            }
+            drawing = !drawing;
+            left = if drawing { on } else { period - on };
+        }
+    }
+    if drawing && dash.len() > 1 {
+        dashes.push(dash);
+    }
+    dashes
 }
 
 fn series(
@@ -120,20 +176,33 @@ pub fn branch(
         all.push(series(format!("{name} diagram"), ink, '.', points, false));
     }
     let mut marks = Vec::new();
+    let scale = (
+        (kx.bounds[1] - kx.bounds[0]).abs(),
+        (py.bounds[1] - py.bounds[0]).abs(),
+    );
     for (approach, c) in curves {
         let (name, ink, glyph) = approach.look();
+        let glyph = if c.doubled { DOUBLED_GLYPH } else { glyph };
         let name = if c.label.is_empty() {
             name
         } else {
             format!("{name} {}", c.label)
         };
         let focused = *approach == Approach::Rigid;
-        let stable: Vec<_> = c
+        let stable_runs = c
             .runs
             .iter()
             .filter(|r| r.0)
-            .map(|r| r.1.iter().map(|&p| at(p)).collect())
-            .collect();
+            .map(|r| r.1.iter().map(|&p| at(p)).collect::<Vec<_>>());
+        let stable: Vec<_> = if c.doubled {
+            let dashes = if c.dashes == 0 { DASHES } else { c.dashes };
+            let period = 1.0 / dashes as f64;
+            stable_runs
+                .flat_map(|r| dashed(&r, period, scale))
+                .collect()
+        } else {
+            stable_runs.collect()
+        };
         let unstable: Vec<_> = c
             .runs
             .iter()
@@ -239,6 +308,31 @@ mod tests {
                 (true, vec![(1.0, 1.0), (2.0, 2.0), (3.0, 3.0)]),
                 (false, vec![(3.0, 3.0), (4.0, 4.0)]),
             ]
+        );
+    }
+
+    #[test]
+    fn a_dashed_run_draws_two_thirds_of_each_period_along_its_length() {
+        // A diagonal across both axes (length √2 in their fractions), then a step back along x.
+        let run = [(0.0, 0.0), (2.0, 10.0), (1.0, 10.0)];
+        let dashes = dashed(&run, 0.1, (2.0, 10.0));
+        let length = |d: &Vec<(f64, f64)>| {
+            d.windows(2)
+                .map(|w| ((w[1].0 - w[0].0) / 2.0).hypot((w[1].1 - w[0].1) / 10.0))
+                .sum::<f64>()
+        };
+        let total = 2f64.sqrt() + 0.5;
+        assert_eq!(dashes.len(), (total / 0.1).ceil() as usize, "{dashes:?}");
+        for d in &dashes[..dashes.len() - 1] {
+            assert!((length(d) - 0.1 * 2.0 / 3.0).abs() < 1e-12, "{d:?}");
+        }
+        assert_eq!(dashes[0][0], (0.0, 0.0));
+        // The dash across the corner keeps the corner.
+        assert!(dashes.iter().any(|d| d.contains(&(2.0, 10.0))));
+        let drawn: f64 = dashes.iter().map(length).sum();
+        assert!(
+            (drawn / total - 2.0 / 3.0).abs() < 0.05,
+            "{drawn} of {total}"
         );
     }
 

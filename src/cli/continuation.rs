@@ -546,7 +546,11 @@ fn charts(
         let a = approach(&r.contact, &contacts);
         curves.push((a, curve_of(&r.branch)));
         if let Some(d) = &r.doubled {
-            curves.push((a, curve_of(d)));
+            let doubled = BranchCurve {
+                doubled: true,
+                ..curve_of(d)
+            };
+            curves.push((a, doubled));
         }
     }
     let drawn: Vec<(Approach, &BranchCurve)> = curves.iter().map(|(a, c)| (*a, c)).collect();

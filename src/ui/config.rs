@@ -175,6 +175,11 @@ mod tests {
                 3,
                 "given to both quit and save",
             ),
+            (
+                "[keys]\nbranch = \"x\"\nquit = \"x\"",
+                3,
+                "keys.quit: `x` is given to both branch and quit",
+            ),
             ("theme = dark", 1, ""),
         ];
         for (text, line, says) in cases {

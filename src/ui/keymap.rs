@@ -20,9 +20,10 @@ pub fn bindings() -> Vec<(String, String)> {
     let digits: Vec<String> = Tab::all()
         .filter_map(|t| Some(t.key()?.to_string()))
         .collect();
-    let views_keys = format!("{} v V", digits.join(" "));
+    let views_keys = format!("{} {}", digits.join(" "), super::rebind::hint("v V"));
     let own = Tab::all().filter_map(|t| Some((format!("in {}", t.name()), t.view().help()?)));
-    let fixed = |&(keys, what): &(&str, &str)| (keys.to_string(), what.to_string());
+    // Each key as the config file's `[keys]` moved it.
+    let fixed = |&(keys, what): &(&str, &str)| (super::rebind::hint(keys), what.to_string());
     let rest: Vec<(String, String)> = SHARED
         .iter()
         .map(fixed)

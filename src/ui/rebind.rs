@@ -30,6 +30,7 @@ pub const ACTIONS: &[(&str, char)] = &[
     ("previous-view", 'V'),
     ("cursor-left", '<'),
     ("cursor-right", '>'),
+    ("branch", 'b'),
 ];
 
 /// Moved keys: the key pressed → the built-in key of its action.
@@ -101,6 +102,32 @@ impl Rebind {
             .collect()
     }
 
+    /// The key that does the action of built-in key `builtin`: the key moved to it, else the
+    /// built-in one.
+    pub fn key_for(&self, builtin: char) -> char {
+        self.moved
+            .iter()
+            .find(|(_, b)| **b == builtin)
+            .map_or(builtin, |(&key, _)| key)
+    }
+
+    /// A hint's keys (`f m t o b`, `[ ]`) as the keys in force read: each word of one character
+    /// that is an action's built-in key becomes the key moved to that action.
+    pub fn hint(&self, keys: &str) -> String {
+        keys.split(' ')
+            .map(|word| {
+                let mut chars = word.chars();
+                match (chars.next(), chars.next()) {
+                    (Some(c), None) if ACTIONS.iter().any(|a| a.1 == c) => {
+                        key_name(self.key_for(c))
+                    }
+                    _ => word.to_string(),
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
     /// `key` as the keymap should read it: a moved key becomes its action's built-in key.
     pub fn apply(&self, mut key: KeyEvent) -> KeyEvent {
         let plain = !key
@@ -131,6 +158,20 @@ pub fn translate(key: KeyEvent) -> KeyEvent {
 /// The moved keys in force, for the help.
 pub fn moved() -> Vec<(char, &'static str)> {
     MOVED.get().map(Rebind::moved).unwrap_or_default()
+}
+
+/// The key in force for the action of built-in key `builtin`, as the config file writes it (see
+/// [`Rebind::key_for`]), for messages that name it.
+pub fn key_for(builtin: char) -> String {
+    key_name(MOVED.get().map_or(builtin, |r| r.key_for(builtin)))
+}
+
+/// A hint's keys as the keys in force read (see [`Rebind::hint`]).
+pub fn hint(keys: &str) -> String {
+    match MOVED.get() {
+        Some(r) => r.hint(keys),
+        None => keys.to_string(),
+    }
 }
 
 #[cfg(test)]
@@ -176,5 +217,29 @@ mod tests {
         r.bind("quit", "x").unwrap();
         let taken = r.bind("save", "x").unwrap_err().to_string();
         assert_eq!(taken, "`x` is given to both quit and save");
+        let taken = r.bind("branch", "x").unwrap_err().to_string();
+        assert_eq!(taken, "`x` is given to both quit and branch");
+    }
+
+    #[test]
+    fn branch_moves_like_the_others_and_hints_show_the_key_in_force() {
+        let mut r = Rebind::default();
+        assert_eq!(r.hint("f m t o b"), "f m t o b");
+        r.bind("branch", "B").unwrap();
+        assert_eq!(r.apply(press('B')).code, KeyCode::Char('b'));
+        assert_eq!(
+            r.apply(press('b')).code,
+            KeyCode::Char('b'),
+            "built-in kept"
+        );
+        assert_eq!(r.key_for('b'), 'B');
+        assert_eq!(r.key_for('q'), 'q');
+        assert_eq!(r.hint("f m t o b"), "f m t o B");
+        // Words of several characters, and keys of no action, stay.
+        assert_eq!(r.hint("Home End g G"), "Home End g G");
+        assert_eq!(r.hint("↑↓"), "↑↓");
+        r.bind("focus-next", "space").unwrap();
+        assert_eq!(r.hint("[ ]"), "[ space");
+        assert_eq!(r.moved(), [(' ', "focus-next"), ('B', "branch")]);
     }
 }

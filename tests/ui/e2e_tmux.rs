@@ -350,3 +350,56 @@ fn a_system_scene_file_with_set_opens_in_the_system_view_and_saves_its_edit() {
         "{text}"
     );
 }
+
+#[test]
+fn the_branch_key_moves_in_the_config_file_and_a_clash_names_the_key() {
+    let tmux = Tmux::start_as("branch-key-");
+    let config = tmux.config_home.join("hertz-tui").join("config.toml");
+    std::fs::create_dir_all(config.parent().unwrap()).unwrap();
+    let binary = env!("CARGO_BIN_EXE_hertz-tui");
+    // Two actions on one key: refused before the terminal is taken, naming the key and line.
+    std::fs::write(&config, "[keys]\nbranch = \"x\"\nquit = \"x\"\n").unwrap();
+    let out = Command::new(binary)
+        .env("XDG_CONFIG_HOME", &tmux.config_home)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("config.toml:3: keys.quit: `x` is given to both branch and quit"),
+        "{stderr}"
+    );
+
+    std::fs::write(&config, "[keys]\nbranch = \"x\"\n").unwrap();
+    assert!(
+        tmux.run(&["resize-window", "-t", "e2e", "-x", "160", "-y", "48"])
+            .status
+            .success()
+    );
+    tmux.literal(&format!("{binary} --scene bouncing-ball; echo exited-$?"));
+    tmux.keys(&["Enter"]);
+    tmux.wait_for("the explorer", |s| s.contains("F(x) force–approach"));
+    tmux.keys(&["6"]);
+    // The status line's hints name the key in force.
+    tmux.wait_for("the system view's hints", |s| {
+        s.lines().last().is_some_and(|l| l.contains("x branch"))
+    });
+    tmux.keys(&["x"]);
+    tmux.wait_for("x continuing the branch", |s| {
+        s.contains("continuing the orbit over the diagram's range (x hides it)")
+    });
+    tmux.keys(&["?"]);
+    let help = tmux.wait_for("the help", |s| s.contains("Help · keys"));
+    assert!(help.contains("f m t o x"), "{help}");
+    assert!(help.contains("x branch"), "{help}");
+    tmux.keys(&["Escape"]);
+    // (A key right after Esc would read as Alt with it.)
+    tmux.wait_for("the help closed", |s| !s.contains("Help · keys"));
+    tmux.keys(&["x"]);
+    tmux.wait_for("x hiding the branch", |s| {
+        s.contains("continued branch hidden (x shows it)")
+    });
+    tmux.keys(&["q"]);
+    tmux.wait_for("the shell after the explorer", |s| s.contains("exited-0"));
+}

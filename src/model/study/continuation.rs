@@ -2,9 +2,12 @@
 //! settles on at the scene's value of the diagram's key, continued both ways to the ends of the
 //! diagram's range with every stop, reported stop by stop so that the rigid branch shows while the
 //! compliant one is computed, and stopped between steps once a newer request supersedes it.
+//! Where a branch has a period doubling, the study switches onto the doubled branch born there
+//! and continues it over the same range (docs/continuation.md §3, §8).
 
 use crate::model::system::continuation::{
-    Branch, ContinuationError, ContinuationOptions, continue_orbit_until,
+    Branch, ContinuationError, ContinuationOptions, SpecialKind, continue_orbit_until,
+    switch_at_period_doubling_until,
 };
 use crate::model::system::{Contact, OrbitGuess, Param, SystemModel};
 
@@ -22,11 +25,13 @@ pub struct ContinuationStudy {
 }
 
 /// One stop's branch: the halves from the scene's value towards each end of the range (a half
-/// is absent when the value is on that end), or why it could not start.
+/// is absent when the value is on that end), or why it could not start; and the doubled branch
+/// born at each half's first period doubling, or why the switch onto it failed.
 #[derive(Debug, Clone)]
 pub struct ContinuedBranch {
     pub contact: Contact,
     pub halves: Result<Vec<Branch>, ContinuationError>,
+    pub doubled: Vec<Result<Branch, ContinuationError>>,
 }
 
 /// Every stop's branch so far.
@@ -50,8 +55,8 @@ pub fn start_value(study: &ContinuationStudy) -> Result<f64, ContinuationError> 
     Ok(study.param.get(&study.model)?.clamp(lo, hi))
 }
 
-/// Every stop's branch, handing `partial` the branches so far after each stop but the last;
-/// `None` once `stop` says so.
+/// Every stop's branch and doubled branches, handing `partial` the branches so far after each
+/// stop's branch and after its doubled ones but the last stop's; `None` once `stop` says so.
 pub fn run_continuation(
     study: &ContinuationStudy,
     stop: &(dyn Fn() -> bool + Sync),
@@ -86,11 +91,46 @@ pub fn run_continuation(
         if stop() || matches!(halves, Err(ContinuationError::Stopped)) {
             return None;
         }
+        let doubling: Vec<Branch> = halves
+            .as_ref()
+            .map(|h| {
+                h.iter()
+                    .filter(|b| b.special(SpecialKind::PeriodDoubling).next().is_some())
+                    .cloned()
+                    .collect()
+            })
+            .unwrap_or_default();
         data.branches.push(ContinuedBranch {
             contact: *contact,
             halves,
+            doubled: Vec::new(),
         });
-        if i + 1 < study.contacts.len() {
+        if doubling.is_empty() && i + 1 == study.contacts.len() {
+            break;
+        }
+        partial(data.clone());
+        for half in &doubling {
+            let Some(pd) = half.special(SpecialKind::PeriodDoubling).next() else {
+                continue;
+            };
+            let doubled = switch_at_period_doubling_until(
+                &study.model,
+                contact,
+                study.param,
+                study.range,
+                half,
+                pd,
+                &study.options,
+                stop,
+            );
+            if stop() || matches!(doubled, Err(ContinuationError::Stopped)) {
+                return None;
+            }
+            if let Some(last) = data.branches.last_mut() {
+                last.doubled.push(doubled);
+            }
+        }
+        if !doubling.is_empty() && i + 1 < study.contacts.len() {
             partial(data.clone());
         }
     }
@@ -150,8 +190,8 @@ mod tests {
         assert!(data.complete);
         assert_eq!(
             *reports.lock().unwrap(),
-            1,
-            "one report before the last stop"
+            3,
+            "a report after each stop's branch and the first stop's doubled branch"
         );
         let halves = data.branches[0].halves.as_ref().unwrap();
         assert_eq!(halves.len(), 2);
@@ -165,7 +205,34 @@ mod tests {
             .collect();
         assert_eq!(pd.len(), 1, "{pd:?}");
         assert!((pd[0] - GAMMA_PD).abs() < 1e-6, "{}", pd[0]);
+        // Switched onto the doubled branch there, continued to the range's end, with its own
+        // doubling (docs/continuation.md §5: Γ = 1.6671307).
+        let doubled = &data.branches[0].doubled;
+        assert_eq!(doubled.len(), 1);
+        let d = doubled[0].as_ref().unwrap();
+        assert_eq!((d.cycles, d.stops.len()), (2, 2));
+        assert!((d.points[0].values[0] - GAMMA_PD).abs() < 1e-6);
+        let last = d.points.last().unwrap().values[0];
+        assert!((last - 2.0).abs() < 1e-9, "ends on the range's end: {last}");
+        let pd2: Vec<f64> = d
+            .special(SpecialKind::PeriodDoubling)
+            .map(|s| s.point.values[0])
+            .collect();
+        assert_eq!(pd2.len(), 1, "{pd2:?}");
+        assert!((pd2[0] - 1.6671307).abs() < 1e-6, "{}", pd2[0]);
         // Stopped: nothing.
         assert!(run_continuation(&s, &|| true, &|_| {}).is_none());
+    }
+
+    #[test]
+    fn a_stop_while_switching_onto_the_doubled_branch_gives_nothing() {
+        let s = study((1.2, 2.0));
+        // The branches are done after the first report; stop the switch that follows it.
+        let reported = std::sync::atomic::AtomicBool::new(false);
+        let stop = || reported.load(std::sync::atomic::Ordering::SeqCst);
+        let data = run_continuation(&s, &stop, &|_| {
+            reported.store(true, std::sync::atomic::Ordering::SeqCst);
+        });
+        assert!(data.is_none());
     }
 }

@@ -10,6 +10,7 @@ use ratatui::widgets::Paragraph;
 
 use crate::format::units;
 use crate::ui::app::{App, Mode};
+use crate::ui::rebind;
 use crate::ui::style::Role;
 use crate::ui::views::{self, Hints};
 
@@ -31,12 +32,12 @@ fn mode_hints(mode: &Mode) -> Hints {
 }
 
 /// The key hints of the status line: in normal mode the keys every view shares, then the shown
-/// view's own; else the mode's.
+/// view's own, each as the config file's `[keys]` moved it; else the mode's.
 fn hints(app: &App) -> Vec<(Cow<'static, str>, &'static str)> {
     match app.mode {
         Mode::Normal => [
-            (Cow::Borrowed("?"), "help"),
-            (Cow::Borrowed("q"), "quit"),
+            (Cow::Owned(rebind::hint("?")), "help"),
+            (Cow::Owned(rebind::hint("q")), "quit"),
             (Cow::Owned(views::keys_hint()), "views"),
         ]
         .into_iter()
@@ -45,7 +46,7 @@ fn hints(app: &App) -> Vec<(Cow<'static, str>, &'static str)> {
                 .view()
                 .hints()
                 .iter()
-                .map(|&(key, what)| (Cow::Borrowed(key), what)),
+                .map(|&(key, what)| (Cow::Owned(rebind::hint(key)), what)),
         )
         .collect(),
         ref mode => mode_hints(mode)

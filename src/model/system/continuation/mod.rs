@@ -26,4 +26,7 @@ mod trace;
 
 pub use branch::{Branch, BranchEnd, BranchPoint, ContinuationOptions, SpecialKind, SpecialPoint};
 pub use error::ContinuationError;
-pub use run::{continue_orbit, continue_orbit_until, continue_special, switch_at_period_doubling};
+pub use run::{
+    continue_orbit, continue_orbit_until, continue_special, switch_at_period_doubling,
+    switch_at_period_doubling_until,
+};

@@ -200,6 +200,24 @@ pub fn switch_at_period_doubling(
     special: &SpecialPoint,
     options: &ContinuationOptions,
 ) -> Result<Branch, ContinuationError> {
+    switch_at_period_doubling_until(
+        model, contact, param, range, branch, special, options, &never,
+    )
+}
+
+/// [`switch_at_period_doubling`] that polls `stop` before every step and ends with
+/// [`ContinuationError::Stopped`] once it says so (the explorer's job, superseded by an edit).
+#[allow(clippy::too_many_arguments)]
+pub fn switch_at_period_doubling_until(
+    model: &SystemModel,
+    contact: &Contact,
+    param: Param,
+    range: (f64, f64),
+    branch: &Branch,
+    special: &SpecialPoint,
+    options: &ContinuationOptions,
+    stop: &(dyn Fn() -> bool + Sync),
+) -> Result<Branch, ContinuationError> {
     if special.kind != SpecialKind::PeriodDoubling {
         return Err(ContinuationError::NoSuchPoint(format!(
             "branch switching needs a period doubling, not a {}",
@@ -245,7 +263,7 @@ pub fn switch_at_period_doubling(
     let (z1, _) = correct(&eq, &(&z0 + &t * step), &t, 12)?;
     let chord = (&z1 - &z0).normalize();
     let t1 = tangent(&jacobian(&eq, &z1)?, &chord)?;
-    let mut branch = trace_branch(&eq, z1, t1, range, options, (false, &never), contact, param)?;
+    let mut branch = trace_branch(&eq, z1, t1, range, options, (false, stop), contact, param)?;
     // The doubling point itself starts the new branch.
     let trace = Trace {
         eq: &eq,

@@ -1,7 +1,8 @@
 //! `b` in the system view: the periodic orbit the run settles on, continued over the diagram's
 //! range (docs/continuation.md §8) as a study on the studies' queue, drawn over the brute-force
 //! diagram (stable solid, unstable dotted, each stop in its own ink) with its special points
-//! marked by their letter and listed with their values in the notes.
+//! marked by their letter and listed with their values in the notes; and the doubled branch born
+//! at its period doubling, in the doubled branch's look (stable dashed, its own glyph).
 
 use crate::chart::Chart;
 use crate::chart::continuation::{self as plot, BranchCurve};
@@ -13,27 +14,38 @@ use crate::model::study::system::DiagramData;
 use crate::model::system::continuation::{Branch, ContinuationOptions, SpecialKind};
 use crate::model::system::{Contact, OrbitGuess, SystemModel};
 use crate::ui::app::App;
+use crate::ui::rebind;
 use crate::ui::style::Role;
 
 use super::settings::{self, Settings};
 
 /// The letter a special point is marked with on the chart and named by in the notes.
 pub fn letter(kind: SpecialKind) -> &'static str {
-    match kind {
-        SpecialKind::Fold => "F",
-        SpecialKind::PeriodDoubling => "PD",
-        SpecialKind::GrazingImpact | SpecialKind::GrazingFlight => "G",
+    if kind.is_grazing() {
+        "G"
+    } else if kind == SpecialKind::Fold {
+        "F"
+    } else if kind == SpecialKind::PeriodDoubling {
+        "PD"
+    } else {
+        kind.label()
     }
+}
+
+/// The key that shows and hides the branch (`b`, or the config file's `[keys] branch`).
+fn key() -> String {
+    rebind::key_for('b')
 }
 
 /// `b`: the branch on or off.
 pub fn toggle(app: &mut App) {
     let on = !app.views.system.branch;
     app.views.system.branch = on;
+    let key = key();
     let text = if on {
-        "continuing the orbit over the diagram's range (b hides it)"
+        format!("continuing the orbit over the diagram's range ({key} hides it)")
     } else {
-        "continued branch hidden (b shows it)"
+        format!("continued branch hidden ({key} shows it)")
     };
     app.say(text, false);
 }
@@ -68,11 +80,17 @@ pub fn shown<'a>(app: &'a App, diagram: &DiagramData) -> Option<&'a ContinuedBra
         .filter(|c| c.param == diagram.param)
 }
 
-/// A half of a branch as the chart draws it: every impact's v_in against the key, by stability,
-/// with its special points marked by their letter.
-fn curve(half: &Branch) -> BranchCurve {
+/// Dashes of a doubled branch's stable stretch across the chart on a terminal: a plot about 50
+/// cells wide shows each dash two cells long.
+pub const TERMINAL_DASHES: usize = 16;
+
+/// A half of a branch (or a doubled branch: `doubled`) as the chart draws it: every impact's v_in
+/// against the key, by stability, with its special points marked by their letter.
+fn curve(half: &Branch, doubled: bool) -> BranchCurve {
     let mut c = BranchCurve {
         label: format!("period-{}", half.cycles),
+        doubled,
+        dashes: TERMINAL_DASHES,
         ..BranchCurve::default()
     };
     for k in 0..half.stops.len() {
@@ -95,9 +113,29 @@ fn curve(half: &Branch) -> BranchCurve {
 /// are denser than braille can show apart (the dotted line would read as solid).
 pub const TERMINAL_THINNING: usize = 6;
 
-/// The branches over the diagram: [`plot::branch`] with the diagram's axes and range, one dot in
-/// `thinning` of its unstable stretches kept, the rigid stop's marks drawn last (over the
-/// compliant ones' labels where they meet).
+/// The diagram is drawn under the branches up to this many times their largest impact speed: a
+/// diagram that reaches far higher (a stop that realises e near 1 bounces ever higher) would
+/// squeeze the branches, and the doubled branch beside the one it was born on, into one row.
+pub const HEADROOM: f64 = 1.5;
+
+/// The diagram's columns with the points above `limit` left out, and how many were.
+fn clipped(columns: &[(f64, Vec<f64>)], limit: f64) -> (DiagramBranch, usize) {
+    let mut dropped = 0;
+    let columns = columns
+        .iter()
+        .map(|(k, points)| {
+            let kept: Vec<f64> = points.iter().copied().filter(|v| *v <= limit).collect();
+            dropped += points.len() - kept.len();
+            (*k, kept)
+        })
+        .collect();
+    (DiagramBranch { columns }, dropped)
+}
+
+/// The branches over the diagram: [`plot::branch`] with the diagram's axes and range, the
+/// diagram's points above [`HEADROOM`] times the branches' largest speed left out (a note says
+/// how many), one dot in `thinning` of its unstable stretches kept, the rigid stop's marks drawn
+/// last (over the compliant ones' labels where they meet).
 pub fn chart(
     diagram: &DiagramData,
     branches: &ContinuedBranches,
@@ -105,20 +143,34 @@ pub fn chart(
     budget: (usize, usize),
     thinning: usize,
 ) -> Chart {
-    let columns: Vec<(Approach, DiagramBranch)> = diagram
-        .branches
-        .iter()
-        .map(|b| (Approach::of(&b.contact), DiagramBranch::of(&b.columns)))
-        .collect();
     let curves: Vec<(Approach, BranchCurve)> = branches
         .branches
         .iter()
         .flat_map(|b| {
             let approach = Approach::of(&b.contact);
-            b.halves
-                .iter()
-                .flatten()
-                .map(move |h| (approach, curve(h)))
+            let halves = b.halves.iter().flatten().map(|h| curve(h, false));
+            let doubled = b.doubled.iter().flatten().map(|d| curve(d, true));
+            halves.chain(doubled).map(move |c| (approach, c))
+        })
+        .collect();
+    let top = curves
+        .iter()
+        .flat_map(|(_, c)| c.runs.iter().flat_map(|r| r.1.iter().map(|p| p.1)))
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    let limit = if top > 0.0 {
+        HEADROOM * top
+    } else {
+        f64::INFINITY
+    };
+    let mut dropped = 0;
+    let columns: Vec<(Approach, DiagramBranch)> = diagram
+        .branches
+        .iter()
+        .map(|b| {
+            let (kept, n) = clipped(&DiagramBranch::of(&b.columns).columns, limit);
+            dropped += n;
+            (Approach::of(&b.contact), kept)
         })
         .collect();
     let mut axes = DiagramAxes::impact_speeds(diagram.param, model);
@@ -140,6 +192,12 @@ pub fn chart(
     let rigid = Approach::Rigid.look().1;
     chart.marks.sort_by_key(|m| m.ink == rigid);
     chart.title = format!("branch over the diagram of {}", axes.key);
+    if dropped > 0 {
+        chart.notes.push(format!(
+            "{dropped} diagram point(s) above v_in = {} m/s left out",
+            sig(limit, 3)
+        ));
+    }
     chart
 }
 
@@ -151,66 +209,96 @@ fn stop_name(contact: &Contact) -> String {
     }
 }
 
+/// The special points of `branches` by value, each with its letter, the key to 7 digits and the
+/// impact speed there; or `no special point`.
+fn listed(branches: &[&Branch], key: &str) -> String {
+    let mut specials: Vec<(f64, String)> = branches
+        .iter()
+        .flat_map(|h| &h.specials)
+        .filter_map(|s| {
+            let x = *s.point.values.first()?;
+            let v = s.point.points.first().map_or(f64::NAN, |q| q.v_in);
+            let speed = if v.is_finite() {
+                format!(" (v_in {} m/s)", sig(v, 4))
+            } else {
+                String::new()
+            };
+            Some((x, format!("{} {key} = {}{speed}", letter(s.kind), sig(x, 7))))
+        })
+        .collect();
+    specials.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if specials.is_empty() {
+        "no special point".to_string()
+    } else {
+        specials
+            .into_iter()
+            .map(|(_, t)| t)
+            .collect::<Vec<_>>()
+            .join(" · ")
+    }
+}
+
+/// `period-m, n impact(s), N points` of a branch made of `parts`.
+fn described(parts: &[&Branch]) -> Option<String> {
+    let first = parts.first()?;
+    let points: usize = parts.iter().map(|h| h.points.len()).sum();
+    Some(format!(
+        "period-{}, {} impact(s), {points} points",
+        first.cycles,
+        first.stops.len()
+    ))
+}
+
 /// What the notes say of the branch: per stop its orbit, its special points with their values
-/// (the key to 7 digits, the impact speed there) and how it ended, or why it failed.
+/// (the key to 7 digits, the impact speed there), or why it failed; then the doubled branch born
+/// at its period doubling, the same way.
 pub fn notes(app: &App) -> Vec<(String, Role)> {
     if !app.views.system.branch {
         return Vec::new();
     }
+    let b_key = key();
     let running = app.studies.is_pending(StudyKind::Continuation);
     let Some(data) = app.studies.continuation() else {
-        return vec![("branch (b): continuing…".into(), Role::Muted)];
+        return vec![(format!("branch ({b_key}): continuing…"), Role::Muted)];
     };
     let key = data.param.path();
     let mut texts = Vec::new();
     for b in &data.branches {
         let name = stop_name(&b.contact);
-        let halves = match &b.halves {
-            Ok(halves) => halves,
+        let halves: Vec<&Branch> = match &b.halves {
+            Ok(halves) => halves.iter().collect(),
             Err(e) => {
                 texts.push((format!("✗ branch, {name}: {e}"), Role::Error));
                 continue;
             }
         };
-        let Some(first) = halves.first() else {
-            continue;
-        };
-        let points: usize = halves.iter().map(|h| h.points.len()).sum();
-        let mut specials: Vec<(f64, String)> = halves
-            .iter()
-            .flat_map(|h| &h.specials)
-            .filter_map(|s| {
-                let x = *s.point.values.first()?;
-                let v = s.point.points.first().map_or(f64::NAN, |q| q.v_in);
-                let speed = if v.is_finite() {
-                    format!(" (v_in {} m/s)", sig(v, 4))
-                } else {
-                    String::new()
-                };
-                Some((x, format!("{} {key} = {}{speed}", letter(s.kind), sig(x, 7))))
-            })
-            .collect();
-        specials.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let listed = if specials.is_empty() {
-            "no special point".to_string()
-        } else {
-            specials
-                .into_iter()
-                .map(|(_, t)| t)
-                .collect::<Vec<_>>()
-                .join(" · ")
-        };
-        texts.push((
-            format!(
-                "branch (b), {name}: period-{}, {} impact(s), {points} points: {listed}",
-                first.cycles,
-                first.stops.len()
-            ),
-            Role::Normal,
-        ));
+        if let Some(orbit) = described(&halves) {
+            texts.push((
+                format!(
+                    "branch ({b_key}), {name}: {orbit}: {}",
+                    listed(&halves, &key)
+                ),
+                Role::Normal,
+            ));
+        }
+        for doubled in &b.doubled {
+            match doubled {
+                Ok(d) => {
+                    let orbit = described(&[d]).unwrap_or_default();
+                    texts.push((
+                        format!(
+                            "doubled branch, {name}: {orbit}: {}",
+                            listed(&[d], &key)
+                        ),
+                        Role::Normal,
+                    ));
+                }
+                Err(e) => texts.push((format!("✗ doubled branch, {name}: {e}"), Role::Error)),
+            }
+        }
     }
     if running {
-        texts.push(("branch (b): continuing…".into(), Role::Muted));
+        texts.push((format!("branch ({b_key}): continuing…"), Role::Muted));
     }
     texts
 }
