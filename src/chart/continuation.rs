@@ -7,9 +7,8 @@
 //! [`DOUBLED_GLYPH`], so that it reads apart from the branch it was born on in the same ink.
 
 use crate::chart::system::{Approach, Branch, DiagramAxes};
-use crate::chart::ticks::{NiceAxis, nice_axis};
+use crate::chart::ticks::{axis_title, nice_axis, span};
 use crate::chart::{Chart, Ink, Mark, Series};
-use crate::format::units::Unit;
 
 /// Dots of an unstable stretch across the x axis: dense enough to read as a dotted line.
 const DOTS: f64 = 240.0;
@@ -55,25 +54,6 @@ impl BranchCurve {
             self.runs.push((stable, run));
         }
     }
-}
-
-/// `symbol [unit]`, or the bare symbol of a dimensionless quantity.
-fn title(symbol: &str, axis: &NiceAxis, unit: Unit) -> String {
-    let text = format!("{}{}", axis.prefix.symbol, unit.symbol);
-    if text.is_empty() {
-        symbol.to_string()
-    } else {
-        format!("{symbol} [{text}]")
-    }
-}
-
-fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
-    values
-        .filter(|v| v.is_finite())
-        .fold(None, |acc, v| match acc {
-            None => Some((v, v)),
-            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
-        })
 }
 
 /// The points of a run as dots every `step` along x (a dotted line in every renderer).
@@ -259,8 +239,8 @@ pub fn branch(
     all.sort_by_key(|s| s.focused);
     Chart {
         title: format!("periodic orbits over {}", axes.key),
-        x: kx.chart_axis(title(&axes.key, &kx, axes.key_unit)),
-        y: py.chart_axis(title(&axes.quantity, &py, axes.quantity_unit)),
+        x: kx.chart_axis(axis_title(&axes.key, &kx, axes.key_unit)),
+        y: py.chart_axis(axis_title(&axes.quantity, &py, axes.quantity_unit)),
         series: all,
         marks,
         rules: Vec::new(),
@@ -298,8 +278,8 @@ pub fn curves(
     all.sort_by_key(|s| s.focused);
     Chart {
         title: format!("{kind} curve in ({}, {})", second.key, first.key),
-        x: kx.chart_axis(title(&second.key, &kx, second.key_unit)),
-        y: ky.chart_axis(title(&first.key, &ky, first.key_unit)),
+        x: kx.chart_axis(axis_title(&second.key, &kx, second.key_unit)),
+        y: ky.chart_axis(axis_title(&first.key, &ky, first.key_unit)),
         series: all,
         marks: Vec::new(),
         rules: Vec::new(),

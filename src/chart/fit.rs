@@ -2,15 +2,21 @@
 //! error bars and every fitted law's curve in the law's own style, the residuals, and the
 //! engines' realised e(v₀) against the same data.
 
-use crate::chart::ticks::{NiceAxis, log_axis, nice_axis};
+use crate::chart::ticks::{self, NiceAxis, log_axis, nice_axis};
 use crate::chart::{Chart, Hue, Ink, Mark, Rule, Series, model_glyph};
 use crate::format::units::{DIMENSIONLESS, METRE_PER_SECOND};
 use crate::model::ForceModel;
+use crate::model::fit::{Candidate, LawFit, RestitutionData};
 
 /// The glyph of a measured point.
 pub const DATA_GLYPH: char = 'O';
 /// The glyph of Newton's constant e, which is no law of the table.
 pub const CONSTANT_E_GLYPH: char = 'E';
+
+/// The residuals panel shows the laws within this Δ of the best (Burnham & Anderson's "much less
+/// supported" bound), at most [`MAX_RESIDUALS`] of them: the others' misfit would set its scale.
+pub const RESIDUALS_WITHIN: f64 = 10.0;
+pub const MAX_RESIDUALS: usize = 5;
 
 /// One measured point: v₀ (m/s), e and its standard deviation where known.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -18,6 +24,18 @@ pub struct Point {
     pub v: f64,
     pub e: f64,
     pub sd: Option<f64>,
+}
+
+/// The measured points as the charts take them.
+pub fn points(data: &RestitutionData) -> Vec<Point> {
+    data.points
+        .iter()
+        .map(|p| Point {
+            v: p.v,
+            e: p.e,
+            sd: p.sd,
+        })
+        .collect()
 }
 
 /// A curve e(v₀) or r(v₀) of one fitted law (or engine), and how it is drawn.
@@ -33,6 +51,14 @@ pub struct Curve {
 }
 
 impl Curve {
+    /// A fitted candidate in its style: a law's own, or constant e's.
+    pub fn of(candidate: Candidate, points: Vec<(f64, f64)>) -> Curve {
+        match candidate {
+            Candidate::ConstantE => Curve::constant_e(points),
+            Candidate::Law(m) => Curve::law(m, points),
+        }
+    }
+
     /// A law of the table in its own hue, pattern and glyph.
     pub fn law(model: ForceModel, points: Vec<(f64, f64)>) -> Curve {
         Curve {
@@ -82,12 +108,9 @@ pub fn sample_velocities(axis: &NiceAxis, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The finite values' span, (∞, −∞) without any.
 fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    values
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        })
+    ticks::span(values).unwrap_or((f64::INFINITY, f64::NEG_INFINITY))
 }
 
 /// The data as a series of error bars (one run per point with a standard deviation) and a
@@ -190,6 +213,28 @@ pub fn restitution_chart(
         notes: Vec::new(),
         readout: None,
     }
+}
+
+/// The residuals of the ranked `fits` (best first, and focused) at the measured `data`, in order
+/// of v₀: the best's, and the others' within Δ ≤ [`RESIDUALS_WITHIN`] of it, at most
+/// [`MAX_RESIDUALS`] in all.
+pub fn residual_curves(data: &[Point], fits: &[LawFit]) -> Vec<Curve> {
+    let mut residuals = Vec::new();
+    for (i, fit) in fits.iter().enumerate() {
+        if i > 0 && (fit.delta > RESIDUALS_WITHIN || residuals.len() >= MAX_RESIDUALS) {
+            continue;
+        }
+        let mut at: Vec<(f64, f64)> = data
+            .iter()
+            .zip(&fit.residuals)
+            .map(|(p, r)| (p.v, *r))
+            .collect();
+        at.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut r = Curve::of(fit.candidate, at);
+        r.focused = i == 0;
+        residuals.push(r);
+    }
+    residuals
 }
 
 /// Residuals e_law − e_measured at each measured v₀, one line per law through its points, a rule

@@ -8,7 +8,7 @@
 
 use std::f64::consts::TAU;
 
-use crate::chart::ticks::{NiceAxis, nice_axis};
+use crate::chart::ticks::{NiceAxis, axis_title, nice_axis, span};
 use crate::chart::{Chart, Ink, Rule, Series, model_glyph};
 use crate::format::units::{self, Unit, key_label, key_unit};
 use crate::model::ForceModel;
@@ -181,26 +181,6 @@ impl DiagramAxes {
     }
 }
 
-/// `symbol [unit]`, or the bare symbol of a dimensionless quantity.
-fn title(symbol: &str, axis: &NiceAxis, unit: Unit) -> String {
-    let text = format!("{}{}", axis.prefix.symbol, unit.symbol);
-    if text.is_empty() {
-        symbol.to_string()
-    } else {
-        format!("{symbol} [{text}]")
-    }
-}
-
-/// The smallest and largest finite values of `values` (`None` without any).
-fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
-    values
-        .filter(|v| v.is_finite())
-        .fold(None, |acc, v| match acc {
-            None => Some((v, v)),
-            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
-        })
-}
-
 /// A series of `approach` over `runs` of display points; the rigid answer is drawn last and
 /// bold (it is the reference the compliant stops are read against).
 fn series(approach: Approach, runs: Vec<Vec<(f64, f64)>>) -> Series {
@@ -279,8 +259,8 @@ pub fn time_history(
             },
         );
     }
-    let x_title = title("t", &tx, units::SECOND);
-    let y_title = title("x", &xx, units::METRE);
+    let x_title = axis_title("t", &tx, units::SECOND);
+    let y_title = axis_title("x", &xx, units::METRE);
     let mut chart = assemble(
         "x(t) time history".into(),
         (tx, x_title),
@@ -327,8 +307,8 @@ pub fn phase_portrait(
             series(*a, vec![run])
         })
         .collect();
-    let x_title = title("x", &xx, units::METRE);
-    let y_title = title("v", &vx, units::METRE_PER_SECOND);
+    let x_title = axis_title("x", &xx, units::METRE);
+    let y_title = axis_title("v", &vx, units::METRE_PER_SECOND);
     let mut chart = assemble(
         "v(x) phase portrait".into(),
         (xx.clone(), x_title),
@@ -375,7 +355,7 @@ pub fn impact_map(motions: &[(Approach, &Motion)], (max_x, max_y): (usize, usize
             series(*a, scatter(points))
         })
         .collect();
-    let y_title = title("v_in", &speed, units::METRE_PER_SECOND);
+    let y_title = axis_title("v_in", &speed, units::METRE_PER_SECOND);
     assemble(
         "impact map".into(),
         (phase, "φ = ωt mod 2π [rad]".into()),
@@ -412,8 +392,8 @@ pub fn bifurcation(
             series(*a, scatter(points))
         })
         .collect();
-    let x_title = title(&axes.key, &kx, axes.key_unit);
-    let y_title = title(&axes.quantity, &py, axes.quantity_unit);
+    let x_title = axis_title(&axes.key, &kx, axes.key_unit);
+    let y_title = axis_title(&axes.quantity, &py, axes.quantity_unit);
     assemble(
         format!("bifurcation diagram over {}", axes.key),
         (kx, x_title),

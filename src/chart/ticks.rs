@@ -64,6 +64,26 @@ impl NiceAxis {
     }
 }
 
+/// The smallest and largest finite values of `values` (`None` without any): what an axis spans.
+pub fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// `symbol [unit]` in `axis`'s prefix, or the bare symbol of a dimensionless quantity.
+pub fn axis_title(symbol: &str, axis: &NiceAxis, unit: Unit) -> String {
+    let text = format!("{}{}", axis.prefix.symbol, unit.symbol);
+    if text.is_empty() {
+        symbol.to_string()
+    } else {
+        format!("{symbol} [{text}]")
+    }
+}
+
 /// A log axis covering [lo, hi] (SI, both > 0) with at most `max_labels` labels (at least 2): the
 /// bounds are log₁₀ of display values. A range of whole decades (v₀/100 … 10·v₀) is the axis
 /// itself, labelled every decade or few from `lo`; any other range is widened to whole decades of

@@ -483,17 +483,12 @@ pub struct SystemArgs {
     pub history: Option<u32>,
 }
 
-/// Options of `hertz-tui orbit`.
+/// Where Newton starts a periodic orbit (`orbit`, and the branch's first orbit in `continue`).
 #[derive(Debug, Args)]
-pub struct OrbitArgs {
-    #[command(flatten)]
-    pub source: SceneSelection,
-    #[command(flatten)]
-    pub contact: ContactArgs,
-    #[command(flatten)]
-    pub run: RunArgs,
-    /// m: forcing periods per orbit period (default: the period the run settles on after the
-    /// transient, or 1 without one or with --phase and --speed).
+pub struct OrbitStartArgs {
+    /// m: forcing periods per orbit period (in `continue`, of the branch's first orbit; default:
+    /// the period the run settles on after the transient, or 1 without one or with --phase and
+    /// --speed).
     #[arg(long, value_name = "M", value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub period: Option<u32>,
     /// n: impacts per orbit period (default: as for --period).
@@ -509,8 +504,27 @@ pub struct OrbitArgs {
     )]
     pub phase: Option<f64>,
     /// Newton's first impact: its approach speed, m/s (with --phase).
-    #[arg(long, value_name = "M/S", requires = "phase", value_parser = positive_number)]
+    #[arg(
+        long,
+        value_name = "M/S",
+        requires = "phase",
+        value_parser = positive_number,
+        allow_hyphen_values = true
+    )]
     pub speed: Option<f64>,
+}
+
+/// Options of `hertz-tui orbit`.
+#[derive(Debug, Args)]
+pub struct OrbitArgs {
+    #[command(flatten)]
+    pub source: SceneSelection,
+    #[command(flatten)]
+    pub contact: ContactArgs,
+    #[command(flatten)]
+    pub run: RunArgs,
+    #[command(flatten)]
+    pub start: OrbitStartArgs,
     /// Output format (table or json; csv prints the orbit's impacts).
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,

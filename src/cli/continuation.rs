@@ -19,15 +19,14 @@ use crate::model::system::continuation::{
     Branch, BranchPoint, ContinuationError, ContinuationOptions, SpecialKind, SpecialPoint,
     continue_orbit, continue_special, switch_at_period_doubling,
 };
-use crate::model::system::{
-    self, Contact, DiagramOptions, GuessStart, OrbitGuess, Param, SystemModel,
-};
+use crate::model::system::{self, Contact, DiagramOptions, Param, SystemModel};
 
-use super::args::{ContactArgs, Format, RunArgs, SceneSelection};
+use super::args::{ContactArgs, Format, OrbitStartArgs, RunArgs, SceneSelection};
 use super::bifurcation::values;
 use super::error::CliError;
 use super::json;
 use super::layout::columns;
+use super::orbit;
 use super::system::{GroupsRow, contact_label, contacts, failed, load_system, run_options};
 use super::units::compact_number;
 
@@ -107,25 +106,9 @@ pub struct ContinueArgs {
     /// Also follow the doubled branch born at the first period doubling.
     #[arg(long)]
     pub doubled: bool,
-    /// m: forcing periods per orbit period of the starting orbit (default: the period the run
-    /// settles on after the transient).
-    #[arg(long, value_name = "M", value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub period: Option<u32>,
-    /// n: impacts per orbit period of the starting orbit (default: as for --period).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub impacts: Option<u32>,
-    /// Newton's first impact: its forcing phase ωt, rad (with --speed; default: from the
-    /// attractor reached after the transient).
-    #[arg(
-        long,
-        value_name = "RAD",
-        requires = "speed",
-        allow_hyphen_values = true
-    )]
-    pub phase: Option<f64>,
-    /// Newton's first impact: its approach speed, m/s (with --phase).
-    #[arg(long, value_name = "M/S", requires = "phase")]
-    pub speed: Option<f64>,
+    /// Newton's start of the branch's first orbit.
+    #[command(flatten)]
+    pub start: OrbitStartArgs,
     /// Points of a branch at most.
     #[arg(long, value_name = "N", default_value_t = 400, value_parser = clap::value_parser!(u32).range(2..=100_000))]
     pub max_points: u32,
@@ -181,8 +164,7 @@ fn check(args: &ContinueArgs) -> Result<(), CliError> {
         ("--to", Some(args.to)),
         ("--from2", args.from2),
         ("--to2", args.to2),
-        ("--speed", args.speed),
-        ("--phase", args.phase),
+        ("--phase", args.start.phase),
     ];
     for (name, v) in numbers {
         if let Some(v) = v
@@ -195,11 +177,6 @@ fn check(args: &ContinueArgs) -> Result<(), CliError> {
     }
     if args.from == args.to {
         return Err(CliError::Usage("--from and --to must differ".into()));
-    }
-    if args.speed.is_some_and(|v| v <= 0.0) {
-        return Err(CliError::Usage(
-            "--speed must be > 0 (an approach speed)".into(),
-        ));
     }
     if !(args.max_step.is_finite() && args.max_step > 0.0) {
         return Err(CliError::Usage(format!(
@@ -233,19 +210,7 @@ pub fn report(args: &ContinueArgs, registry: &Registry) -> Result<ContinueReport
             .min(ContinuationOptions::default().initial_step),
         ..ContinuationOptions::default()
     };
-    let guess = OrbitGuess {
-        forcing_cycles: args.period.unwrap_or(0),
-        impacts: args.impacts.unwrap_or(0),
-        start: match (args.phase, args.speed) {
-            (Some(phase), Some(v_in)) => Some(GuessStart {
-                phase,
-                v_in,
-                stop: 0,
-            }),
-            _ => None,
-        },
-        attractor: run_options(&args.run, 0),
-    };
+    let guess = orbit::guess(&args.start, &args.run);
     let range = (args.from, args.to);
     let mut results = Vec::new();
     for contact in contacts(&args.contact, &model)? {

@@ -7,7 +7,7 @@ use crate::format::csv;
 use crate::model::presets::Registry;
 use crate::model::system::{self, GuessStart, Orbit, OrbitGuess, OrbitOptions};
 
-use super::args::{Format, OrbitArgs};
+use super::args::{Format, OrbitArgs, OrbitStartArgs, RunArgs};
 use super::error::CliError;
 use super::json;
 use super::layout::columns;
@@ -32,13 +32,13 @@ pub struct OrbitReport {
     pub orbits: Vec<OrbitRow>,
 }
 
-/// Newton's guess from the arguments: the given first impact, or the attractor.
-fn guess(args: &OrbitArgs) -> OrbitGuess {
+/// Newton's guess from the arguments: the given first impact, or the attractor of `run`.
+pub fn guess(start: &OrbitStartArgs, run: &RunArgs) -> OrbitGuess {
     OrbitGuess {
         // 0: the period the run settles on (the model's orbit search detects it).
-        forcing_cycles: args.period.unwrap_or(0),
-        impacts: args.impacts.unwrap_or(0),
-        start: match (args.phase, args.speed) {
+        forcing_cycles: start.period.unwrap_or(0),
+        impacts: start.impacts.unwrap_or(0),
+        start: match (start.phase, start.speed) {
             (Some(phase), Some(v_in)) => Some(GuessStart {
                 phase,
                 v_in,
@@ -46,7 +46,7 @@ fn guess(args: &OrbitArgs) -> OrbitGuess {
             }),
             _ => None,
         },
-        attractor: run_options(&args.run, 0),
+        attractor: run_options(run, 0),
     }
 }
 
@@ -57,7 +57,7 @@ pub fn report(args: &OrbitArgs, registry: &Registry) -> Result<OrbitReport, CliE
         max_impacts: args.run.max_impacts,
         ..OrbitOptions::default()
     };
-    let guess = guess(args);
+    let guess = guess(&args.start, &args.run);
     let orbits = contacts(&args.contact, &model)?
         .iter()
         .map(|contact| {

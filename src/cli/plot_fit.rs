@@ -2,14 +2,13 @@
 //! law's curve and the residuals, or against each engine's realised e(v₀) (docs/fitting.md).
 
 use crate::chart::fit::{
-    Curve, Point, residual_chart, restitution_chart, sample_velocities, velocity_axis,
+    Curve, Point, RESIDUALS_WITHIN, points, residual_chart, residual_curves, restitution_chart,
+    sample_velocities, velocity_axis,
 };
 use crate::chart::{Chart, Hue, Ink};
 use crate::model::Scene;
 use crate::model::engine::{self, ENGINES};
-use crate::model::fit::{
-    Candidate, FitOptions, FitReport, RestitutionData, candidates, fit_restitution,
-};
+use crate::model::fit::{Candidate, FitOptions, FitReport, candidates, fit_restitution};
 
 use super::args::{ChartChoice, PlotArgs};
 use super::error::CliError;
@@ -17,11 +16,6 @@ use super::fit::{fitted_scene, read_restitution};
 
 /// Points along each curve.
 const CURVE_POINTS: usize = 80;
-
-/// The residuals panel shows the laws within this Δ of the best (Burnham & Anderson's "much less
-/// supported" bound), at most [`MAX_RESIDUALS`] of them: the others' misfit would set its scale.
-const RESIDUALS_WITHIN: f64 = 10.0;
-const MAX_RESIDUALS: usize = 5;
 
 /// Glyphs of the engines' curves: capitals no law uses.
 const ENGINE_GLYPHS: [char; 10] = ['B', 'C', 'D', 'F', 'G', 'H', 'J', 'K', 'L', 'M'];
@@ -65,24 +59,6 @@ pub fn charts(
     }
 }
 
-fn points(data: &RestitutionData) -> Vec<Point> {
-    data.points
-        .iter()
-        .map(|p| Point {
-            v: p.v,
-            e: p.e,
-            sd: p.sd,
-        })
-        .collect()
-}
-
-fn styled(candidate: Candidate, points: Vec<(f64, f64)>) -> Curve {
-    match candidate {
-        Candidate::ConstantE => Curve::constant_e(points),
-        Candidate::Law(m) => Curve::law(m, points),
-    }
-}
-
 /// The data with each fitted law's e(v₀), the best focused; beside it the residuals.
 fn fit_charts(
     scene: &Scene,
@@ -95,7 +71,6 @@ fn fit_charts(
     let axis = velocity_axis(data, budget.0);
     let vs = sample_velocities(&axis, CURVE_POINTS);
     let mut curves = Vec::new();
-    let mut residuals = Vec::new();
     let mut notes = Vec::new();
     for (i, fit) in report.fits.iter().enumerate() {
         let line: Vec<(f64, f64)> = vs
@@ -110,22 +85,11 @@ fn fit_charts(
                 vs.len()
             ));
         }
-        let mut curve = styled(fit.candidate, line);
+        let mut curve = Curve::of(fit.candidate, line);
         curve.focused = i == 0;
         curves.push(curve);
-        if i > 0 && (fit.delta > RESIDUALS_WITHIN || residuals.len() >= MAX_RESIDUALS) {
-            continue;
-        }
-        let mut at: Vec<(f64, f64)> = data
-            .iter()
-            .zip(&fit.residuals)
-            .map(|(p, r)| (p.v, *r))
-            .collect();
-        at.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut r = styled(fit.candidate, at);
-        r.focused = i == 0;
-        residuals.push(r);
     }
+    let residuals = residual_curves(data, &report.fits);
     let best = &report.fits[0];
     let title = format!(
         "e(v₀) of {file} · {} fits by {}, best {}",

@@ -37,7 +37,7 @@ pub fn render_run(scene: &str, t: &EngineRun) -> String {
         }
     }
     let _ = writeln!(out, "\nVersions");
-    let _ = writeln!(out, "  - {}", t.run.checked);
+    let _ = writeln!(out, "  - {}", t.run.checked());
     for v in &t.run.versions {
         let _ = writeln!(out, "  - {v}");
     }

@@ -7,24 +7,31 @@ use std::f64::consts::PI;
 
 use serde_json::Value;
 
-use crate::support::{ok, out_file, refused};
+use crate::support::{ok, out_file, refused, with};
+
+/// The ball's branch in `param` from `from` to `to`.
+fn ball<'a>(param: &'a str, from: &'a str, to: &'a str) -> Vec<&'a str> {
+    vec![
+        "continue",
+        "--scene",
+        "bouncing-ball",
+        "--param",
+        param,
+        "--from",
+        from,
+        "--to",
+        to,
+    ]
+}
 
 /// The ball's branch from Γ = 1.3 (the orbit found from the run's settled period-1 cycle).
-const BALL: [&str; 9] = [
-    "continue",
-    "--scene",
-    "bouncing-ball",
-    "--param",
-    "system.gamma",
-    "--from",
-    "1.3",
-    "--to",
-    "1.7",
-];
+fn gamma_branch() -> Vec<&'static str> {
+    ball("system.gamma", "1.3", "1.7")
+}
 
 #[test]
 fn the_balls_period_doubling_and_doubled_branch() {
-    let mut args = BALL.to_vec();
+    let mut args = gamma_branch();
     args.extend(["--doubled", "--format", "json"]);
     let report: Value = serde_json::from_str(&ok(&args)).unwrap();
     let e: f64 = 0.5;
@@ -40,7 +47,7 @@ fn the_balls_period_doubling_and_doubled_branch() {
     assert_eq!(doubled["cycles"], 2);
     assert_eq!(doubled["stops"].as_array().unwrap().len(), 2);
     // The CSV: a row per impact of every orbit, and the special point's own row.
-    let mut args = BALL.to_vec();
+    let mut args = gamma_branch();
     args.extend(["--format", "csv"]);
     let csv = ok(&args);
     let mut lines = csv.lines();
@@ -147,7 +154,7 @@ fn the_compliant_oscillators_grazing_is_in_the_csv_as_the_rigid_ones() {
 #[test]
 fn the_figure_marks_the_special_points() {
     let path = out_file("continuation", "branch.svg");
-    let mut args = BALL.to_vec();
+    let mut args = gamma_branch();
     args.extend([
         "--diagram",
         "20",
@@ -174,58 +181,35 @@ fn the_figure_marks_the_special_points() {
 
 #[test]
 fn bad_input_is_named() {
-    let e = refused(&[
-        "continue",
-        "--scene",
-        "bouncing-ball",
-        "--param",
-        "system.gamma",
-        "--from",
-        "1",
-        "--to",
-        "1",
-    ]);
+    let e = refused(&ball("system.gamma", "1", "1"));
     assert!(e.contains("--from and --to must differ"), "{e}");
-    let e = refused(&[
-        "continue",
-        "--scene",
-        "bouncing-ball",
-        "--param",
-        "system.gap",
-        "--from",
-        "1",
-        "--to",
-        "2",
-    ]);
+    let e = refused(&ball("system.gap", "1", "2"));
     assert!(e.contains("system.gap"), "{e}");
-    let e = refused(&[
-        "continue",
-        "--scene",
-        "bouncing-ball",
-        "--param",
-        "system.gamma",
-        "--from",
-        "1.3",
-        "--to",
-        "2",
-        "--second",
-        "system.frequency",
-    ]);
+    let e = refused(&with(
+        &ball("system.gamma", "1.3", "2"),
+        &["--second", "system.frequency"],
+    ));
     assert!(e.contains("--from2"), "{e}");
     // A start below the fold, where no period-1 orbit exists: said in words, naming the stop.
-    let e = refused(&[
-        "continue",
-        "--scene",
-        "bouncing-ball",
-        "--param",
-        "system.gamma",
-        "--from",
-        "0.5",
-        "--to",
-        "2",
-    ]);
+    let e = refused(&ball("system.gamma", "0.5", "2"));
     assert!(
         e.contains("rigid stop") && e.contains("exists only from Γ"),
         "{e}"
     );
+}
+
+#[test]
+fn a_negative_start_speed_is_refused_as_orbit_refuses_it() {
+    let start = ["--phase", "0", "--speed", "-1"];
+    let mut args = gamma_branch();
+    args.extend(start);
+    let e = refused(&args);
+    assert!(
+        e.contains("--speed") && e.contains("-1 must be a finite number > 0"),
+        "{e}"
+    );
+    let mut args = vec!["orbit", "--scene", "bouncing-ball"];
+    args.extend(start);
+    let first_line = |s: &str| s.lines().next().unwrap_or_default().to_string();
+    assert_eq!(first_line(&refused(&args)), first_line(&e));
 }

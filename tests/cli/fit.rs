@@ -4,15 +4,14 @@
 
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-use serde_json::Value;
 
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::calibrate::hunt_crossley_restitution;
 use hertz_tui::model::fit::{Candidate, restitution_model};
 use hertz_tui::model::presets::Registry;
+
+use crate::support::{json, ok, refused};
 
 /// The truths the shipped data were generated with (tests/cli/fit_data.rs).
 const STEEL_A: f64 = 1.2;
@@ -35,44 +34,6 @@ fn temp(name: &str) -> PathBuf {
     ));
     fs::create_dir_all(&dir).unwrap();
     dir.join(name)
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
-        .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-fit-no-config"),
-        )
-        .env_remove("RUST_BACKTRACE")
-        .output()
-        .expect("the binary runs")
-}
-
-fn ok(args: &[&str]) -> String {
-    let out = run(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
-
-fn json(args: &[&str]) -> Value {
-    let mut all = args.to_vec();
-    all.extend(["--format", "json"]);
-    serde_json::from_str(&ok(&all)).unwrap()
-}
-
-/// A user error: status 2, nothing on stdout, the message.
-fn user_error(args: &[&str]) -> String {
-    let out = run(args);
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-    assert!(out.stdout.is_empty());
-    assert!(!err.contains("panicked"), "{err}");
-    err
 }
 
 /// Thornton's v_y on the aluminium preset: the truth of aluminium-thornton.csv.
@@ -193,11 +154,11 @@ fn bad_data_is_refused_with_the_file_and_line() {
         let file = temp("bad.csv");
         fs::write(&file, text).unwrap();
         let f = file.to_str().unwrap();
-        let err = user_error(&["fit", "--scene", "steel-sphere-r10-plate", "--data", f]);
+        let err = refused(&["fit", "--scene", "steel-sphere-r10-plate", "--data", f]);
         assert!(err.contains(&format!("{f}{line}")), "{text:?}: {err}");
         assert!(err.contains(word), "{text:?}: {err}");
     }
-    let err = user_error(&[
+    let err = refused(&[
         "fit",
         "--scene",
         "steel-sphere-r10-plate",
@@ -205,7 +166,7 @@ fn bad_data_is_refused_with_the_file_and_line() {
         "no/such/file.csv",
     ]);
     assert!(err.contains("no/such/file.csv: cannot read"), "{err}");
-    let err = user_error(&[
+    let err = refused(&[
         "fit",
         "--scene",
         "steel-sphere-r10-plate",
@@ -221,7 +182,7 @@ fn bad_data_is_refused_with_the_file_and_line() {
     // A header and no point.
     let file = temp("none.csv");
     fs::write(&file, "v, e\n").unwrap();
-    let err = user_error(&[
+    let err = refused(&[
         "fit",
         "--scene",
         "steel-sphere-r10-plate",
@@ -302,7 +263,7 @@ fn the_written_scene_is_what_solve_translate_and_overrides_use() {
     let drake = json(&["translate", "--scene", o, "--engine", "drake"]);
     assert!((drake["realised"]["e_out"].as_f64().unwrap() - e).abs() < 1e-8);
     // e is the fit's: setting it by hand is refused, naming the override.
-    let err = user_error(&["solve", "--scene", o, "--set", "impact.restitution=0.5"]);
+    let err = refused(&["solve", "--scene", o, "--set", "impact.restitution=0.5"]);
     assert!(
         err.contains("(--set impact.restitution)") && err.contains("[fit]"),
         "{err}"
@@ -462,7 +423,7 @@ fn csv_has_a_row_per_law_and_the_figure_draws_every_fitted_law() {
     ] {
         assert!(text.contains(name), "{name} missing from the figure");
     }
-    let err = user_error(&[
+    let err = refused(&[
         "plot",
         "--scene",
         "steel-sphere-r10-plate",
@@ -498,7 +459,7 @@ fn a_force_trace_goes_to_the_trace_fit_and_recovers_its_law() {
     within("a", 1.2);
     within("t0", 20e-6);
     assert!(out["verdict_text"].as_str().unwrap().contains(" N."));
-    let err = user_error(&[
+    let err = refused(&[
         "fit",
         "--scene",
         "steel-sphere-r10-plate",

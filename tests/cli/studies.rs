@@ -1,18 +1,10 @@
 //! The real binary's `bench` (work-precision, --stability) and `sweep` subcommands.
 
-use std::process::{Command, Output};
+use std::process::Output;
 
 use serde_json::Value;
 
-/// Runs the binary with an empty user-preset folder so only the built-ins count.
-fn run(args: &[&str]) -> Output {
-    let empty = std::env::temp_dir().join(format!("hertz-tui-cli-studies-{}", std::process::id()));
-    Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
-        .args(args)
-        .env("XDG_CONFIG_HOME", &empty)
-        .output()
-        .expect("the binary runs")
-}
+use crate::support::run;
 
 /// The stdout of a successful run (else the test fails with its stderr).
 fn stdout_text(output: &Output) -> String {

@@ -45,12 +45,14 @@ pub fn with<'a>(base: &[&'a str], more: &[&'a str]) -> Vec<&'a str> {
     base.iter().chain(more).copied().collect()
 }
 
-/// The user error of `args`: exit status 2, nothing on stdout, the message on stderr.
+/// The user error of `args`: exit status 2, nothing on stdout, the message on stderr (no panic).
 pub fn refused(args: &[&str]) -> String {
     let output = run(args);
-    assert_eq!(output.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8_lossy(&output.stderr).to_string();
+    assert_eq!(output.status.code(), Some(2), "{args:?}: {err}");
     assert!(output.stdout.is_empty(), "{args:?}: {:?}", output.stdout);
-    String::from_utf8(output.stderr).unwrap()
+    assert!(!err.contains("panicked"), "{err}");
+    err
 }
 
 /// A file in this test process's own temporary folder (`group` keeps the test files apart).

@@ -110,7 +110,7 @@ fn every_printed_step_keeps_its_promise_and_the_script_prints_it() {
             }
             if engine.id == "chrono" || engine.id == "adams" {
                 assert!(
-                    r.run.script.is_none() && r.run.checked.starts_with("not run in the engine")
+                    r.run.script.is_none() && r.run.checked().starts_with("not run in the engine")
                 );
             } else {
                 assert!(r.run.checked_in.is_some(), "{}", engine.id);
@@ -161,4 +161,40 @@ fn mujoco_s_step_follows_the_contact_time_not_timeconst() {
         c.step
     );
     let _ = PI;
+}
+
+#[test]
+fn each_run_says_what_its_claim_rests_on_in_its_json() {
+    let sphere = scene("fig5-steel-sphere-r10-plate");
+    let cylinders = scene("steel-cylinders-r20-l100");
+    let lammps = engine::run::lammps::CHECKED_IN;
+    let drake = engine::run::drake::CHECKED_IN;
+    for (id, scene, expected) in [
+        (
+            "lammps",
+            &sphere,
+            format!("run in {lammps} by hertz-tui's engine checks"),
+        ),
+        (
+            "drake",
+            &sphere,
+            format!("run in {drake} by hertz-tui's engine checks (continuous and discrete)"),
+        ),
+        (
+            "drake",
+            &cylinders,
+            format!("scripts are run in {drake} for spheres; not this scene"),
+        ),
+        (
+            "chrono",
+            &sphere,
+            "not run in the engine: checked against the formulas of its source (named above)"
+                .to_string(),
+        ),
+    ] {
+        let r = run(id, scene, 0.01);
+        assert_eq!(r.run.checked(), expected, "{id}");
+        let json = serde_json::to_value(&r).unwrap();
+        assert_eq!(json["run"]["checked"], expected.as_str(), "{id}");
+    }
 }

@@ -16,7 +16,7 @@ use crate::model::force::ForceModel;
 use crate::model::power_law::PowerLaw;
 
 use super::error::EngineError;
-use super::solve::{calibrated_damping, realise};
+use super::solve::{hunt_crossley, hunt_crossley_chi, realise};
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, describe, shown};
 
 /// This engine's row of [`super::ENGINES`].
@@ -45,17 +45,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         k: k.value / 2.0,
         n: 1.0,
     };
-    let law_at = |v0: f64, chi: f64| {
-        ForceModel::HuntCrossley.law_with_damping(&scene.params(elastic, v0), chi)
-    };
-    let chi = calibrated_damping(
-        ENGINE.id,
-        ForceModel::HuntCrossley,
-        scene,
-        elastic,
-        0.0..=f64::INFINITY,
-        |chi| law_at(scene.v0, chi),
-    )?;
+    let chi = hunt_crossley_chi(ENGINE.id, scene, elastic)?;
     let d = Parameter::new(
         "hunt_crossley_dissipation",
         chi / scene.v0,
@@ -65,7 +55,9 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(chi)
         ),
     );
-    let (realised, e_of_v) = realise(scene, |v0| Ok(law_at(v0, d.value * v0)?))?;
+    let (realised, e_of_v) = realise(scene, |v0| {
+        Ok(hunt_crossley(scene, elastic, v0, d.value * v0)?)
+    })?;
     let mut notes = vec![
         format!(
             "A linear spring cannot match Hertz in both force and time: with K from the contact time, F_max is {} N against Hertz's {} N.",

@@ -18,7 +18,7 @@ use crate::model::force::ForceModel;
 use crate::model::power_law::PowerLaw;
 
 use super::error::EngineError;
-use super::solve::{calibrated_damping, realise};
+use super::solve::{hunt_crossley, hunt_crossley_chi, realise};
 use super::{Engine, EngineScene, Fragment, Parameter, Translation, shown};
 
 /// This engine's row of [`super::ENGINES`].
@@ -48,17 +48,7 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
         k: 4.0 / 3.0 * scene.r_star.sqrt() * e_combined,
         n: 1.5,
     };
-    let law_at = |v0: f64, chi: f64| {
-        ForceModel::HuntCrossley.law_with_damping(&scene.params(elastic, v0), chi)
-    };
-    let chi = calibrated_damping(
-        ENGINE.id,
-        ForceModel::HuntCrossley,
-        scene,
-        elastic,
-        0.0..=f64::INFINITY,
-        |chi| law_at(scene.v0, chi),
-    )?;
+    let chi = hunt_crossley_chi(ENGINE.id, scene, elastic)?;
     let dissipation = Parameter::new(
         "dissipation",
         2.0 * chi / (3.0 * scene.v0),
@@ -68,7 +58,14 @@ fn translate(scene: &EngineScene) -> Result<Translation, EngineError> {
             shown(chi)
         ),
     );
-    let (realised, e_of_v) = realise(scene, |v0| Ok(law_at(v0, 1.5 * dissipation.value * v0)?))?;
+    let (realised, e_of_v) = realise(scene, |v0| {
+        Ok(hunt_crossley(
+            scene,
+            elastic,
+            v0,
+            1.5 * dissipation.value * v0,
+        )?)
+    })?;
     let [b1, b2] = scene.bodies();
     let documented =
         |m: &crate::model::Material| m.youngs_modulus / (1.0 - m.poisson_ratio.powi(2));

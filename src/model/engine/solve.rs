@@ -70,6 +70,33 @@ pub fn realise(
     Ok((at_v0, e_of_v))
 }
 
+/// The Hunt–Crossley law (the `hunt-crossley` row) on `elastic` with damping χ for an impact at
+/// `v0`: Drake's and Simbody's laws as hertz-tui solves them.
+pub fn hunt_crossley(
+    scene: &EngineScene,
+    elastic: PowerLaw,
+    v0: f64,
+    chi: f64,
+) -> Result<AnyLaw, ModelError> {
+    ForceModel::HuntCrossley.law_with_damping(&scene.params(elastic, v0), chi)
+}
+
+/// The χ ≥ 0 with which [`hunt_crossley`] on `elastic` realises the scene's e at v₀.
+pub fn hunt_crossley_chi(
+    engine: &'static str,
+    scene: &EngineScene,
+    elastic: PowerLaw,
+) -> Result<f64, EngineError> {
+    calibrated_damping(
+        engine,
+        ForceModel::HuntCrossley,
+        scene,
+        elastic,
+        0.0..=f64::INFINITY,
+        |chi| hunt_crossley(scene, elastic, scene.v0, chi),
+    )
+}
+
 impl EngineScene {
     /// The impact parameters of the engine's law: the scene's reduced mass and e, the engine's
     /// elastic law, impact velocity `v0`, no plastic indentation (no engine here models one).

@@ -123,6 +123,24 @@ pub fn weights(values: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// Sorts `fits` best first by `criterion` (ties: fewer parameters, then their place in `order`,
+/// the order asked) and fills Δ and the Akaike weights.
+pub(crate) fn rank(fits: &mut [super::LawFit], criterion: Criterion, order: &[Candidate]) {
+    let position = |c: Candidate| order.iter().position(|&o| o == c).unwrap_or(usize::MAX);
+    fits.sort_by(|a, b| {
+        a.score(criterion)
+            .total_cmp(&b.score(criterion))
+            .then(a.params.len().cmp(&b.params.len()))
+            .then(position(a.candidate).cmp(&position(b.candidate)))
+    });
+    let values: Vec<f64> = fits.iter().map(|f| f.score(criterion)).collect();
+    let w = weights(&values);
+    for (f, w) in fits.iter_mut().zip(w) {
+        f.delta = f.score(criterion) - values[0];
+        f.weight = w;
+    }
+}
+
 /// Laws the data cannot tell apart from the best-ranked law of the group, and the numbers that
 /// say so.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -360,7 +360,7 @@ impl Fitter {
             return Err(FitError::NothingFitted(failed));
         }
         let order: Vec<Candidate> = self.forwards.iter().map(|(c, _)| *c).collect();
-        rank(&mut fits, opts.criterion, &order);
+        criterion::rank(&mut fits, opts.criterion, &order);
         let verdict = verdict(self, data, &fits, opts.criterion);
         let indistinguishable = verdict.groups.iter().map(|g| g.members.clone()).collect();
         Ok(FitReport {
@@ -514,23 +514,6 @@ fn start(forward: &Forward, vs: &[f64], es: &[f64]) -> Result<Vec<f64>, FitError
     let e = middle[middle.len() / 2];
     let v = vs[n / 2];
     forward.start(v, e)
-}
-
-/// Sorts `fits` best first by `criterion` and fills Δ and the Akaike weights.
-fn rank(fits: &mut [LawFit], criterion: Criterion, order: &[Candidate]) {
-    let position = |c: Candidate| order.iter().position(|&o| o == c).unwrap_or(usize::MAX);
-    fits.sort_by(|a, b| {
-        a.score(criterion)
-            .total_cmp(&b.score(criterion))
-            .then(a.params.len().cmp(&b.params.len()))
-            .then(position(a.candidate).cmp(&position(b.candidate)))
-    });
-    let values: Vec<f64> = fits.iter().map(|f| f.score(criterion)).collect();
-    let w = criterion::weights(&values);
-    for (f, w) in fits.iter_mut().zip(w) {
-        f.delta = f.score(criterion) - values[0];
-        f.weight = w;
-    }
 }
 
 /// Points of the grid over the data's velocity range on which curves are compared.

@@ -70,7 +70,6 @@ pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, 
     );
     Ok(Run {
         checked_in: Some(CHECKED_IN),
-        checked: format!("run in {CHECKED_IN} by hertz-tui's engine checks (continuous and discrete)"),
         claim,
         other_claims: other,
         script: Some(Script {

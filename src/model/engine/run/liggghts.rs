@@ -11,10 +11,14 @@ use super::super::tsuji::beta;
 use super::super::{EngineScene, Fragment, Translation};
 use super::{
     Bodies, Claim, Run, Scheme, Script, gap, max_steps, measure_loop, num, parameter, stepped,
+    verlet_header,
 };
 
 /// The LIGGGHTS release the input was run in.
 pub const CHECKED_IN: &str = "LIGGGHTS-PUBLIC 3.8.0 (Debian 12: apt-get install liggghts)";
+
+/// The command that runs the input.
+const COMMAND: &str = "liggghts -in impact.in";
 
 /// Builds LIGGGHTS's run.
 pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, EngineError> {
@@ -78,10 +82,7 @@ pub fn run(scene: &EngineScene, t: &Translation, tolerance: f64) -> Result<Run, 
     };
     let half = num(4.0 * extent);
     let text = format!(
-        r#"# hertz-tui translate --engine liggghts: {name}
-# Runs as printed in {CHECKED_IN}: liggghts -in impact.in
-# One sphere impact, no gravity, velocity Verlet (fix nve/sphere) at the step hertz-tui chose:
-# its model of this stepping gives e = {e_claim}, F_max = {f} N, contact time {tc} s.
+        r#"{header}
 atom_style granular
 atom_modify map array
 boundary m m m
@@ -102,10 +103,7 @@ velocity ball set 0 0 -{v0}
 fix integr all nve/sphere
 thermo 0
 {measure}"#,
-        name = scene.scene.name,
-        e_claim = num(choice.at_step.e_out),
-        f = num(choice.at_step.f_max),
-        tc = num(choice.at_step.t_contact),
+        header = verlet_header(t, scene, CHECKED_IN, COMMAND, &choice),
         skin = num(0.1 * bodies.radius()),
         step = num(choice.step),
         v0 = num(scene.v0),
@@ -117,7 +115,7 @@ thermo 0
         Script {
             file: "impact.in",
             language: "text",
-            command: "liggghts -in impact.in",
+            command: COMMAND,
             text,
         },
         vec![

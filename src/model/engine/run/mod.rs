@@ -65,14 +65,12 @@ pub struct Script {
     pub text: String,
 }
 
-/// How to run a translation, and what running it gives.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// How to run a translation, and what running it gives (serialised with [`Run::checked`]).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Run {
     /// The engine release the script was run in by hertz-tui's engine checks (`None`: not run in
     /// the engine, checked against its source's formulas only).
     pub checked_in: Option<&'static str>,
-    /// What the claim rests on, in words.
-    pub checked: String,
     /// What the script gives, per hertz-tui.
     pub claim: Claim,
     /// Further claims the script makes when run another way (e.g. Drake's discrete plant).
@@ -88,6 +86,27 @@ pub struct Run {
 }
 
 impl Run {
+    /// What the claim rests on, in words: the release the scripts were run in (`checked_in`), for
+    /// this scene or (without a script) for spheres only, every way of running it (with other
+    /// claims: Drake's continuous and discrete plants); or the source's formulas alone.
+    pub fn checked(&self) -> String {
+        match (self.checked_in, &self.script) {
+            (None, _) => {
+                "not run in the engine: checked against the formulas of its source (named above)"
+                    .into()
+            }
+            (Some(release), None) => {
+                format!("scripts are run in {release} for spheres; not this scene")
+            }
+            (Some(release), Some(_)) if self.other_claims.is_empty() => {
+                format!("run in {release} by hertz-tui's engine checks")
+            }
+            (Some(release), Some(_)) => {
+                format!("run in {release} by hertz-tui's engine checks (continuous and discrete)")
+            }
+        }
+    }
+
     /// A run whose script was run in release `checked_in` by the engine checks, with no other
     /// claim: what every engine but Drake (which claims its discrete plant too) builds.
     pub fn run_in(
@@ -99,7 +118,6 @@ impl Run {
     ) -> Run {
         Run {
             checked_in: Some(checked_in),
-            checked: format!("run in {checked_in} by hertz-tui's engine checks"),
             claim,
             other_claims: Vec::new(),
             script: Some(script),
@@ -107,6 +125,33 @@ impl Run {
             versions,
             fragments,
         }
+    }
+}
+
+impl Serialize for Run {
+    /// The fields in order, with `checked` after `checked_in`; the pattern names every field, so a
+    /// new one is not left out.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let Run {
+            checked_in,
+            claim,
+            other_claims,
+            script,
+            no_script,
+            versions,
+            fragments,
+        } = self;
+        let mut run = serializer.serialize_struct("Run", 8)?;
+        run.serialize_field("checked_in", checked_in)?;
+        run.serialize_field("checked", &self.checked())?;
+        run.serialize_field("claim", claim)?;
+        run.serialize_field("other_claims", other_claims)?;
+        run.serialize_field("script", script)?;
+        run.serialize_field("no_script", no_script)?;
+        run.serialize_field("versions", versions)?;
+        run.serialize_field("fragments", fragments)?;
+        run.end()
     }
 }
 
@@ -136,7 +181,6 @@ pub fn run(
         Some((_, runner)) => runner(scene, translation, tolerance),
         None => Ok(Run {
             checked_in: None,
-            checked: "not run in the engine: checked against the formulas of its source (named above)".into(),
             claim: Claim::ContinuousOnly {
                 reason: "no package of this engine is available here to run it".into(),
             },
@@ -219,7 +263,6 @@ impl Bodies {
 pub fn without_script(checked_in: &'static str, claim: Claim, reason: String) -> Run {
     Run {
         checked_in: Some(checked_in),
-        checked: format!("scripts are run in {checked_in} for spheres; not this scene"),
         claim,
         other_claims: Vec::new(),
         script: None,
@@ -253,6 +296,26 @@ variable e_out equal v_vrel/{v0}
 variable contact_time equal v_nc*dt
 print "RESULT e_out ${{e_out}} F_max ${{fmax}} contact_time ${{contact_time}}"
 "#
+    )
+}
+
+/// The comment lines a LAMMPS-family input opens with: the command that printed it, the release
+/// and command it runs as printed in, and what hertz-tui's model of its velocity-Verlet stepping
+/// (`choice`) gives.
+pub fn verlet_header(
+    t: &Translation,
+    scene: &EngineScene,
+    checked_in: &str,
+    command: &str,
+    choice: &StepChoice,
+) -> String {
+    format!(
+        "# hertz-tui translate --engine {engine}: {name}\n# Runs as printed in {checked_in}: {command}\n# One sphere impact, no gravity, velocity Verlet (fix nve/sphere) at the step hertz-tui chose:\n# its model of this stepping gives e = {e}, F_max = {f} N, contact time {tc} s.",
+        engine = t.engine,
+        name = scene.scene.name,
+        e = num(choice.at_step.e_out),
+        f = num(choice.at_step.f_max),
+        tc = num(choice.at_step.t_contact),
     )
 }
 

@@ -14,7 +14,7 @@ use super::data::{TraceData, TraceDataError, TraceQuantity};
 use super::forward::{TraceParams, force_at_touch, sample_trace, solve_trace_impact};
 use super::layout::Layout;
 use super::options::{FreeParams, TRACE_FLOOR, TraceFitOptions};
-use super::rank::{rank, verdict};
+use super::rank::verdict;
 use super::start::start;
 
 /// Fits each law of `models` to the trace `data` on `scene` and ranks them by the criterion of
@@ -103,7 +103,8 @@ pub fn fit_trace_params(
         return Err(FitError::NothingFitted(failed));
     }
     let criterion = opts.fit.criterion;
-    rank(&mut fits, criterion, models);
+    let order: Vec<Candidate> = models.iter().map(|&m| Candidate::Law(m)).collect();
+    criterion::rank(&mut fits, criterion, &order);
     let verdict = verdict(data, &fits, opts.fit.criterion, base.v0);
     let indistinguishable = verdict.groups.iter().map(|g| g.members.clone()).collect();
     Ok(FitReport {

@@ -1,5 +1,5 @@
-//! Ranking trace fits and telling which the trace cannot separate, as e(v) fits are ranked
-//! (docs/physics.md §9.3).
+//! Telling which ranked trace fits the trace cannot separate, as e(v) fits are grouped
+//! (docs/physics.md §9.3); both are ranked by [`criterion::rank`].
 
 use crate::model::fit::criterion::{self, Verdict, judge};
 use crate::model::fit::{Candidate, LawFit};
@@ -8,29 +8,6 @@ use crate::model::force::table::Family;
 
 use super::data::TraceData;
 use super::options::TRACE_FLOOR;
-
-/// Sorts `fits` best first by `criterion` (ties: fewer parameters, then the order asked) and
-/// fills Δ and the Akaike weights.
-pub(super) fn rank(fits: &mut [LawFit], criterion: criterion::Criterion, order: &[ForceModel]) {
-    let position = |c: Candidate| {
-        order
-            .iter()
-            .position(|&m| Candidate::Law(m) == c)
-            .unwrap_or(usize::MAX)
-    };
-    fits.sort_by(|a, b| {
-        a.score(criterion)
-            .total_cmp(&b.score(criterion))
-            .then(a.params.len().cmp(&b.params.len()))
-            .then(position(a.candidate).cmp(&position(b.candidate)))
-    });
-    let values: Vec<f64> = fits.iter().map(|f| f.score(criterion)).collect();
-    let w = criterion::weights(&values);
-    for (f, w) in fits.iter_mut().zip(w) {
-        f.delta = f.score(criterion) - values[0];
-        f.weight = w;
-    }
-}
 
 /// Groups the ranked fits the trace cannot tell apart, as e(v) fits are grouped (docs/physics.md
 /// §9.3): a law joins the group of the best-ranked law still ungrouped when their Δ < 2 or when

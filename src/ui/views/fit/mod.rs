@@ -13,7 +13,8 @@ use ratatui::Frame;
 
 use crate::chart::Chart;
 use crate::chart::fit::{
-    Curve, Point, residual_chart, restitution_chart, sample_velocities, velocity_axis,
+    Curve, RESIDUALS_WITHIN, points, residual_chart, residual_curves, restitution_chart,
+    sample_velocities, velocity_axis,
 };
 use crate::format::fit_csv::parse_restitution_csv;
 use crate::model::fit::{Candidate, FitReport, RestitutionData, candidates};
@@ -56,11 +57,6 @@ pub struct State {
 
 /// Points along each fitted law's curve.
 const CURVE_POINTS: usize = 80;
-
-/// The residuals panel shows the laws within this Δ of the best, at most [`MAX_RESIDUALS`]: the
-/// others' misfit would set its scale (as `plot --chart fit` does).
-pub const RESIDUALS_WITHIN: f64 = 10.0;
-pub const MAX_RESIDUALS: usize = 5;
 
 /// Reads the data file `path` into the view; a refused file is kept with the reader's message.
 pub fn open(app: &mut App, path: &Path) {
@@ -108,18 +104,6 @@ pub fn chosen(app: &App) -> Vec<Candidate> {
         .collect()
 }
 
-/// The measured points as the charts take them.
-pub fn points(data: &RestitutionData) -> Vec<Point> {
-    data.points
-        .iter()
-        .map(|p| Point {
-            v: p.v,
-            e: p.e,
-            sd: p.sd,
-        })
-        .collect()
-}
-
 /// The velocities the curves are drawn at: over the widest axis the charts give the data.
 fn curve_velocities(data: &RestitutionData) -> Vec<f64> {
     let axis = velocity_axis(&points(data), FIGURE_TICKS.0);
@@ -135,13 +119,6 @@ pub fn finished(app: &App) -> Option<(&FitData, &FitReport)> {
     }
 }
 
-fn styled(candidate: Candidate, points: Vec<(f64, f64)>) -> Curve {
-    match candidate {
-        Candidate::ConstantE => Curve::constant_e(points),
-        Candidate::Law(m) => Curve::law(m, points),
-    }
-}
-
 /// The data with every fitted law's curve (the best focused), and the residuals of the laws
 /// within Δ ≤ [`RESIDUALS_WITHIN`] of it, each at most `budget` labels.
 pub fn fit_charts(
@@ -152,24 +129,12 @@ pub fn fit_charts(
 ) -> [Chart; 2] {
     let points = points(&fit.data);
     let mut curves = Vec::new();
-    let mut residuals = Vec::new();
-    for (i, (law, curve)) in report.fits.iter().zip(&fit.curves).enumerate() {
-        let mut drawn = styled(curve.candidate, curve.points.clone());
+    for (i, curve) in fit.curves.iter().enumerate() {
+        let mut drawn = Curve::of(curve.candidate, curve.points.clone());
         drawn.focused = i == 0;
         curves.push(drawn);
-        if i > 0 && (law.delta > RESIDUALS_WITHIN || residuals.len() >= MAX_RESIDUALS) {
-            continue;
-        }
-        let mut at: Vec<(f64, f64)> = points
-            .iter()
-            .zip(&law.residuals)
-            .map(|(p, r)| (p.v, *r))
-            .collect();
-        at.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut r = styled(law.candidate, at);
-        r.focused = i == 0;
-        residuals.push(r);
     }
+    let residuals = residual_curves(&points, &report.fits);
     let title = format!(
         "e(v₀) of {file} · {} laws by {}, best {}",
         report.fits.len(),
