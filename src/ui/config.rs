@@ -116,7 +116,10 @@ impl Config {
             let Some(table) = table else {
                 return Err(invalid(0, "`keys` must be a table: [keys]".into()));
             };
-            for (action, key) in table.iter() {
+            // The table iterates in key order: bind in the file's, so a clash names its later line.
+            let mut entries: Vec<_> = table.iter().collect();
+            entries.sort_by_key(|(action, _)| action.span().start);
+            for (action, key) in entries {
                 let at = action.span().start;
                 let name = action.get_ref();
                 let DeValue::String(key) = key.get_ref() else {
@@ -179,6 +182,11 @@ mod tests {
                 "[keys]\nbranch = \"x\"\nquit = \"x\"",
                 3,
                 "keys.quit: `x` is given to both branch and quit",
+            ),
+            (
+                "[keys]\nquit = \"x\"\nbranch = \"x\"",
+                3,
+                "keys.branch: `x` is given to both quit and branch",
             ),
             ("theme = dark", 1, ""),
         ];
