@@ -91,7 +91,8 @@ pub struct Orbit {
     pub iterations: usize,
 }
 
-fn serialize_complex<S: serde::Serializer>(
+/// Multipliers as `[re, im]` pairs (JSON has no complex numbers); branches share it.
+pub(crate) fn serialize_complex<S: serde::Serializer>(
     values: &[Complex<f64>],
     serializer: S,
 ) -> Result<S::Ok, S::Error> {

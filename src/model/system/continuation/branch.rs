@@ -90,7 +90,7 @@ pub struct BranchPoint {
     /// The orbit's impacts.
     pub points: Vec<ImpactPoint>,
     /// Floquet multipliers: the eigenvalues of the n-fold impact map's Jacobian.
-    #[serde(serialize_with = "serialize_complex")]
+    #[serde(serialize_with = "crate::model::system::orbit::serialize_complex")]
     pub multipliers: Vec<Complex<f64>>,
     /// det J (r^{2n}·e^{−2ζω₀·mT} for a rigid stop: docs/physics.md §8.5).
     pub jacobian_det: f64,
@@ -184,16 +184,4 @@ impl Branch {
     pub fn special(&self, kind: SpecialKind) -> impl Iterator<Item = &SpecialPoint> {
         self.specials.iter().filter(move |s| s.kind == kind)
     }
-}
-
-fn serialize_complex<S: serde::Serializer>(
-    values: &[Complex<f64>],
-    serializer: S,
-) -> Result<S::Ok, S::Error> {
-    use serde::ser::SerializeSeq;
-    let mut seq = serializer.serialize_seq(Some(values.len()))?;
-    for z in values {
-        seq.serialize_element(&[z.re, z.im])?;
-    }
-    seq.end()
 }
