@@ -110,6 +110,35 @@ pub(crate) fn journey(
     }
 }
 
+/// The interior minima over (a, b) of a function whose rate is `rate`: sampled against the
+/// fastest motion `fastest` (rad/s), a minimum where the rate turns from negative to
+/// non-negative, refined by bisection on the rate. The rigid and compliant flights share it.
+pub(super) fn minima(rate: impl Fn(f64) -> f64, (a, b): (f64, f64), fastest: f64) -> Vec<f64> {
+    let samples = (SAMPLES_PER_PERIOD * (b - a) * fastest / TAU)
+        .ceil()
+        .clamp(SAMPLES_PER_PERIOD, 1e5) as usize;
+    let mut found = Vec::new();
+    let mut prev = (a, rate(a));
+    for k in 1..samples {
+        let t = a + (b - a) * k as f64 / samples as f64;
+        let here = (t, rate(t));
+        if prev.1 < 0.0 && here.1 >= 0.0 {
+            let (mut lo, mut hi) = (prev.0, here.0);
+            for _ in 0..80 {
+                let mid = 0.5 * (lo + hi);
+                if rate(mid) < 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            found.push(0.5 * (lo + hi));
+        }
+        prev = here;
+    }
+    found
+}
+
 /// The fastest motion a flight has: the forcing's, or the oscillator's free one, rad/s.
 fn fastest(plant: &SystemPlant) -> f64 {
     match *plant {
@@ -118,16 +147,11 @@ fn fastest(plant: &SystemPlant) -> f64 {
     }
 }
 
-/// The interior minima of every stop's gap over the flight's (a, b), appended to `out`: sampled
-/// against the forcing and the free period, a minimum where g' turns from negative to positive,
-/// refined by bisection on g'.
+/// The interior minima of every stop's gap over the flight's (a, b), appended to `out`.
 fn gap_minima(plant: &SystemPlant, flight: &Flight, (a, b): (f64, f64), out: &mut Vec<Clearance>) {
     if b <= a {
         return;
     }
-    let samples = (SAMPLES_PER_PERIOD * (b - a) * fastest(plant) / TAU)
-        .ceil()
-        .clamp(SAMPLES_PER_PERIOD, 1e5) as usize;
     let mut found = Vec::new();
     for i in 0..plant.stop_count() {
         // g and g' of stop i at t.
@@ -136,28 +160,12 @@ fn gap_minima(plant: &SystemPlant, flight: &Flight, (a, b): (f64, f64), out: &mu
             let s = plant.stop(i, t);
             (s.gap(x), s.side * (v - s.sd))
         };
-        let mut prev = (a, gap(a).1);
-        for k in 1..samples {
-            let t = a + (b - a) * k as f64 / samples as f64;
-            let here = (t, gap(t).1);
-            if prev.1 < 0.0 && here.1 >= 0.0 {
-                let (mut lo, mut hi) = (prev.0, here.0);
-                for _ in 0..80 {
-                    let mid = 0.5 * (lo + hi);
-                    if gap(mid).1 < 0.0 {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                let t = 0.5 * (lo + hi);
-                found.push(Clearance {
-                    t,
-                    stop: i,
-                    value: gap(t).0,
-                });
-            }
-            prev = here;
+        for t in minima(|t| gap(t).1, (a, b), fastest(plant)) {
+            found.push(Clearance {
+                t,
+                stop: i,
+                value: gap(t).0,
+            });
         }
     }
     found.sort_by(|p, q| p.t.total_cmp(&q.t));

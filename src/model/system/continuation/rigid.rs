@@ -13,6 +13,7 @@ use crate::model::system::rigid::dynamics::{Dynamics, Law};
 use crate::model::system::{ImpactPoint, Param, SystemModel};
 
 use super::error::ContinuationError;
+use super::journey;
 use super::problem::{
     Mat, Monitors, OrbitProblem, model_at, mul, rescale, varies_restitution, wrap,
 };
@@ -113,37 +114,20 @@ fn step_jacobian(d: &Dynamics, leg: &Leg, from_stop: usize, to_stop: usize) -> M
     j
 }
 
-/// The smallest interior minimum of any stop's gap over (0, τ₁) of a flight, m. The flight is
-/// sampled finely against both its forcing and its free period; a minimum is where g' turns
-/// from negative to positive, refined by bisection on g'.
+/// The smallest interior minimum of any stop's gap over (0, τ₁) of a flight, m
+/// ([`journey::minima`]: sampled against both its forcing and its free period).
 fn interior_min_gap(d: &Dynamics, leg: &Leg) -> Option<f64> {
     let tau1 = leg.t1 - leg.t0;
     let fastest = match d.law {
         Law::Ball { .. } => d.omega,
         Law::Oscillator { omega_d, .. } => d.omega.max(omega_d),
     };
-    let samples = (64.0 * tau1 * fastest / TAU).ceil().clamp(64.0, 1e5) as usize;
     let mut best: Option<f64> = None;
     for stop in 0..d.stop_count {
         let gap = |tau: f64| leg.flight.gap(stop, &leg.flight.at(tau));
-        let mut prev = (0.0, gap(0.0));
-        for i in 1..=samples {
-            let tau = tau1 * i as f64 / samples as f64;
-            let here = (tau, gap(tau));
-            if prev.1.1 < 0.0 && here.1.1 >= 0.0 && i < samples {
-                let (mut lo, mut hi) = (prev.0, here.0);
-                for _ in 0..80 {
-                    let mid = 0.5 * (lo + hi);
-                    if gap(mid).1 < 0.0 {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                let g = gap(0.5 * (lo + hi)).0;
-                best = Some(best.map_or(g, |b: f64| b.min(g)));
-            }
-            prev = here;
+        for tau in journey::minima(|tau| gap(tau).1, (0.0, tau1), fastest) {
+            let g = gap(tau).0;
+            best = Some(best.map_or(g, |b: f64| b.min(g)));
         }
     }
     best
