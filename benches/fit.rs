@@ -16,15 +16,12 @@ use hertz_tui::model::fit::{
 };
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
 
+mod machine;
+use machine::load_average;
+
 const POINTS: usize = 200;
 const NOISE: f64 = 0.005;
 const KK_A: f64 = 2e-6;
-
-fn load_average() -> String {
-    std::fs::read_to_string("/proc/loadavg")
-        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
-        .unwrap_or_else(|_| "unknown".into())
-}
 
 /// SplitMix64 and Box–Muller: seeded Gaussian noise without a dependency.
 struct Rng(u64);

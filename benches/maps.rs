@@ -16,25 +16,8 @@ use hertz_tui::model::scene_key::SceneKey;
 use hertz_tui::model::system::map::{Axis, Grid, MapOptions, Shard, map};
 use hertz_tui::model::system::{CompliantDamping, Contact, Param, SystemKey, SystemModel};
 
-fn load_average() -> String {
-    std::fs::read_to_string("/proc/loadavg")
-        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
-        .unwrap_or_else(|_| "unknown".into())
-}
-
-/// CPU time of this process (user + system, all threads), s, from /proc/self/stat.
-fn cpu_seconds() -> f64 {
-    std::fs::read_to_string("/proc/self/stat")
-        .ok()
-        .and_then(|s| {
-            let rest = s.rsplit_once(')')?.1;
-            let fields: Vec<&str> = rest.split_whitespace().collect();
-            let utime: f64 = fields.get(11)?.parse().ok()?;
-            let stime: f64 = fields.get(12)?.parse().ok()?;
-            Some((utime + stime) / 100.0)
-        })
-        .unwrap_or(f64::NAN)
-}
+mod machine;
+use machine::{cpu_seconds, load_average};
 
 fn model() -> SystemModel {
     let registry = Registry::load().expect("built-in presets load");

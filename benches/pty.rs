@@ -35,6 +35,9 @@ use rustix::fs::{Mode, OFlags};
 use rustix::pty::{OpenptFlags, grantpt, openpt, ptsname, unlockpt};
 use rustix::termios::{Winsize, tcsetwinsize};
 
+mod machine;
+use machine::load_average;
+
 /// The terminal sizes measured, the larger first (the budget is stated for it).
 const SIZES: [(u16, u16); 2] = [(160, 48), (80, 24)];
 /// Output quiet this long after a frame's end means the key has been fully answered.
@@ -231,12 +234,6 @@ fn print_row(width: u16, height: u16, label: &str, answers: &[Answer]) {
 fn percentile(sorted: &[f64], q: f64) -> f64 {
     let rank = ((q * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len());
     sorted[rank - 1]
-}
-
-fn load_average() -> String {
-    std::fs::read_to_string("/proc/loadavg")
-        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
-        .unwrap_or_else(|_| "unknown".into())
 }
 
 /// What the terminal saw after a write.

@@ -26,14 +26,11 @@ use hertz_tui::model::system::{
     SystemModel, SystemSpec, bifurcation,
 };
 
+mod machine;
+use machine::{cpu_seconds, load_average};
+
 const E: f64 = 0.5;
 const CONTACT_RATIO: f64 = 0.01;
-
-fn load_average() -> String {
-    std::fs::read_to_string("/proc/loadavg")
-        .map(|s| s.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
-        .unwrap_or_else(|_| "unknown".into())
-}
 
 /// The preset's ball and table at Γ = 2, its frequency set for t_c/T = 1 % at gT/(1+e).
 fn model() -> SystemModel {
@@ -68,22 +65,6 @@ fn model() -> SystemModel {
         },
     )
     .expect("bench model")
-}
-
-/// CPU time of this process (user + system, all threads), s, from /proc/self/stat (clock ticks of
-/// 1/100 s): on a machine shared with other work, wall time stretches and CPU time does not.
-fn cpu_seconds() -> f64 {
-    std::fs::read_to_string("/proc/self/stat")
-        .ok()
-        .and_then(|s| {
-            // Fields after the command's closing parenthesis; utime and stime are the 14th and 15th.
-            let rest = s.rsplit_once(')')?.1;
-            let fields: Vec<&str> = rest.split_whitespace().collect();
-            let utime: f64 = fields.get(11)?.parse().ok()?;
-            let stime: f64 = fields.get(12)?.parse().ok()?;
-            Some((utime + stime) / 100.0)
-        })
-        .unwrap_or(f64::NAN)
 }
 
 fn diagram(model: &SystemModel, contact: &Contact, values: &[f64]) -> (f64, f64, usize) {
