@@ -199,13 +199,13 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
         s.contains("F(x) force–approach")
             && results_row(s, "proposed").contains(&x_before)
             && !s.contains("computing…")
+            && s.contains("v₀     0.3 m/s")
     });
     assert!(
         !before.contains("before-42"),
         "the explorer uses the alternate screen"
     );
     assert!(!curves(&before).is_empty(), "braille curves are drawn");
-    assert!(before.contains("v₀     0.3 m/s"), "{before}");
 
     // A paste on a model never runs its characters as keys ("2" would open tab 2, " " uncheck).
     tmux.keys(&["End"]);
@@ -228,6 +228,8 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
         s.contains("v₀     0.05 m/s")
             && results_row(s, "proposed").contains(&x_after)
             && !s.contains("computing…")
+            && s.contains('*')
+            && (s.contains("elastic") || s.contains("yield begins"))
     });
     assert_ne!(
         results_row(&before, "proposed"),
@@ -235,8 +237,6 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
         "the results changed"
     );
     assert_ne!(curves(&before), curves(&after), "the charts changed");
-    assert!(after.contains('*'), "the unsaved mark shows after an edit");
-    assert!(after.contains("elastic") || after.contains("yield begins"));
 
     // Tab 3: every fixed-step method at the RK4 critical step, judged, its bounds measured, all
     // off the UI thread.
@@ -248,11 +248,8 @@ fn edit_v0_in_the_real_binary_and_quit_cleanly() {
             && (s.contains("stable") || s.contains("diverged at t =") || s.contains("drift"))
             && !s.contains("computing…")
             && !s.contains("measuring…")
+            && s.contains("auto: the rk4 critical step")
     });
-    assert!(
-        stability.contains("auto: the rk4 critical step"),
-        "{stability}"
-    );
     assert!(
         !stability.contains("Hertz estimate"),
         "the explorer's results are gone: {stability}"
@@ -390,9 +387,11 @@ fn the_branch_key_moves_in_the_config_file_and_a_clash_names_the_key() {
         s.contains("continuing the orbit over the diagram's range (x hides it)")
     });
     tmux.keys(&["?"]);
-    let help = tmux.wait_for("the help", |s| s.contains("Help · keys"));
-    assert!(help.contains("f m t o x"), "{help}");
-    assert!(help.contains("x branch"), "{help}");
+    // The whole help in the predicate: a capture can catch a frame half written (CI did), so
+    // a check made after the wait could read the chart beneath the popup.
+    tmux.wait_for("the help naming x for the branch", |s| {
+        s.contains("Help · keys") && s.contains("f m t o x") && s.contains("x branch")
+    });
     tmux.keys(&["Escape"]);
     // (A key right after Esc would read as Alt with it.)
     tmux.wait_for("the help closed", |s| !s.contains("Help · keys"));
