@@ -175,6 +175,10 @@ fn glyphs(chart: &Chart, plot: Rect, theme: Theme, marker: MarkerStyle) -> Vec<G
     let cell = |p: (f64, f64)| cell_of(chart, plot, marker, p);
     let mut out = Vec::new();
     for series in &chart.series {
+        if spacing.is_none() && !series.steps {
+            // No glyph along this curve: its points need not be walked.
+            continue;
+        }
         let glyph = |at: (u16, u16)| (at, series.glyph, series.ink, series.focused);
         for run in &series.runs {
             let mut last: Option<(f64, f64)> = None;
@@ -248,10 +252,16 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
         .series
         .iter()
         .map(|series| {
-            let mut drawn = Vec::new();
+            // About a dot a point or more: room for twice as many grows the list at most once.
+            let points: usize = series.runs.iter().map(Vec::len).sum();
+            let mut drawn = Vec::with_capacity(2 * points);
             for run in &series.runs {
-                let points: Vec<(f64, f64)> = run.iter().map(|&p| to_grid(p)).collect();
-                trace(&points, series.ink.dash(), grid, &mut drawn);
+                trace(
+                    run.iter().map(|&p| to_grid(p)),
+                    series.ink.dash(),
+                    grid,
+                    &mut drawn,
+                );
             }
             Stroke {
                 color: inks.color(series.ink, series.focused),

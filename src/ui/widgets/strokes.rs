@@ -33,13 +33,18 @@ pub fn key_of(name: &str) -> u64 {
 ///
 /// It runs once per sample of every curve of every chart in every frame (thousands a frame with
 /// every law checked), so it does no division and no call into libm per dot.
-pub fn trace(points: &[(f64, f64)], dash: Dash, size: (u16, u16), out: &mut Vec<(u16, u16)>) {
+pub fn trace(
+    points: impl IntoIterator<Item = (f64, f64)>,
+    dash: Dash,
+    size: (u16, u16),
+    out: &mut Vec<(u16, u16)>,
+) {
     let mut pen = Pen::new(dash, size);
-    let finite = |p: &&(f64, f64)| p.0.is_finite() && p.1.is_finite();
+    let finite = |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite();
     let mut points = points
-        .iter()
+        .into_iter()
         .filter(finite)
-        .map(|&(x, y)| (nearest(x), nearest(y)));
+        .map(|(x, y)| (nearest(x), nearest(y)));
     let Some(first) = points.next() else {
         return;
     };
@@ -158,8 +163,15 @@ pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
     let mut owner: Vec<Option<(u64, usize)>> =
         vec![None; usize::from(cells.0) * usize::from(cells.1)];
     for (s, stroke) in strokes.iter().enumerate() {
+        // A stroke's consecutive dots mostly lie in one cell, whose score is the same for each:
+        // it is scored once for the run of them.
+        let mut last = usize::MAX;
         for dot in &stroke.dots {
             let i = index(dot);
+            if i == last {
+                continue;
+            }
+            last = i;
             let Some(slot) = owner.get_mut(i) else {
                 continue;
             };
@@ -172,12 +184,15 @@ pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
         }
     }
     for (s, stroke) in strokes.iter_mut().enumerate() {
+        // The cell of the last dot and whether the stroke owns it.
+        let mut last = (usize::MAX, false);
         stroke.dots.retain(|dot| {
-            owner
-                .get(index(dot))
-                .copied()
-                .flatten()
-                .is_some_and(|(_, o)| o == s)
+            let i = index(dot);
+            if i != last.0 {
+                let owned = owner.get(i).copied().flatten().is_some_and(|(_, o)| o == s);
+                last = (i, owned);
+            }
+            last.1
         });
     }
 }
@@ -208,7 +223,7 @@ mod tests {
 
     fn line(dash: Dash) -> Vec<(u16, u16)> {
         let mut out = Vec::new();
-        trace(&[(0.0, 0.0), (11.0, 0.0)], dash, (40, 8), &mut out);
+        trace([(0.0, 0.0), (11.0, 0.0)], dash, (40, 8), &mut out);
         out
     }
 
@@ -221,7 +236,7 @@ mod tests {
         // Steep lines take a dot per row, and the pattern goes on over a corner.
         let mut out = Vec::new();
         trace(
-            &[(0.0, 0.0), (1.0, 5.0), (6.0, 5.0)],
+            [(0.0, 0.0), (1.0, 5.0), (6.0, 5.0)],
             Dash::Dotted,
             (40, 8),
             &mut out,
@@ -229,7 +244,7 @@ mod tests {
         assert_eq!(out, [(0, 0), (0, 2), (1, 4), (2, 5), (4, 5), (6, 5)]);
         let mut out = Vec::new();
         trace(
-            &[(-3.0, 1.0), (2.0, 1.0), (f64::NAN, 0.0)],
+            [(-3.0, 1.0), (2.0, 1.0), (f64::NAN, 0.0)],
             Dash::Solid,
             (40, 8),
             &mut out,

@@ -257,8 +257,12 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         Layout::vertical([Constraint::Length(table_height), Constraint::Fill(1)]).areas(inner);
     let header = std::iter::once("model").chain(header_texts[..shown].iter().map(|h| h.as_ref()));
     let header_style = theme.style(Role::Label).add_modifier(Modifier::BOLD);
+    // Only the rows under the header that fit the pane are drawn (the table is not scrolled):
+    // with every law checked, the other three quarters of the rows were formatted for nothing.
+    let fitting = usize::from(table_area.height.saturating_sub(1));
     let rows = checked
         .iter()
+        .take(fitting)
         .map(|&model| Row::new(model_row(app, model, &columns, &widths, model_width, theme)));
     let constraints = std::iter::once(model_width)
         .chain(widths.iter().copied())
