@@ -202,12 +202,6 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
         }
     };
     let header_texts: Vec<Cow<str>> = COLUMNS.iter().map(header_text).collect();
-    // The damping column grows with spare room until its units show.
-    let damping_needed = checked
-        .iter()
-        .map(|&m| damping_width(app.solutions.damping(m)))
-        .max()
-        .unwrap_or(0);
     let width_of = |c: &Column, header: &str| c.width.max(header.chars().count() as u16);
     // As many columns as fit, in order of importance.
     let mut used = model_width;
@@ -230,6 +224,16 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     if columns.len() < COLUMNS.len() {
         spare = 0;
     }
+    // The damping column grows with spare room until its units show (its cells are formatted
+    // for their width only where there is room to grow).
+    let damping_needed = match spare {
+        0 => 0,
+        _ => checked
+            .iter()
+            .map(|&m| damping_width(app.solutions.damping(m)))
+            .max()
+            .unwrap_or(0),
+    };
     'grow: while spare > 0 {
         let mut grew = false;
         for (c, w) in columns.iter().zip(widths.iter_mut()) {
