@@ -275,6 +275,7 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
             }
         }
     }
+    let mut labels = Vec::new();
     for mark in &chart.marks {
         let Some((x, y)) = p.at(chart, mark.at) else {
             continue;
@@ -286,7 +287,7 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         if let Some(label) = &mark.label {
             area.draw(&Text::new(
                 label.clone(),
-                (x + 9, y),
+                free_line(&mut labels, (x + 9, y), label),
                 text_style(13, color(mark.ink), HPos::Left, VPos::Center),
             ))?;
         }
@@ -304,6 +305,21 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
 
 /// A line through `points` in the pattern `dash`, as the terminal draws it: dashes of 10 px 6 px
 /// apart, dots of 2 px 4 px apart.
+/// Where a mark's label at `at` (left, vertical centre) is read, stacked a line below the labels
+/// already `placed` that it would overprint (a rigid and a compliant point a hair apart, e.g. their
+/// grazing); records its box. About 7 px a character and 16 px a line at size 13.
+fn free_line(placed: &mut Vec<[i32; 4]>, (x, mut y): (i32, i32), label: &str) -> (i32, i32) {
+    const LINE: i32 = 16;
+    let right = x + 7 * label.chars().count() as i32;
+    let overlaps =
+        |y: i32, b: &[i32; 4]| x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2;
+    while placed.iter().any(|b| overlaps(y, b)) {
+        y += LINE;
+    }
+    placed.push([x, y - LINE / 2, right, y + LINE / 2]);
+    (x, y)
+}
+
 fn stroke<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     points: Vec<(i32, i32)>,
@@ -389,7 +405,7 @@ fn legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart, p: &
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::{Axis, Rule, Series, Tick};
+    use crate::chart::{Axis, Mark, Rule, Series, Tick};
 
     fn chart() -> Chart {
         let axis = |title: &str, hi: f64| Axis {
@@ -437,6 +453,37 @@ mod tests {
             notes: Vec::new(),
             readout: None,
         }
+    }
+
+    /// Two marks a hair apart (a rigid and a compliant grazing point): both labels readable, the
+    /// second a line below the first; a third elsewhere stays at its point.
+    #[test]
+    fn labels_that_would_overprint_are_stacked() {
+        let mut c = chart();
+        let mark = |at, label: &str| Mark {
+            at,
+            ink: Ink::Warning,
+            glyph: 'G',
+            label: Some(label.into()),
+        };
+        c.marks = vec![
+            mark((2.0, 100.0), "grazing 0.0135653"),
+            mark((2.0001, 100.0), "grazing 0.0135652"),
+            mark((6.0, 300.0), "PD 0.0368"),
+        ];
+        let svg = svg(&[c], (640, 480)).unwrap();
+        let y_of = |label: &str| {
+            svg.split("<text")
+                .find(|t| t.contains(&format!(">{label}<")) || t.contains(&format!(">\n{label}")))
+                .and_then(|t| attr(t, "y"))
+                .unwrap_or_else(|| panic!("{label} in {svg}"))
+        };
+        let (a, b) = (y_of("grazing 0.0135653"), y_of("grazing 0.0135652"));
+        assert!(b - a >= 15.0, "{a} {b}");
+        let mut placed = Vec::new();
+        assert_eq!(free_line(&mut placed, (10, 50), "PD"), (10, 50));
+        assert_eq!(free_line(&mut placed, (12, 52), "PD"), (12, 68));
+        assert_eq!(free_line(&mut placed, (200, 50), "PD"), (200, 50));
     }
 
     /// Numbers of the attribute `name` in an SVG element's text.
