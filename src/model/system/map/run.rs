@@ -271,7 +271,7 @@ fn read(
         slowest_impact,
     };
     let tol = &options.tolerances;
-    let decided = motion::from_history(&history, model.spec.period(), tol);
+    let decided = motion::from_history(&history, model.spec.period(), run.max_periods, tol);
     let exponent_needed = matches!(decided, None | Some(Motion::Periodic { .. }));
     if !exponent_needed || options.lyapunov_impacts == 0 {
         return Ok((reading(decided.unwrap_or(Motion::Unresolved), None), end));
