@@ -1,9 +1,8 @@
 //! The map view (docs/maps.md §6) rendered into ratatui's TestBackend and read as a measurement:
 //! a cell read through the axis ticks and the cursor is the cell `hertz-tui map` computes for the
 //! same scene and grid, the legend counts are the command's (an unsettled cell's included), the
-//! bouncing ball's period-1 region
-//! lies between Γ_SN and Γ_PD (docs/physics.md §8.1), Esc cancels a map being computed, and a
-//! scene without `[system]` says how to add one.
+//! bouncing ball's period-1 region lies between Γ_SN and Γ_PD (docs/physics.md §8.1), Esc cancels
+//! a map being computed, and a scene without `[system]` says how to add one.
 
 use std::process::Command;
 use std::sync::mpsc;
