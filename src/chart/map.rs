@@ -43,9 +43,15 @@ pub fn look(motion: &str, impacts: Option<u32>) -> Look {
         ("chattering", _) => l('c', Hue::Magenta, "chattering"),
         ("sticking", _) => l('s', Hue::Foreground, "sticking"),
         ("no-impact", _) => l('.', Hue::Foreground, "no impact"),
+        ("unsettled", _) => l('u', Hue::Yellow, "unsettled (transient never ended)"),
         ("same", _) => l('=', Hue::Green, "same motion"),
         ("differs", _) => l('X', Hue::Red, "different motion"),
         ("failed", _) => l('!', Hue::Red, "run failed"),
+        ("unknown", _) => l(
+            '?',
+            Hue::Foreground,
+            "unknown (a run failed or is unsettled)",
+        ),
         _ => l('?', Hue::Foreground, "unresolved"),
     }
 }

@@ -50,6 +50,7 @@ mod systems_diagram;
 mod systems_hard;
 mod systems_map;
 mod systems_map_chatter;
+mod systems_map_unsettled;
 mod systems_oscillator;
 mod systems_scene;
 mod systems_seed;
