@@ -311,8 +311,9 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
 fn free_line(placed: &mut Vec<[i32; 4]>, (x, mut y): (i32, i32), label: &str) -> (i32, i32) {
     const LINE: i32 = 16;
     let right = x + 7 * label.chars().count() as i32;
-    let overlaps =
-        |y: i32, b: &[i32; 4]| x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2;
+    let overlaps = |y: i32, b: &[i32; 4]| {
+        x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2
+    };
     while placed.iter().any(|b| overlaps(y, b)) {
         y += LINE;
     }
