@@ -427,38 +427,37 @@ mod tests {
                 .collect(),
         };
         Chart {
-            title: "F(x)".into(),
-            x: axis("x [µm]", 8.0),
-            y: axis("F [N]", 400.0),
-            series: vec![
-                Series {
-                    name: "proposed".into(),
-                    ink: Ink::Model(crate::model::ForceModel::Proposed),
-                    glyph: '*',
-                    runs: vec![vec![(0.0, 0.0), (7.0, 320.0), (2.0, 0.0)]],
-                    focused: true,
-                    peak: Some((7.0, 320.0)),
-                    steps: false,
-                },
-                Series {
-                    name: "hunt-crossley".into(),
-                    ink: Ink::Model(crate::model::ForceModel::HuntCrossley),
-                    glyph: 'x',
-                    runs: vec![vec![(0.0, 0.0), (8.0, 360.0), (0.0, 0.0)]],
-                    focused: false,
-                    peak: Some((8.0, 360.0)),
-                    steps: false,
-                },
-            ],
-            marks: Vec::new(),
             rules: vec![Rule {
                 at: 4.0,
                 horizontal: false,
                 ink: Ink::Warning,
                 label: "v_y".into(),
             }],
-            notes: Vec::new(),
-            readout: None,
+            ..Chart::new(
+                "F(x)".into(),
+                axis("x [µm]", 8.0),
+                axis("F [N]", 400.0),
+                vec![
+                    Series {
+                        name: "proposed".into(),
+                        ink: Ink::Model(crate::model::ForceModel::Proposed),
+                        glyph: '*',
+                        runs: vec![vec![(0.0, 0.0), (7.0, 320.0), (2.0, 0.0)]],
+                        focused: true,
+                        peak: Some((7.0, 320.0)),
+                        steps: false,
+                    },
+                    Series {
+                        name: "hunt-crossley".into(),
+                        ink: Ink::Model(crate::model::ForceModel::HuntCrossley),
+                        glyph: 'x',
+                        runs: vec![vec![(0.0, 0.0), (8.0, 360.0), (0.0, 0.0)]],
+                        focused: false,
+                        peak: Some((8.0, 360.0)),
+                        steps: false,
+                    },
+                ],
+            )
         }
     }
 

@@ -103,14 +103,5 @@ pub fn motion_map(
     };
     let x_title = title_of(x_key, x.prefix.symbol, x_unit);
     let y_title = title_of(y_key, y.prefix.symbol, y_unit);
-    Chart {
-        title,
-        x: x.chart_axis(x_title),
-        y: y.chart_axis(y_title),
-        series,
-        marks: Vec::new(),
-        rules: Vec::new(),
-        notes: Vec::new(),
-        readout: None,
-    }
+    Chart::new(title, x.chart_axis(x_title), y.chart_axis(y_title), series)
 }
