@@ -2,10 +2,12 @@
 //! variables x/x_e, ẋ/v₀, t·v₀/x_e, its impact depends on n, e and its contact rule alone is
 //! solved once and scaled to every other v₀, m and k (docs/physics.md §6.9).
 
-use crate::model::force::{ForceModel, ImpactParams};
+use crate::model::force::{AnyLaw, ForceLaw, ForceModel, ImpactParams};
 
 use super::scale::Scales;
-use super::{ImpactError, ImpactSummary, SolveOptions, TensileCutoff, solve_impact};
+use super::{
+    ImpactError, ImpactSolution, ImpactSummary, SolveOptions, TensileCutoff, solve_impact,
+};
 
 /// One impact of a similar law, ready to be scaled to other parameters with the same n and e.
 #[derive(Debug, Clone)]
@@ -38,10 +40,9 @@ impl SimilarImpact {
         )
     }
 
-    /// The impact under `params` by scaling, when they share n and e with the solved one
-    /// (`None` otherwise: solve it). x scales by x_e, ẋ by v₀, t by x_e/v₀, F by k·x_eⁿ (eqs 5–7)
-    /// and energy by m·v₀²; the step counts are the solved impact's, which a solve under `params`
-    /// repeats up to rounding.
+    /// The impact under `params` by scaling ([`moved`]), when they share n and e with the solved
+    /// one (`None` otherwise: solve it); a solve under `params` takes the same steps and gives
+    /// the same numbers, to rounding.
     pub fn at(&self, params: &ImpactParams) -> Option<Result<ImpactSummary, ImpactError>> {
         if params.law.n.to_bits() != self.n.to_bits()
             || params.restitution.to_bits() != self.restitution.to_bits()
@@ -51,35 +52,64 @@ impl SimilarImpact {
         if let Err(e) = params.validate() {
             return Some(Err(e.into()));
         }
-        let (from, to) = (&self.scales, Scales::new(params));
-        let x = to.x / from.x;
-        let v = to.v / from.v;
-        let t = to.t / from.t;
-        let f = to.f / from.f;
-        let energy = (to.mass * to.v * to.v) / (from.mass * from.v * from.v);
-        let s = &self.summary;
-        Some(Ok(ImpactSummary {
-            x_max: s.x_max * x,
-            t_x_max: s.t_x_max * t,
-            f_max: s.f_max * f,
-            t_f_max: s.t_f_max * t,
-            t_contact: s.t_contact * t,
-            v_out: s.v_out * v,
-            x_residual: s.x_residual * x,
-            energy_dissipated: s.energy_dissipated * energy,
-            tensile_cutoff: s.tensile_cutoff.map(|c| TensileCutoff {
-                t: c.t * t,
-                x: c.x * x,
-                v: c.v * v,
-            }),
-            ..s.clone()
-        }))
+        Some(Ok(moved(&self.summary, &self.scales, &Scales::new(params))))
+    }
+}
+
+impl ImpactSolution {
+    /// This solution moved to `law`: the same row of a similar law under parameters with the same
+    /// n and e (docs/physics.md §6.9), as solving `law` with the same options would give it, to
+    /// rounding. `None` when the row is not similar, n or e differ, or `law` is another row. The
+    /// caller vouches that both laws take their damping from e by the row's rule and that the
+    /// options fix no step in seconds.
+    pub fn similar_at(&self, law: &AnyLaw) -> Option<ImpactSolution> {
+        let own = self.trajectory.law();
+        let (p, q) = (own.params(), law.params());
+        let same = law.model() == own.model()
+            && law.model().spec().similar
+            && p.law.n.to_bits() == q.law.n.to_bits()
+            && p.restitution.to_bits() == q.restitution.to_bits();
+        if !same {
+            return None;
+        }
+        let (from, to) = (Scales::of_law(own), Scales::of_law(law));
+        Some(ImpactSolution {
+            summary: moved(&self.summary, &from, &to),
+            trajectory: self.trajectory.rescaled(*law, to),
+        })
+    }
+}
+
+/// `s`, an impact under scales `from`, moved to scales `to`: x scales by x_e, ẋ by v₀, t by
+/// x_e/v₀, F by k·x_eⁿ (eqs 5–7) and energy by m·v₀²; the step counts stay.
+fn moved(s: &ImpactSummary, from: &Scales, to: &Scales) -> ImpactSummary {
+    let x = to.x / from.x;
+    let v = to.v / from.v;
+    let t = to.t / from.t;
+    let f = to.f / from.f;
+    let energy = (to.mass * to.v * to.v) / (from.mass * from.v * from.v);
+    ImpactSummary {
+        x_max: s.x_max * x,
+        t_x_max: s.t_x_max * t,
+        f_max: s.f_max * f,
+        t_f_max: s.t_f_max * t,
+        t_contact: s.t_contact * t,
+        v_out: s.v_out * v,
+        x_residual: s.x_residual * x,
+        energy_dissipated: s.energy_dissipated * energy,
+        tensile_cutoff: s.tensile_cutoff.map(|c| TensileCutoff {
+            t: c.t * t,
+            x: c.x * x,
+            v: c.v * v,
+        }),
+        ..s.clone()
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::impact::Sample;
     use crate::model::scene::tests::fig5_scene;
 
     /// The Fig. 5 scene's parameters, or those of a steel cylinder on its plate, with v₀, m and
@@ -162,6 +192,71 @@ mod tests {
                     spec.id
                 );
             }
+        }
+    }
+
+    /// A solution moved to another v₀, m and k has the numbers and the curves of a solve there:
+    /// its chart curves and its 1e-9 curves sample by sample within 1e-7 of each quantity's scale
+    /// (a wrong scale is off by its ratio, here 1/6 to 3), whether its curves were integrated
+    /// before the move or after; another n, e or row is refused.
+    #[test]
+    fn a_solution_moves_with_its_curves() {
+        let opts = SolveOptions::default();
+        let base = varied(false, 1.0, 1.0, 1.0);
+        for model in ForceModel::ALL.into_iter().filter(|m| m.spec().similar) {
+            for integrated_before in [false, true] {
+                let solved = solve_impact(model, &base, &opts).unwrap();
+                if integrated_before {
+                    solved.trajectory.drawn_samples(50);
+                    solved.trajectory.samples(50);
+                }
+                for p in [
+                    varied(false, 1.0 / 6.0, 1.0, 1.0),
+                    varied(false, 3.0, 2.0, 0.5),
+                ] {
+                    let law = model.law(&p).unwrap();
+                    let moved = solved.similar_at(&law).unwrap();
+                    let direct = solve_impact(model, &p, &opts).unwrap();
+                    assert!(
+                        worst(&moved.summary, &direct.summary).0 < 1e-12,
+                        "{model:?}"
+                    );
+                    let s = &direct.summary;
+                    let scale =
+                        |q: &Sample| [q.t / s.t_contact, q.x / s.x_max, q.v / p.v0, q.f / s.f_max];
+                    let apart = |a: &Sample, b: &Sample| {
+                        (scale(a).iter().zip(scale(b)))
+                            .map(|(u, w)| (u - w).abs())
+                            .fold(0.0, f64::max)
+                    };
+                    // Sample by sample, both the chart curves and the 1e-9 ones: 1e-7, as a flat
+                    // force peak's time moves by about √ε with rounding (along the curve).
+                    let drawn = |sol: &ImpactSolution| sol.trajectory.drawn_samples(200);
+                    let fine = |sol: &ImpactSolution| sol.trajectory.samples(200);
+                    for pick in [drawn, fine] {
+                        let (ours, theirs) = (pick(&moved), pick(&direct));
+                        assert_eq!(ours.len(), theirs.len());
+                        for (a, b) in ours.iter().zip(&theirs) {
+                            assert!(
+                                apart(a, b) < 1e-7,
+                                "{model:?} {integrated_before}: {a:?} vs {b:?}"
+                            );
+                        }
+                    }
+                }
+            }
+            let law = |e: f64, model: ForceModel| {
+                let mut p = base;
+                p.restitution = e;
+                model.law(&p).unwrap()
+            };
+            let solved = solve_impact(model, &base, &opts).unwrap();
+            assert!(solved.similar_at(&law(0.3, model)).is_none());
+            assert!(
+                solved
+                    .similar_at(&law(base.restitution, ForceModel::Proposed))
+                    .is_none()
+            );
         }
     }
 
