@@ -311,8 +311,9 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
 fn free_line(placed: &mut Vec<[i32; 4]>, (x, mut y): (i32, i32), label: &str) -> (i32, i32) {
     const LINE: i32 = 16;
     let right = x + 7 * label.chars().count() as i32;
-    let overlaps =
-        |y: i32, b: &[i32; 4]| x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2;
+    let overlaps = |y: i32, b: &[i32; 4]| {
+        x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2
+    };
     while placed.iter().any(|b| overlaps(y, b)) {
         y += LINE;
     }
@@ -563,12 +564,13 @@ mod tests {
 
     #[test]
     fn a_png_is_written_with_text() {
-        let dir = std::env::temp_dir().join(format!("hertz-figure-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("f.png");
+        let dir = tempfile::Builder::new()
+            .prefix("hertz-tui-figure-")
+            .tempdir()
+            .unwrap();
+        let path = dir.path().join("f.png");
         write(&[chart(), chart()], &path, (800, 400)).unwrap();
         let bytes = std::fs::read(&path).unwrap();
         assert_eq!(&bytes[1..4], b"PNG");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
