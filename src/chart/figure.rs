@@ -287,7 +287,8 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         if let Some(label) = &mark.label {
             area.draw(&Text::new(
                 label.clone(),
-                free_line(&mut labels, (x + 9, y), label),
+                // Stacked towards the plot's middle, away from the axes' labels.
+                free_line(&mut labels, (x + 9, y), label, y > (p.y0 + p.y1) / 2),
                 text_style(13, color(mark.ink), HPos::Left, VPos::Center),
             ))?;
         }
@@ -305,17 +306,22 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
 
 /// A line through `points` in the pattern `dash`, as the terminal draws it: dashes of 10 px 6 px
 /// apart, dots of 2 px 4 px apart.
-/// Where a mark's label at `at` (left, vertical centre) is read, stacked a line below the labels
-/// already `placed` that it would overprint (a rigid and a compliant point a hair apart, e.g. their
-/// grazing); records its box. About 7 px a character and 16 px a line at size 13.
-fn free_line(placed: &mut Vec<[i32; 4]>, (x, mut y): (i32, i32), label: &str) -> (i32, i32) {
+/// Where a mark's label at `at` (left, vertical centre) is read, stacked a line above (`up`) or
+/// below the labels already `placed` that it would overprint (a rigid and a compliant point a hair
+/// apart, e.g. their grazing); records its box. About 7 px a character and 16 px a line at size 13.
+fn free_line(
+    placed: &mut Vec<[i32; 4]>,
+    (x, mut y): (i32, i32),
+    label: &str,
+    up: bool,
+) -> (i32, i32) {
     const LINE: i32 = 16;
     let right = x + 7 * label.chars().count() as i32;
     let overlaps = |y: i32, b: &[i32; 4]| {
         x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2
     };
     while placed.iter().any(|b| overlaps(y, b)) {
-        y += LINE;
+        y += if up { -LINE } else { LINE };
     }
     placed.push([x, y - LINE / 2, right, y + LINE / 2]);
     (x, y)
@@ -457,7 +463,8 @@ mod tests {
     }
 
     /// Two marks a hair apart (a rigid and a compliant grazing point): both labels readable, the
-    /// second a line below the first; a third elsewhere stays at its point.
+    /// second a line from the first towards the plot's middle; a third elsewhere stays at its
+    /// point.
     #[test]
     fn labels_that_would_overprint_are_stacked() {
         let mut c = chart();
@@ -480,11 +487,13 @@ mod tests {
                 .unwrap_or_else(|| panic!("{label} in {svg}"))
         };
         let (a, b) = (y_of("grazing 0.0135653"), y_of("grazing 0.0135652"));
-        assert!(b - a >= 15.0, "{a} {b}");
+        // In the plot's lower half: the second above the first, towards the middle.
+        assert!(a - b >= 15.0, "{a} {b}");
         let mut placed = Vec::new();
-        assert_eq!(free_line(&mut placed, (10, 50), "PD"), (10, 50));
-        assert_eq!(free_line(&mut placed, (12, 52), "PD"), (12, 68));
-        assert_eq!(free_line(&mut placed, (200, 50), "PD"), (200, 50));
+        assert_eq!(free_line(&mut placed, (10, 50), "PD", false), (10, 50));
+        assert_eq!(free_line(&mut placed, (12, 52), "PD", false), (12, 68));
+        assert_eq!(free_line(&mut placed, (12, 52), "PD", true), (12, 20));
+        assert_eq!(free_line(&mut placed, (200, 50), "PD", false), (200, 50));
     }
 
     /// Numbers of the attribute `name` in an SVG element's text.

@@ -75,16 +75,21 @@ fn an_elastic_ball_climbing_ever_higher_is_unsettled() {
     }
 }
 
-#[test]
-fn the_last_impact_is_the_runs_last_for_both_stops() {
-    // A run that records all its impacts ends on its last one: rigid and compliant alike.
+/// The `bouncing-ball` preset's system.
+fn preset_ball() -> SystemModel {
     let registry = Registry::builtin().unwrap();
     let scene = registry.scene("bouncing-ball").unwrap();
     let spec = registry
         .scene_system("bouncing-ball", &[])
         .unwrap()
         .unwrap();
-    let model = SystemModel::from_scene(&scene, &spec).unwrap();
+    SystemModel::from_scene(&scene, &spec).unwrap()
+}
+
+#[test]
+fn the_last_impact_is_the_runs_last_for_both_stops() {
+    // A run that records all its impacts ends on its last one: rigid and compliant alike.
+    let model = preset_ball();
     let options = RunOptions {
         transient_impacts: 20,
         recorded_impacts: 10,
@@ -122,13 +127,7 @@ fn the_last_impact_is_the_runs_last_for_both_stops() {
 fn the_elastic_proposed_ball_is_unsettled_and_its_verdict_agrees() {
     // The proposed law with x_pl = 0 (the preset's) is elastic: the ball climbs ever higher on the
     // vibrating table and its run reaches 2000 forcing periods in its transient (docs/maps.md §2).
-    let registry = Registry::builtin().unwrap();
-    let scene = registry.scene("bouncing-ball").unwrap();
-    let spec = registry
-        .scene_system("bouncing-ball", &[])
-        .unwrap()
-        .unwrap();
-    let model = SystemModel::from_scene(&scene, &spec).unwrap();
+    let model = preset_ball();
     let proposed = Contact::Compliant {
         model: ForceModel::Proposed,
         damping: CompliantDamping::PerImpact,
