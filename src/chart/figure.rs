@@ -572,12 +572,13 @@ mod tests {
 
     #[test]
     fn a_png_is_written_with_text() {
-        let dir = std::env::temp_dir().join(format!("hertz-figure-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("f.png");
+        let dir = tempfile::Builder::new()
+            .prefix("hertz-tui-figure-")
+            .tempdir()
+            .unwrap();
+        let path = dir.path().join("f.png");
         write(&[chart(), chart()], &path, (800, 400)).unwrap();
         let bytes = std::fs::read(&path).unwrap();
         assert_eq!(&bytes[1..4], b"PNG");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

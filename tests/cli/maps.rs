@@ -3,17 +3,17 @@
 //! give a wrong map (a missing or repeated shard, shards of another map or of another N, a file
 //! cut short or edited), and a small map runs as a Slurm job array (docs/maps.md).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
+use crate::scratch::{self, Folder};
+
 fn run_with(args: &[&str], threads: Option<&str>) -> Output {
+    let config = scratch::folder("maps-config");
     let mut command = Command::new(env!("CARGO_BIN_EXE_hertz-tui"));
     command
         .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-maps-no-config"),
-        )
+        .env("XDG_CONFIG_HOME", &*config)
         .env_remove("RUST_BACKTRACE");
     if let Some(t) = threads {
         command.env("RAYON_NUM_THREADS", t);
@@ -37,11 +37,8 @@ fn refused(args: &[&str]) -> String {
     String::from_utf8(output.stderr).unwrap()
 }
 
-fn folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-maps-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn folder(name: &str) -> Folder {
+    scratch::folder(&format!("maps-{name}"))
 }
 
 /// A small map with chaos, chatter, sticking and periodic cells in it (docs/maps.md §1).
@@ -147,7 +144,6 @@ fn shards_merge_into_the_unsharded_bytes_whatever_the_threads() {
         })
         .sum();
     assert_eq!(counted, 9 * 7, "{drawing}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -199,7 +195,6 @@ fn merge_refuses_what_would_give_a_wrong_map() {
     assert!(merge(&[&files[0], &edited, &files[2]]).contains("checksum"));
     // Nothing was written by the refused merges.
     assert!(!Path::new(&out).exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -266,7 +261,6 @@ fn the_figure_shows_every_motion_of_the_legend_on_the_keys_axes() {
         listed += 1;
     }
     assert!(listed >= 3, "{drawing}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

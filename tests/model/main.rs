@@ -42,6 +42,9 @@ mod ode_stability;
 mod presets;
 mod quasistatic_props;
 mod scene_view;
+#[allow(dead_code)]
+#[path = "../scratch/mod.rs"]
+mod scratch;
 mod system_compliant;
 mod systems_ball;
 #[allow(dead_code)]
