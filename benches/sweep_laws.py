@@ -9,7 +9,7 @@ solved (exact or the integrator `auto` picks), its accepted and rejected steps o
 against the elastic closed form's (`quasistatic`).
 
     cargo build --release
-    python3 benches/sweep_laws.py                  # 100 000 points: about 25 s of CPU
+    python3 benches/sweep_laws.py                  # 100 000 points: about 6 s of CPU
     python3 benches/sweep_laws.py --points 1000000 # the 10⁶-point sweep: ten times that
 
 Options: `--points N` (default 100000), `--bin PATH` (default $CARGO_TARGET_DIR/release/hertz-tui

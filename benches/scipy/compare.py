@@ -1,6 +1,10 @@
 #!/usr/bin/env python3
 """Per-impact cost of hertz-tui's Hunt–Crossley sweep against scipy's DOP853 doing the same sweep.
 
+The sweep is over e (0.05–0.95 at v₀ = 0.3 m/s), so that every point is an impact of its own:
+over v₀ hertz-tui would solve one and scale it (docs/physics.md §6.9), which is not a solver's
+cost.
+
 Runs `hertz-tui sweep … --model hunt-crossley` (the best of five runs) and `hc_sweep.py` at the
 same point counts, each as a whole process on one core (hertz-tui with RAYON_NUM_THREADS=1; scipy
 is single-threaded), and prints for each N the CPU time of each (user + system of the child), the cost
@@ -64,8 +68,8 @@ def main():
                 timed(
                     [
                         args.bin, "sweep", "--scene", "fig5-steel-sphere-r10-plate",
-                        "--param", "impact.v0", "--from", "0.01", "--to", "1",
-                        "--points", str(n), "--log", "--format", "csv", "--model", "hunt-crossley",
+                        "--param", "impact.restitution", "--from", "0.05", "--to", "0.95",
+                        "--points", str(n), "--format", "csv", "--model", "hunt-crossley",
                     ],
                     ours_csv,
                     env=one_core,

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""The Hunt–Crossley v0 sweep of `hertz-tui sweep`, done by scipy's DOP853.
+"""The Hunt–Crossley restitution sweep of `hertz-tui sweep`, done by scipy's DOP853.
 
-Same scene (the Fig. 5 preset: steel sphere R = 10 mm on a steel plate, e = 0.6), same law
-F = k·xⁿ·(1 + α·ẋ) with α = 3(1 − e)/(2·v₀) (eq 19), same log-spaced v₀ from 0.01 to 1 m/s
-(`--points N`, default 2000), same rtol (1e-8, hertz-tui's default; atol 1e-8 of x_e and v₀, as
+Same scene (the Fig. 5 preset: steel sphere R = 10 mm on a steel plate at v₀ = 0.3 m/s), same law
+F = k·xⁿ·(1 + α·ẋ) with α = 3(1 − e)/(2·v₀) (eq 19), same evenly spaced e from 0.05 to 0.95
+(`--points N`, default 2000: each a different impact in scaled variables, which a v₀ sweep of this
+law is not — hertz-tui scales one solve to every v₀, docs/physics.md §6.9), same rtol (1e-8, hertz-tui's default; atol 1e-8 of x_e and v₀, as
 hertz-tui scales it), same numbers out (x_max, F_max, t_c, v_out, e_out; CSV on stdout). Ends of
 contact and the force peak are located as events, as hertz-tui does on its integrators.
 
@@ -20,7 +21,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 # The Fig. 5 preset: eqs 2–4 for a sphere on a plane of the same steel.
-E, NU, RHO, R, E_REST = 200e9, 0.3, 7800.0, 0.01, 0.6
+E, NU, RHO, R, V0 = 200e9, 0.3, 7800.0, 0.01, 0.3
 E_STAR = E / (2.0 * (1.0 - NU**2))
 K = 4.0 / 3.0 * E_STAR * math.sqrt(R)
 N = 1.5
@@ -28,8 +29,8 @@ MASS = RHO * 4.0 / 3.0 * math.pi * R**3
 RTOL = 1e-8
 
 
-def impact(v0):
-    alpha = 1.5 * (1.0 - E_REST) / v0
+def impact(e, v0=V0):
+    alpha = 1.5 * (1.0 - e) / v0
     x_e = ((N + 1.0) * MASS * v0**2 / (2.0 * K)) ** (1.0 / (N + 1.0))
     t_e = x_e / v0
 
@@ -73,9 +74,9 @@ def impact(v0):
 
 def sweep(points):
     out = csv.writer(sys.stdout, lineterminator="\n")
-    out.writerow(["impact.v0", "x_max", "f_max", "t_contact", "v_out", "e_out"])
-    for v0 in np.geomspace(0.01, 1.0, points):
-        out.writerow([repr(float(v0))] + [repr(float(q)) for q in impact(v0)])
+    out.writerow(["impact.restitution", "x_max", "f_max", "t_contact", "v_out", "e_out"])
+    for e in np.linspace(0.05, 0.95, points):
+        out.writerow([repr(float(e))] + [repr(float(q)) for q in impact(e)])
 
 
 def compare(scipy_csv, ours_csv):

@@ -276,16 +276,12 @@ pub fn curves(
         })
         .collect();
     all.sort_by_key(|s| s.focused);
-    Chart {
-        title: format!("{kind} curve in ({}, {})", second.key, first.key),
-        x: kx.chart_axis(axis_title(&second.key, &kx, second.key_unit)),
-        y: ky.chart_axis(axis_title(&first.key, &ky, first.key_unit)),
-        series: all,
-        marks: Vec::new(),
-        rules: Vec::new(),
-        notes: Vec::new(),
-        readout: None,
-    }
+    Chart::new(
+        format!("{kind} curve in ({}, {})", second.key, first.key),
+        kx.chart_axis(axis_title(&second.key, &kx, second.key_unit)),
+        ky.chart_axis(axis_title(&first.key, &ky, first.key_unit)),
+        all,
+    )
 }
 
 #[cfg(test)]

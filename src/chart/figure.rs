@@ -275,6 +275,7 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
             }
         }
     }
+    let mut labels = Vec::new();
     for mark in &chart.marks {
         let Some((x, y)) = p.at(chart, mark.at) else {
             continue;
@@ -286,7 +287,8 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
         if let Some(label) = &mark.label {
             area.draw(&Text::new(
                 label.clone(),
-                (x + 9, y),
+                // Stacked towards the plot's middle, away from the axes' labels.
+                free_line(&mut labels, (x + 9, y), label, y > (p.y0 + p.y1) / 2),
                 text_style(13, color(mark.ink), HPos::Left, VPos::Center),
             ))?;
         }
@@ -304,6 +306,27 @@ fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart) -> Dra
 
 /// A line through `points` in the pattern `dash`, as the terminal draws it: dashes of 10 px 6 px
 /// apart, dots of 2 px 4 px apart.
+/// Where a mark's label at `at` (left, vertical centre) is read, stacked a line above (`up`) or
+/// below the labels already `placed` that it would overprint (a rigid and a compliant point a hair
+/// apart, e.g. their grazing); records its box. About 7 px a character and 16 px a line at size 13.
+fn free_line(
+    placed: &mut Vec<[i32; 4]>,
+    (x, mut y): (i32, i32),
+    label: &str,
+    up: bool,
+) -> (i32, i32) {
+    const LINE: i32 = 16;
+    let right = x + 7 * label.chars().count() as i32;
+    let overlaps = |y: i32, b: &[i32; 4]| {
+        x < b[2] && b[0] < right && y - LINE / 2 < b[3] && b[1] < y + LINE / 2
+    };
+    while placed.iter().any(|b| overlaps(y, b)) {
+        y += if up { -LINE } else { LINE };
+    }
+    placed.push([x, y - LINE / 2, right, y + LINE / 2]);
+    (x, y)
+}
+
 fn stroke<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     points: Vec<(i32, i32)>,
@@ -389,7 +412,7 @@ fn legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, chart: &Chart, p: &
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::{Axis, Rule, Series, Tick};
+    use crate::chart::{Axis, Mark, Rule, Series, Tick};
 
     fn chart() -> Chart {
         let axis = |title: &str, hi: f64| Axis {
@@ -404,39 +427,72 @@ mod tests {
                 .collect(),
         };
         Chart {
-            title: "F(x)".into(),
-            x: axis("x [µm]", 8.0),
-            y: axis("F [N]", 400.0),
-            series: vec![
-                Series {
-                    name: "proposed".into(),
-                    ink: Ink::Model(crate::model::ForceModel::Proposed),
-                    glyph: '*',
-                    runs: vec![vec![(0.0, 0.0), (7.0, 320.0), (2.0, 0.0)]],
-                    focused: true,
-                    peak: Some((7.0, 320.0)),
-                    steps: false,
-                },
-                Series {
-                    name: "hunt-crossley".into(),
-                    ink: Ink::Model(crate::model::ForceModel::HuntCrossley),
-                    glyph: 'x',
-                    runs: vec![vec![(0.0, 0.0), (8.0, 360.0), (0.0, 0.0)]],
-                    focused: false,
-                    peak: Some((8.0, 360.0)),
-                    steps: false,
-                },
-            ],
-            marks: Vec::new(),
             rules: vec![Rule {
                 at: 4.0,
                 horizontal: false,
                 ink: Ink::Warning,
                 label: "v_y".into(),
             }],
-            notes: Vec::new(),
-            readout: None,
+            ..Chart::new(
+                "F(x)".into(),
+                axis("x [µm]", 8.0),
+                axis("F [N]", 400.0),
+                vec![
+                    Series {
+                        name: "proposed".into(),
+                        ink: Ink::Model(crate::model::ForceModel::Proposed),
+                        glyph: '*',
+                        runs: vec![vec![(0.0, 0.0), (7.0, 320.0), (2.0, 0.0)]],
+                        focused: true,
+                        peak: Some((7.0, 320.0)),
+                        steps: false,
+                    },
+                    Series {
+                        name: "hunt-crossley".into(),
+                        ink: Ink::Model(crate::model::ForceModel::HuntCrossley),
+                        glyph: 'x',
+                        runs: vec![vec![(0.0, 0.0), (8.0, 360.0), (0.0, 0.0)]],
+                        focused: false,
+                        peak: Some((8.0, 360.0)),
+                        steps: false,
+                    },
+                ],
+            )
         }
+    }
+
+    /// Two marks a hair apart (a rigid and a compliant grazing point): both labels readable, the
+    /// second a line from the first towards the plot's middle; a third elsewhere stays at its
+    /// point.
+    #[test]
+    fn labels_that_would_overprint_are_stacked() {
+        let mut c = chart();
+        let mark = |at, label: &str| Mark {
+            at,
+            ink: Ink::Warning,
+            glyph: 'G',
+            label: Some(label.into()),
+        };
+        c.marks = vec![
+            mark((2.0, 100.0), "grazing 0.0135653"),
+            mark((2.0001, 100.0), "grazing 0.0135652"),
+            mark((6.0, 300.0), "PD 0.0368"),
+        ];
+        let svg = svg(&[c], (640, 480)).unwrap();
+        let y_of = |label: &str| {
+            svg.split("<text")
+                .find(|t| t.contains(&format!(">{label}<")) || t.contains(&format!(">\n{label}")))
+                .and_then(|t| attr(t, "y"))
+                .unwrap_or_else(|| panic!("{label} in {svg}"))
+        };
+        let (a, b) = (y_of("grazing 0.0135653"), y_of("grazing 0.0135652"));
+        // In the plot's lower half: the second above the first, towards the middle.
+        assert!(a - b >= 15.0, "{a} {b}");
+        let mut placed = Vec::new();
+        assert_eq!(free_line(&mut placed, (10, 50), "PD", false), (10, 50));
+        assert_eq!(free_line(&mut placed, (12, 52), "PD", false), (12, 68));
+        assert_eq!(free_line(&mut placed, (12, 52), "PD", true), (12, 20));
+        assert_eq!(free_line(&mut placed, (200, 50), "PD", false), (200, 50));
     }
 
     /// Numbers of the attribute `name` in an SVG element's text.
@@ -516,12 +572,13 @@ mod tests {
 
     #[test]
     fn a_png_is_written_with_text() {
-        let dir = std::env::temp_dir().join(format!("hertz-figure-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("f.png");
+        let dir = tempfile::Builder::new()
+            .prefix("hertz-tui-figure-")
+            .tempdir()
+            .unwrap();
+        let path = dir.path().join("f.png");
         write(&[chart(), chart()], &path, (800, 400)).unwrap();
         let bytes = std::fs::read(&path).unwrap();
         assert_eq!(&bytes[1..4], b"PNG");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -276,19 +276,18 @@ pub fn residual_chart(
     }
     series.extend(curve_series(residuals, &x, &y));
     Chart {
-        title: "residuals e law − e measured".to_string(),
-        x: x.chart_axis(format!("v₀ [{unit}]")),
-        y: y.chart_axis("residual".to_string()),
-        series,
-        marks: Vec::new(),
         rules: vec![Rule {
             at: 0.0,
             horizontal: true,
             ink: Ink::Foreground,
             label: "0".to_string(),
         }],
-        notes: Vec::new(),
-        readout: None,
+        ..Chart::new(
+            "residuals e law − e measured".to_string(),
+            x.chart_axis(format!("v₀ [{unit}]")),
+            y.chart_axis("residual".to_string()),
+            series,
+        )
     }
 }
 

@@ -43,9 +43,15 @@ pub fn look(motion: &str, impacts: Option<u32>) -> Look {
         ("chattering", _) => l('c', Hue::Magenta, "chattering"),
         ("sticking", _) => l('s', Hue::Foreground, "sticking"),
         ("no-impact", _) => l('.', Hue::Foreground, "no impact"),
+        ("unsettled", _) => l('u', Hue::Yellow, "unsettled (transient never ended)"),
         ("same", _) => l('=', Hue::Green, "same motion"),
         ("differs", _) => l('X', Hue::Red, "different motion"),
         ("failed", _) => l('!', Hue::Red, "run failed"),
+        ("unknown", _) => l(
+            '?',
+            Hue::Foreground,
+            "unknown (a run failed or is unsettled)",
+        ),
         _ => l('?', Hue::Foreground, "unresolved"),
     }
 }
@@ -97,14 +103,5 @@ pub fn motion_map(
     };
     let x_title = title_of(x_key, x.prefix.symbol, x_unit);
     let y_title = title_of(y_key, y.prefix.symbol, y_unit);
-    Chart {
-        title,
-        x: x.chart_axis(x_title),
-        y: y.chart_axis(y_title),
-        series,
-        marks: Vec::new(),
-        rules: Vec::new(),
-        notes: Vec::new(),
-        readout: None,
-    }
+    Chart::new(title, x.chart_axis(x_title), y.chart_axis(y_title), series)
 }

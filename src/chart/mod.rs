@@ -184,6 +184,23 @@ pub struct Chart {
     pub readout: Option<Readout>,
 }
 
+impl Chart {
+    /// A chart of `series` on `x` and `y`, with no marks, rules, notes or reading (set those by
+    /// struct update where a chart has them).
+    pub fn new(title: String, x: Axis, y: Axis, series: Vec<Series>) -> Self {
+        Chart {
+            title,
+            x,
+            y,
+            series,
+            marks: Vec::new(),
+            rules: Vec::new(),
+            notes: Vec::new(),
+            readout: None,
+        }
+    }
+}
+
 /// The data cursor's reading: where it stands and each curve's values there, with the curve's
 /// names from the longest to the shortest, so that the renderer can fit it without cutting a
 /// number or naming a curve by its glyph.

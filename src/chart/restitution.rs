@@ -58,16 +58,12 @@ pub fn realised_chart(
         steps: false,
     }];
     all.extend(series(&data.realised, focused, &x, &y));
-    Chart {
-        title: "realised e against requested e".to_string(),
-        x: x.chart_axis("e requested".to_string()),
-        y: y.chart_axis("e_out".to_string()),
-        series: all,
-        marks: Vec::new(),
-        rules: Vec::new(),
-        notes: Vec::new(),
-        readout: None,
-    }
+    Chart::new(
+        "realised e against requested e".to_string(),
+        x.chart_axis("e requested".to_string()),
+        y.chart_axis("e_out".to_string()),
+        all,
+    )
 }
 
 /// Realised e against v₀ over four decades around the scene's, the damping coefficient held;
@@ -98,19 +94,20 @@ pub fn velocity_chart(
         }
     }
     let unit = format!("{}{}", x.prefix.symbol, METRE_PER_SECOND.symbol);
+    // The damping set from e at the scene's v₀ and held (view 4's sweep re-derives it at each v₀
+    // instead, where Hunt–Crossley's e_out is flat).
+    let title = format!(
+        "e_out against v₀ · damping set at v₀ = {} and held (α for Hunt–Crossley)",
+        engineering(data.v0, METRE_PER_SECOND, 3)
+    );
+    let series = series(&data.velocity, focused, &x, &y);
     Chart {
-        // The damping set from e at the scene's v₀ and held (view 4's sweep re-derives it at each
-        // v₀ instead, where Hunt–Crossley's e_out is flat).
-        title: format!(
-            "e_out against v₀ · damping set at v₀ = {} and held (α for Hunt–Crossley)",
-            engineering(data.v0, METRE_PER_SECOND, 3)
-        ),
-        series: series(&data.velocity, focused, &x, &y),
-        x: x.chart_axis(format!("v₀ [{unit}]")),
-        y: y.chart_axis("e_out".to_string()),
-        marks: Vec::new(),
         rules,
-        notes: Vec::new(),
-        readout: None,
+        ..Chart::new(
+            title,
+            x.chart_axis(format!("v₀ [{unit}]")),
+            y.chart_axis("e_out".to_string()),
+            series,
+        )
     }
 }

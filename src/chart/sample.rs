@@ -316,16 +316,12 @@ impl<K: Copy> Plot<K> {
             })
             .collect();
         series.sort_by_key(|s| s.focused);
-        Chart {
+        Chart::new(
             title,
-            x: self.x.chart_axis(self.x_title),
-            y: self.y.chart_axis(self.y_title),
+            self.x.chart_axis(self.x_title),
+            self.y.chart_axis(self.y_title),
             series,
-            marks: Vec::new(),
-            rules: Vec::new(),
-            notes: Vec::new(),
-            readout: None,
-        }
+        )
     }
 }
 

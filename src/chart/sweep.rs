@@ -213,16 +213,12 @@ pub fn chart(
     (max_x, max_y): (usize, usize),
 ) -> Chart {
     let Some(first) = sets.first() else {
-        return Chart {
-            title: String::new(),
-            x: nice_axis(0.0, 1.0, units::DIMENSIONLESS, 2).chart_axis(String::new()),
-            y: nice_axis(0.0, 1.0, units::DIMENSIONLESS, 2).chart_axis(String::new()),
-            series: Vec::new(),
-            marks: Vec::new(),
-            rules: Vec::new(),
-            notes: Vec::new(),
-            readout: None,
-        };
+        return Chart::new(
+            String::new(),
+            nice_axis(0.0, 1.0, units::DIMENSIONLESS, 2).chart_axis(String::new()),
+            nice_axis(0.0, 1.0, units::DIMENSIONLESS, 2).chart_axis(String::new()),
+            Vec::new(),
+        );
     };
     let spec = &first.data.spec;
     let x_unit = key_unit(spec.key);
@@ -321,23 +317,23 @@ pub fn chart(
         });
     }
     let symbol = key_symbol(spec.key);
+    // Each point is a scene of its own: every law's damping is set from e by its rule there
+    // (view 5 holds it instead, and its e_out against v₀ falls where this one is flat).
+    let title = format!(
+        "{} against {} · damping from e at each {symbol} · {} points, {}",
+        output.symbol(),
+        symbol,
+        spec.points,
+        if spec.log { "log" } else { "linear" }
+    );
     Chart {
-        // Each point is a scene of its own: every law's damping is set from e by its rule there
-        // (view 5 holds it instead, and its e_out against v₀ falls where this one is flat).
-        title: format!(
-            "{} against {} · damping from e at each {symbol} · {} points, {}",
-            output.symbol(),
-            symbol,
-            spec.points,
-            if spec.log { "log" } else { "linear" }
-        ),
-        x: x.chart_axis(axis_title(&symbol, &x, x_unit)),
-        y: y.chart_axis(axis_title(output.symbol(), &y, y_unit)),
-        series,
-        marks: Vec::new(),
         rules,
-        notes: Vec::new(),
-        readout: None,
+        ..Chart::new(
+            title,
+            x.chart_axis(axis_title(&symbol, &x, x_unit)),
+            y.chart_axis(axis_title(output.symbol(), &y, y_unit)),
+            series,
+        )
     }
 }
 

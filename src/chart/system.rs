@@ -204,16 +204,7 @@ fn assemble(
     mut series: Vec<Series>,
 ) -> Chart {
     series.sort_by_key(|s| s.focused);
-    Chart {
-        title,
-        x: x.chart_axis(x_title),
-        y: y.chart_axis(y_title),
-        series,
-        marks: Vec::new(),
-        rules: Vec::new(),
-        notes: Vec::new(),
-        readout: None,
-    }
+    Chart::new(title, x.chart_axis(x_title), y.chart_axis(y_title), series)
 }
 
 /// x(t) of every approach with the stops: fixed stops as horizontal rules, a moving one as a

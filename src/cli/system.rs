@@ -187,6 +187,11 @@ pub struct RunReport {
     pub end: EndReason,
     /// Impacts simulated in all, transient and chatter included.
     pub impacts_total: usize,
+    /// The run reached --max-periods before its transient impacts were done, still impacting in
+    /// its last tenth (the map's `unsettled`, docs/maps.md §2).
+    pub transient_unfinished: bool,
+    /// The time of the last impact, transient included, s (none: no impact).
+    pub last_impact: Option<f64>,
     pub impacts: Vec<ImpactRecord>,
     pub sticks: Vec<Stick>,
     /// The permanent dents the recorded contacts left, not carried (a plastic law's).
@@ -279,6 +284,8 @@ pub fn report(args: &SystemArgs, registry: &Registry) -> Result<SystemReport, Cl
             }),
             end: h.end,
             impacts_total: h.impacts_total,
+            transient_unfinished: h.transient_unfinished(&options, period),
+            last_impact: h.last_impact,
             impacts: h.impacts,
             sticks: h.sticks,
             dents: h.dents,
@@ -335,7 +342,7 @@ fn table(report: &SystemReport, transient: usize) -> String {
         report.groups.line()
     );
     for run in &report.runs {
-        let words = if run.end == EndReason::TimeLimit && run.impacts_total < transient {
+        let words = if run.transient_unfinished {
             format!(
                 "the transient never ended: the run reached --max-periods after {} of its \
                  {transient} transient impacts",

@@ -14,12 +14,13 @@ use crate::model::scene_key::{BodyField, BodyIndex, SceneKey};
 
 use super::action::Action;
 use super::app::{App, Confirm, Cursor, Mode};
-use super::app_tests::{app, enter_text, key, key_with, settle, temp_path, type_text};
+use super::app_tests::{app, enter_text, key, key_with, settle, type_text};
 use super::field::Field;
 use super::keymap::{INPUT_HINTS, action_for_event, bindings};
 use super::render;
 use super::style::{MarkerStyle, Theme};
 use super::tab::Tab;
+use super::testing::{TempPath, temp_path};
 use super::update::update;
 
 const V0: Field = Field::Number(SceneKey::V0);
@@ -59,7 +60,7 @@ pub(super) fn screen(app: &App, width: u16, height: u16) -> Vec<String> {
 }
 
 /// The explorer on the default preset, with a user folder of its own.
-pub(super) fn preset_app(label: &str) -> (App, std::path::PathBuf) {
+pub(super) fn preset_app(label: &str) -> (App, TempPath) {
     let dir = temp_path(label);
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene(DEFAULT_SCENE).unwrap();
@@ -223,7 +224,6 @@ fn saving_never_hides_a_built_in_without_asking_and_keeps_the_description() {
     let file = dir.join(format!("scenes/{DEFAULT_SCENE}.toml"));
     let text = std::fs::read_to_string(&file).unwrap();
     let message = a.message.clone().unwrap().text;
-    std::fs::remove_dir_all(&dir).unwrap();
     assert!(
         text.contains("description = \"Fig. 5: viscous models"),
         "{text}"
@@ -272,7 +272,6 @@ fn an_edited_material_is_named_so_and_saved_under_the_new_name() {
     }
     enter_text(&mut a, "soft-plate");
     let text = std::fs::read_to_string(dir.join("scenes/soft-plate.toml")).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
     assert!(text.starts_with("name = \"soft-plate\"\n"), "{text}");
     assert!(
         text.contains("name = \"steel (edited)\"\nyoungs_modulus = 1.9e11"),
@@ -312,7 +311,6 @@ fn an_edited_scene_is_not_named_after_the_preset_anywhere() {
     key(&mut a, KeyCode::Char('s'));
     enter_text(&mut a, "edited-plate");
     let text = std::fs::read_to_string(dir.join("scenes/edited-plate.toml")).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
     let description = text.lines().nth(1).unwrap();
     assert!(
         description.starts_with("description = 'edited from \"Fig. 5: steel sphere R = 10 mm")
@@ -322,8 +320,7 @@ fn an_edited_scene_is_not_named_after_the_preset_anywhere() {
         "{text}"
     );
     // An impact edit alone: the bodies' name, no longer "Fig. 5".
-    let (mut b, dir) = preset_app("renamed-v0");
-    std::fs::remove_dir_all(&dir).ok();
+    let (mut b, _dir) = preset_app("renamed-v0");
     b.cursor = Cursor::Field(V0);
     key(&mut b, KeyCode::Right);
     assert_eq!(b.title().0, "Steel sphere R = 10 mm on steel plate");
@@ -345,7 +342,6 @@ fn export_asks_before_overwriting() {
     enter_text(&mut a, path.to_str().unwrap());
     key(&mut a, KeyCode::Char('y'));
     let text = std::fs::read_to_string(&path).unwrap();
-    std::fs::remove_file(&path).unwrap();
     assert!(text.starts_with("t,x,v,F\n"));
 }
 

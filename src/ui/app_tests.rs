@@ -12,7 +12,7 @@ use super::field::Field;
 use super::keymap::action_for_event;
 use super::picker::EntryKind;
 use super::style::{MarkerStyle, Theme};
-use super::testing::fig5_scene;
+use super::testing::{fig5_scene, temp_path};
 use super::update::update;
 use super::worker;
 
@@ -364,10 +364,6 @@ fn presets_load_scenes_and_apply_materials_to_either_body() {
     assert!(matches!(a.mode, Mode::Normal));
 }
 
-pub(super) fn temp_path(name: &str) -> std::path::PathBuf {
-    std::env::temp_dir().join(format!("hertz-tui-{}-{name}", std::process::id()))
-}
-
 #[test]
 fn save_writes_the_scene_to_a_path_and_clears_the_unsaved_mark() {
     let mut a = app();
@@ -382,7 +378,6 @@ fn save_writes_the_scene_to_a_path_and_clears_the_unsaved_mark() {
     assert!(!a.is_dirty());
     let reloaded = a.registry.scene(&path.display().to_string()).unwrap();
     assert_eq!(reloaded.impact.v0, 0.31);
-    std::fs::remove_file(&path).unwrap();
     // A bad target keeps the prompt open with the reason.
     key(&mut a, KeyCode::Char('s'));
     enter_text(&mut a, "Not A Name");
@@ -410,7 +405,6 @@ fn export_writes_the_focused_trajectory_as_csv() {
     let path = temp_path("proposed.csv");
     enter_text(&mut a, &path.display().to_string());
     let text = std::fs::read_to_string(&path).unwrap();
-    std::fs::remove_file(&path).unwrap();
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
@@ -548,7 +542,6 @@ fn saving_as_a_user_preset_lists_it_in_the_picker() {
         (selected.name.as_str(), selected.origin.as_str()),
         ("my-fig5", "user")
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

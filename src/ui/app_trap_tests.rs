@@ -18,11 +18,12 @@ use crate::model::study::runner;
 use super::action::Action;
 use super::app::{App, Confirm, Cursor, Export, Mode, PromptKind};
 use super::app_daily_tests::{preset_app, screen};
-use super::app_tests::{app, enter_text, key, key_with, settle, temp_path, type_text};
+use super::app_tests::{app, enter_text, key, key_with, settle, type_text};
 use super::field::Field;
 use super::keymap::{INPUT_HINTS, action_for_event, bindings};
 use super::render;
 use super::tab::Tab;
+use super::testing::{TempPath, temp_path};
 use super::update::update;
 
 const R1: Field = Field::Number(SceneKey::Body(BodyIndex::One, BodyField::Radius));
@@ -44,7 +45,7 @@ fn settle_all(app: &mut App) {
 }
 
 /// The explorer on the default preset with a user folder of its own, edited (v₀ nudged).
-fn edited_app(label: &str) -> (App, std::path::PathBuf) {
+fn edited_app(label: &str) -> (App, TempPath) {
     let (mut app, dir) = preset_app(label);
     key(&mut app, KeyCode::Right);
     assert!(app.is_dirty());
@@ -95,7 +96,6 @@ fn the_quit_question_says_what_each_key_does_and_each_key_does_it() {
     key(&mut a, KeyCode::Char('y'));
     assert!(a.quit);
     assert!(!dir.join("scenes").exists(), "nothing saved");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -148,16 +148,13 @@ fn q_s_enter_saves_and_quits_and_esc_there_stays() {
     key(&mut b, KeyCode::Char('y'));
     assert!(b.quit);
     assert!(dir_b.join(format!("scenes/{DEFAULT_SCENE}.toml")).exists());
-    let _ = std::fs::remove_dir_all(&dir);
-    let _ = std::fs::remove_dir_all(&dir_b);
 
     // Ctrl-C twice is the documented way out at once.
-    let (mut c, dir_c) = edited_app("quit-interrupt");
+    let (mut c, _dir_c) = edited_app("quit-interrupt");
     key_with(&mut c, KeyCode::Char('c'), KeyModifiers::CONTROL);
     assert!(!c.quit);
     key_with(&mut c, KeyCode::Char('c'), KeyModifiers::CONTROL);
     assert!(c.quit);
-    let _ = std::fs::remove_dir_all(&dir_c);
 }
 
 /// The value the open editor holds.
@@ -454,7 +451,6 @@ fn view_4_exports_its_sweep_as_the_command_line_writes_it() {
     let path = temp_path("sweep.csv");
     enter_text(&mut a, path.to_str().unwrap());
     let text = std::fs::read_to_string(&path).unwrap();
-    std::fs::remove_file(&path).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let models = &data.spec.models;

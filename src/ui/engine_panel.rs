@@ -234,16 +234,17 @@ mod tests {
 
     #[test]
     fn writes_the_script_to_a_new_file_and_never_over_one() {
-        let dir =
-            std::env::temp_dir().join(format!("hertz-tui-engine-panel-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
+        let folder = tempfile::Builder::new()
+            .prefix("hertz-tui-engine-panel-")
+            .tempdir()
+            .unwrap();
+        let dir = folder.path();
         let scene = fig5();
         // MuJoCo: a Python script.
         let index = ENGINES.iter().position(|e| e.id == "mujoco").unwrap();
         let mut panel = EnginePanel::new(index, scene.as_ref());
-        let first = panel.write_to(&dir).unwrap();
-        let second = panel.write_to(&dir).unwrap();
+        let first = panel.write_to(dir).unwrap();
+        let second = panel.write_to(dir).unwrap();
         assert_eq!(first.file_name().unwrap(), "mujoco-impact.py");
         assert_eq!(second.file_name().unwrap(), "mujoco-impact-2.py");
         let text = std::fs::read_to_string(&first).unwrap();
@@ -260,7 +261,7 @@ mod tests {
         // Chrono: no script, the fragments.
         let index = ENGINES.iter().position(|e| e.id == "chrono").unwrap();
         let mut panel = EnginePanel::new(index, scene.as_ref());
-        let path = panel.write_to(&dir).unwrap();
+        let path = panel.write_to(dir).unwrap();
         assert!(
             std::fs::read_to_string(path)
                 .unwrap()
@@ -269,6 +270,5 @@ mod tests {
         let missing = dir.join("no-such-folder");
         let err = panel.write_to(&missing).unwrap_err();
         assert!(err.contains("no-such-folder"), "{err}");
-        let _ = std::fs::remove_dir_all(&dir);
     }
 }

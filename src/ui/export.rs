@@ -73,11 +73,9 @@ mod tests {
     #[test]
     fn writes_the_rows_solve_prints() {
         let solution = solution();
-        let path =
-            std::env::temp_dir().join(format!("hertz-tui-export-{}.csv", std::process::id()));
+        let path = crate::ui::testing::temp_path("export.csv");
         let rows = write(&path, &solution).unwrap();
         let text = fs::read_to_string(&path).unwrap();
-        fs::remove_file(&path).unwrap();
         assert_eq!(text, trajectory_csv(&solution, EXPORT_SAMPLES).unwrap());
         assert!(text.starts_with("t,x,v,F\n"));
         assert_eq!(rows, text.lines().count() - 1);

@@ -13,7 +13,7 @@ use crate::model::recommend::Outcome as Realised;
 use crate::model::{ForceModel, ImpactParams};
 
 /// One impact to solve off the UI thread.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Job {
     pub generation: u64,
     pub model: ForceModel,
@@ -27,6 +27,10 @@ pub struct Job {
     /// The charts' widths when it was asked for: the solver samples the curves for them too,
     /// off the UI thread.
     pub dots: ChartDots,
+    /// The model's last solution when it was solved with the same options and damping rule: a
+    /// similar law's is moved to the new parameters instead of solving them (docs/physics.md
+    /// §6.9), as a nudge of v₀ does for 17 of the 21 laws.
+    pub previous: Option<Arc<ImpactSolution>>,
 }
 
 /// What a solve produced; errors are kept as the solver's message.
@@ -56,6 +60,8 @@ struct Slot {
     pending: bool,
     /// The latest finished result (of the latest request once it is no longer pending).
     shown: Option<SolveResult>,
+    /// The inputs `shown` was solved with.
+    shown_inputs: Option<(ImpactParams, SolveOptions, bool, Option<f64>)>,
     /// The damping its law used.
     damping: Option<Damping>,
     /// Its curves sampled once, for every chart and frame until the next solve.
@@ -120,6 +126,18 @@ impl Solutions {
         slot.inputs = Some((params, options, calibrate, fitted));
         slot.generation = self.last_generation;
         slot.pending = true;
+        // Only the row's own damping rule moves with the parameters, and a step in seconds would not.
+        let previous = match (&slot.shown, &slot.shown_inputs) {
+            (Some(Ok(solution)), Some((_, shown_options, false, None)))
+                if *shown_options == options
+                    && !calibrate
+                    && fitted.is_none()
+                    && options.dt.is_none() =>
+            {
+                Some(Arc::clone(solution))
+            }
+            _ => None,
+        };
         Some(Job {
             generation: self.last_generation,
             model,
@@ -128,6 +146,7 @@ impl Solutions {
             calibrate,
             fitted,
             dots: self.dots,
+            previous,
         })
     }
 
@@ -145,6 +164,7 @@ impl Solutions {
             (Err(_), _) => None,
         };
         slot.shown = Some(outcome.result);
+        slot.shown_inputs = slot.inputs;
         slot.damping = outcome.damping;
         true
     }
@@ -239,19 +259,65 @@ mod tests {
             .request(ForceModel::Proposed, fig5_params(0.3), opts, false)
             .unwrap();
         assert!(s.is_pending(ForceModel::Proposed));
-        assert_eq!(
-            s.request(ForceModel::Proposed, fig5_params(0.3), opts, false),
-            None
+        assert!(
+            s.request(ForceModel::Proposed, fig5_params(0.3), opts, false)
+                .is_none()
         );
         assert!(s.accept(failed(&job, "x")));
         assert!(!s.any_pending());
-        assert_eq!(
-            s.request(ForceModel::Proposed, fig5_params(0.3), opts, false),
-            None
+        assert!(
+            s.request(ForceModel::Proposed, fig5_params(0.3), opts, false)
+                .is_none()
         );
         assert!(
             s.request(ForceModel::HuntCrossley, fig5_params(0.3), opts, false)
                 .is_some()
+        );
+    }
+
+    /// A new request carries the model's last solution when it was solved with the same options
+    /// and the row's own damping (the solver moves a similar law's, docs/physics.md §6.9);
+    /// calibration, other options or a step in seconds leave it out.
+    #[test]
+    fn the_last_solution_goes_with_a_request_it_can_be_moved_to() {
+        use crate::model::impact::solve_impact;
+        let mut s = Solutions::default();
+        let opts = SolveOptions::default();
+        let model = ForceModel::HuntCrossley;
+        let job = s.request(model, fig5_params(0.3), opts, false).unwrap();
+        assert!(job.previous.is_none());
+        let solution = Arc::new(solve_impact(model, &fig5_params(0.3), &opts).unwrap());
+        assert!(s.accept(Outcome {
+            result: Ok(Arc::clone(&solution)),
+            ..failed(&job, "")
+        }));
+        let next = s.request(model, fig5_params(0.05), opts, false).unwrap();
+        assert!(Arc::ptr_eq(next.previous.as_ref().unwrap(), &solution));
+        assert!(
+            s.request(model, fig5_params(0.06), opts, true)
+                .unwrap()
+                .previous
+                .is_none()
+        );
+        let tighter = SolveOptions {
+            rtol: 1e-10,
+            ..opts
+        };
+        assert!(
+            s.request(model, fig5_params(0.07), tighter, false)
+                .unwrap()
+                .previous
+                .is_none()
+        );
+        let fixed = SolveOptions {
+            dt: Some(1e-7),
+            ..opts
+        };
+        assert!(
+            s.request(model, fig5_params(0.08), fixed, false)
+                .unwrap()
+                .previous
+                .is_none()
         );
     }
 

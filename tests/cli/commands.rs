@@ -3,22 +3,17 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde_json::Value;
 
-/// A fresh folder under the system temp dir, removed when dropped.
-struct TempDir(PathBuf);
+use crate::scratch::{self, Folder};
+
+/// A fresh folder under the system temp dir, removed when dropped (also when the test fails).
+struct TempDir(Folder);
 
 impl TempDir {
     fn new(label: &str) -> TempDir {
-        static COUNTER: AtomicUsize = AtomicUsize::new(0);
-        let n = COUNTER.fetch_add(1, Ordering::SeqCst);
-        let dir =
-            std::env::temp_dir().join(format!("hertz-tui-cli-{}-{label}-{n}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
-        fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
+        TempDir(scratch::folder(&format!("cli-{label}")))
     }
 
     fn write(&self, relative: &str, text: &str) -> PathBuf {
@@ -30,12 +25,6 @@ impl TempDir {
 
     fn path(&self) -> &Path {
         &self.0
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = fs::remove_dir_all(&self.0);
     }
 }
 

@@ -3,14 +3,14 @@
 //! known laws) and on noise-free data written here.
 
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::path::Path;
 
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::calibrate::hunt_crossley_restitution;
 use hertz_tui::model::fit::{Candidate, restitution_model};
 use hertz_tui::model::presets::Registry;
 
+use crate::scratch::{self, ScratchPath};
 use crate::support::{json, ok, refused};
 
 /// The truths the shipped data were generated with (tests/cli/fit_data.rs).
@@ -24,16 +24,9 @@ fn data(name: &str) -> String {
         .to_string()
 }
 
-/// A fresh file path under the temp dir.
-fn temp(name: &str) -> PathBuf {
-    static N: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "hertz-tui-fit-{}-{}",
-        std::process::id(),
-        N.fetch_add(1, Ordering::SeqCst)
-    ));
-    fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+/// A fresh file path in a temporary folder of its own, removed when the result is dropped.
+fn temp(name: &str) -> ScratchPath {
+    scratch::path("fit", name)
 }
 
 /// Thornton's v_y on the aluminium preset: the truth of aluminium-thornton.csv.

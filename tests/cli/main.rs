@@ -9,6 +9,8 @@ mod maps;
 mod plot;
 mod readme;
 mod recommendation;
+#[path = "../scratch/mod.rs"]
+mod scratch;
 mod studies;
 mod support;
 mod systems;

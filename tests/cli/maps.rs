@@ -3,17 +3,17 @@
 //! give a wrong map (a missing or repeated shard, shards of another map or of another N, a file
 //! cut short or edited), and a small map runs as a Slurm job array (docs/maps.md).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
+use crate::scratch::{self, Folder};
+
 fn run_with(args: &[&str], threads: Option<&str>) -> Output {
+    let config = scratch::folder("maps-config");
     let mut command = Command::new(env!("CARGO_BIN_EXE_hertz-tui"));
     command
         .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-maps-no-config"),
-        )
+        .env("XDG_CONFIG_HOME", &*config)
         .env_remove("RUST_BACKTRACE");
     if let Some(t) = threads {
         command.env("RAYON_NUM_THREADS", t);
@@ -37,11 +37,8 @@ fn refused(args: &[&str]) -> String {
     String::from_utf8(output.stderr).unwrap()
 }
 
-fn folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-maps-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn folder(name: &str) -> Folder {
+    scratch::folder(&format!("maps-{name}"))
 }
 
 /// A small map with chaos, chatter, sticking and periodic cells in it (docs/maps.md §1).
@@ -147,7 +144,6 @@ fn shards_merge_into_the_unsharded_bytes_whatever_the_threads() {
         })
         .sum();
     assert_eq!(counted, 9 * 7, "{drawing}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -199,7 +195,6 @@ fn merge_refuses_what_would_give_a_wrong_map() {
     assert!(merge(&[&files[0], &edited, &files[2]]).contains("checksum"));
     // Nothing was written by the refused merges.
     assert!(!Path::new(&out).exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -266,5 +261,65 @@ fn the_figure_shows_every_motion_of_the_legend_on_the_keys_axes() {
         listed += 1;
     }
     assert!(listed >= 3, "{drawing}");
-    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_elastic_ball_that_never_settles_is_unsettled_not_no_impact() {
+    // The proposed law with x_pl = 0 (the preset's) is elastic: the ball climbs ever higher and
+    // each cell reaches --max-periods in its transient, still impacting (docs/maps.md §2).
+    let args = [
+        "map",
+        "--scene",
+        "bouncing-ball",
+        "--contact",
+        "both",
+        "--law",
+        "proposed",
+        "--x",
+        "system.gamma",
+        "--from",
+        "1.6",
+        "--to",
+        "2",
+        "--points",
+        "2",
+        "--y",
+        "impact.restitution",
+        "--from",
+        "0.5",
+        "--to",
+        "0.8",
+        "--points",
+        "2",
+        "--max-periods",
+        "2000",
+    ];
+    let csv = String::from_utf8(ok(&args, None)).unwrap();
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("contact,"))
+        .map(|l| l.splitn(10, ',').collect())
+        .collect();
+    let layer = |name: &str| rows.iter().filter(|r| r[0] == name).collect::<Vec<_>>();
+    assert_eq!(layer("proposed").len(), 4, "{csv}");
+    for r in layer("proposed") {
+        assert_eq!(r[5], "unsettled", "{csv}");
+    }
+    // The rigid stop settles (it is not elastic): the comparison is not known, and says why.
+    for r in layer("rigid") {
+        assert!(!["unsettled", "no-impact"].contains(&r[5]), "{csv}");
+    }
+    for r in layer("difference") {
+        assert_eq!(r[5], "unknown", "{csv}");
+        assert_eq!(r[9], "the compliant stop's transient never ended", "{csv}");
+    }
+    // The terminal legend names it, with its glyph.
+    let mut table_args = args.to_vec();
+    table_args.extend(["--format", "table"]);
+    let table = String::from_utf8(ok(&table_args, None)).unwrap();
+    assert!(
+        table.contains("  u  unsettled (transient never ended): 4 cells (100.0 %)"),
+        "{table}"
+    );
+    assert!(!table.contains("no impact"), "{table}");
 }

@@ -28,6 +28,8 @@ use hertz_tui::model::presets::Registry;
 use hertz_tui::model::scene_file::{Document, decode_material, parse_scene};
 use hertz_tui::ui::config::Config;
 
+use crate::scratch::{self, Folder};
+
 /// A fenced block: its info string, the line of its document it starts on, its text.
 struct Block {
     info: Vec<String>,
@@ -293,14 +295,6 @@ fn check_toml(name: &str, block: &Block, registry: &Registry) -> Result<(), Stri
     }
 }
 
-struct TempDir(PathBuf);
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = fs::remove_dir_all(&self.0);
-    }
-}
-
 /// What checking one document found.
 #[derive(Default)]
 struct Checked {
@@ -354,14 +348,14 @@ fn check_document(name: &str, markdown: &str, dir: &Path, registry: &Registry) -
     checked
 }
 
-/// A temporary folder with an empty user-presets folder, for one test's commands.
-/// A folder for a document's commands, with its own user-presets folder and the shipped example
-/// data at `presets/data/` as in a checkout, so that `--data presets/data/…` runs as written.
-fn command_dir(label: &str) -> TempDir {
-    let dir = TempDir(std::env::temp_dir().join(format!("hertz-{label}-{}", std::process::id())));
-    fs::create_dir_all(dir.0.join("config")).unwrap();
+/// A temporary folder for a document's commands, with its own empty user-presets folder and the
+/// shipped example data at `presets/data/` as in a checkout, so that `--data presets/data/…` runs
+/// as written. Removed when dropped.
+fn command_dir(label: &str) -> Folder {
+    let dir = scratch::folder(label);
+    fs::create_dir_all(dir.join("config")).unwrap();
     let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("presets/data");
-    let copy = dir.0.join("presets/data");
+    let copy = dir.join("presets/data");
     fs::create_dir_all(&copy).unwrap();
     for entry in fs::read_dir(&data).unwrap() {
         let path = entry.unwrap().path();
@@ -375,7 +369,7 @@ fn every_toml_and_command_block_of_the_readme_runs_as_written() {
     let readme = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
     let dir = command_dir("readme");
     let registry = Registry::builtin().unwrap();
-    let checked = check_document("README.md", &readme, &dir.0, &registry);
+    let checked = check_document("README.md", &readme, &dir, &registry);
     assert!(
         checked.failures.is_empty(),
         "{}",
@@ -406,7 +400,7 @@ fn every_toml_and_command_block_of_the_docs_runs_as_written() {
         let name = format!("docs/{}", path.file_name().unwrap().to_string_lossy());
         let dir = command_dir("docs");
         let text = fs::read_to_string(path).unwrap();
-        failures.extend(check_document(&name, &text, &dir.0, &registry).failures);
+        failures.extend(check_document(&name, &text, &dir, &registry).failures);
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
@@ -429,7 +423,7 @@ fn the_block_reader_and_the_runner_refuse_what_would_not_run() {
         commands("hertz-tui solve \\\n  --scene x\n\n"),
         ["hertz-tui solve    --scene x"]
     );
-    let dir = std::env::temp_dir();
+    let dir = scratch::folder("readme-refusals");
     for (command, why) in [
         ("cargo test", "is not hertz-tui"),
         (

@@ -1,20 +1,19 @@
 //! What the CLI tests share: the binary run with no user config, its output checked and parsed,
 //! and the SVG figures it writes read back.
 
-use std::path::PathBuf;
 use std::process::{Command, Output};
 
 use serde_json::Value;
 
+use crate::scratch::{self, ScratchPath, folder};
+
 /// Runs the binary with `args`, with a config folder of its own (none of the user's settings)
 /// and no backtraces in its messages.
 pub fn run(args: &[&str]) -> Output {
+    let config = folder("cli-config");
     Command::new(env!("CARGO_BIN_EXE_hertz-tui"))
         .args(args)
-        .env(
-            "XDG_CONFIG_HOME",
-            std::env::temp_dir().join("hertz-tui-cli-tests-no-config"),
-        )
+        .env("XDG_CONFIG_HOME", &*config)
         .env_remove("RUST_BACKTRACE")
         .output()
         .expect("the binary runs")
@@ -55,11 +54,9 @@ pub fn refused(args: &[&str]) -> String {
     err
 }
 
-/// A file in this test process's own temporary folder (`group` keeps the test files apart).
-pub fn out_file(group: &str, name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-{group}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+/// A file `name` in a temporary folder of its own, removed when the result is dropped.
+pub fn out_file(group: &str, name: &str) -> ScratchPath {
+    scratch::path(group, name)
 }
 
 /// (text, x, y) of every `<text>` element of an SVG.

@@ -500,6 +500,14 @@ fn a_run_whose_transient_never_ends_says_so_not_that_the_body_does_not_bounce() 
     assert!(impacts > 0 && impacts < 500, "{why}");
     // The run ends at the time limit: 2000 forcing periods from t = 0, to the last flight's end.
     assert!((periods - 2000.0).abs() < 1e-6, "{why}");
+    // Still impacting in the run's last tenth (the map's `unsettled`, docs/maps.md §2): 2000
+    // forcing periods at the preset's 20 Hz are 100 s.
+    let run = &report["runs"][1];
+    assert_eq!(run["contact"], "proposed", "{run}");
+    assert_eq!(run["transient_unfinished"], true, "{run}");
+    let last = run["last_impact"].as_f64().unwrap();
+    assert!(last > 90.0 && last < 100.0, "{last}");
+    assert_eq!(report["runs"][0]["transient_unfinished"], false);
     let sentence = verdict["sentence"].as_str().unwrap();
     assert!(
         sentence.starts_with(&format!(

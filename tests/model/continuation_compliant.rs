@@ -9,10 +9,12 @@ use hertz_tui::model::ForceModel;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::compliant::orbit::{MapPoint, period_doubling};
 use hertz_tui::model::system::compliant::{CompliantOptions, CompliantStop};
-use hertz_tui::model::system::continuation::{ContinuationOptions, SpecialKind, continue_orbit};
+use hertz_tui::model::system::continuation::{
+    ContinuationOptions, SpecialKind, continue_orbit, switch_at_period_doubling,
+};
 use hertz_tui::model::system::{
-    CompliantDamping, Contact, GuessStart, OrbitGuess, Param, RunOptions, SystemKey, SystemKind,
-    SystemModel, SystemSpec,
+    CompliantDamping, Contact, GuessStart, ImpactKind, OrbitGuess, Param, RunOptions, SystemKey,
+    SystemKind, SystemModel, SystemSpec, map::period_one, simulate,
 };
 
 const E: f64 = 0.5;
@@ -164,4 +166,88 @@ fn compliant_fold_and_period_doubling_converge_to_the_rigid_ones() {
         fine.1.abs() < 0.003 && fine.2.abs() < 0.003,
         "{deviations:?}"
     );
+}
+
+/// At t_c/T = 0.003 the compliant branch's period doubling switches onto a period-2 branch: born
+/// there, two distinct impacts a period past it, and each such orbit is the attractor a plain
+/// simulation of the compliant stop started near the period-1 orbit settles on (its impact
+/// speeds agree to 1e-6, an
+/// integration independent of the continuation), near the rigid closed form's Γ_PD.
+#[test]
+fn switching_at_the_compliant_period_doubling_follows_the_doubled_orbit() {
+    let gamma = Param::System(SystemKey::Gamma);
+    let (sn, pd) = (gamma_sn(E), gamma_pd(E));
+    let start = 0.5 * (sn + pd);
+    let range = (start, 1.05 * pd);
+    let f = frequency_for_ratio(0.003);
+    let model = ball(f, start);
+    let options = ContinuationOptions::default();
+    let up = continue_orbit(
+        &model,
+        &contact(),
+        gamma,
+        range,
+        &rigid_guess(f, start),
+        &options,
+    )
+    .unwrap();
+    let special = up.special(SpecialKind::PeriodDoubling).next().unwrap();
+    let at_pd = special.point.values[0];
+    assert!((at_pd / pd - 1.0).abs() < 0.003, "{at_pd} vs rigid {pd}");
+    let doubled =
+        switch_at_period_doubling(&model, &contact(), gamma, range, &up, special, &options)
+            .unwrap();
+    assert_eq!(doubled.cycles, 2);
+    assert!(
+        (doubled.points[0].values[0] - at_pd).abs() < 1e-8 * pd,
+        "born at {} vs {at_pd}",
+        doubled.points[0].values[0]
+    );
+    let past: Vec<_> = doubled
+        .points
+        .iter()
+        .filter(|p| p.values[0] > at_pd * 1.005 && p.stable)
+        .take(2)
+        .collect();
+    assert!(
+        !past.is_empty(),
+        "no stable point past Γ_PD: {:?}",
+        doubled.end
+    );
+    for point in past {
+        let g = point.values[0];
+        let mut speeds: Vec<f64> = point.points.iter().map(|i| i.v_in).collect();
+        speeds.sort_by(f64::total_cmp);
+        assert_eq!(speeds.len(), 2, "{speeds:?}");
+        assert!(
+            speeds[1] - speeds[0] > 1e-3 * speeds[1],
+            "{speeds:?}: period 1"
+        );
+        // Started on the rigid period-1 orbit, unstable past Γ_PD, it leaves along the doubling
+        // (from rest the ball chatters, another attractor here).
+        let model = ball(f, g);
+        let run = simulate(
+            &model,
+            &contact(),
+            &RunOptions {
+                transient_impacts: 600,
+                recorded_impacts: 20,
+                initial: Some(period_one(&model, E, &RunOptions::default()).unwrap()),
+                ..RunOptions::default()
+            },
+        )
+        .unwrap();
+        let recorded: Vec<f64> = (run.impacts.iter())
+            .filter(|i| i.kind == ImpactKind::Impact)
+            .map(|i| i.v_in)
+            .collect();
+        assert!(recorded.len() >= 10, "{recorded:?}");
+        for v in recorded {
+            let nearest = speeds
+                .iter()
+                .map(|s| (v - s).abs())
+                .fold(f64::INFINITY, f64::min);
+            assert!(nearest < 1e-6 * speeds[1], "Γ = {g}: {v} not in {speeds:?}");
+        }
+    }
 }

@@ -42,6 +42,9 @@ mod ode_stability;
 mod presets;
 mod quasistatic_props;
 mod scene_view;
+#[allow(dead_code)]
+#[path = "../scratch/mod.rs"]
+mod scratch;
 mod system_compliant;
 mod systems_ball;
 #[allow(dead_code)]
@@ -50,6 +53,7 @@ mod systems_diagram;
 mod systems_hard;
 mod systems_map;
 mod systems_map_chatter;
+mod systems_map_unsettled;
 mod systems_oscillator;
 mod systems_scene;
 mod systems_seed;

@@ -3,27 +3,20 @@
 use std::collections::BTreeMap;
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use hertz_tui::model::overrides::Override;
 use hertz_tui::model::presets::{DEFAULT_SCENE, Origin, PresetError, Registry, SaveTarget};
 use hertz_tui::model::scene_file::{self, parse_scene};
 use hertz_tui::model::{Material, Shape};
 
-/// A fresh folder under the system temp dir, removed when dropped.
-struct TempDir(PathBuf);
+use crate::scratch::{self, Folder};
+
+/// A fresh folder under the system temp dir, removed when dropped (also when the test fails).
+struct TempDir(Folder);
 
 impl TempDir {
     fn new(label: &str) -> TempDir {
-        static COUNTER: AtomicUsize = AtomicUsize::new(0);
-        let n = COUNTER.fetch_add(1, Ordering::SeqCst);
-        let dir = std::env::temp_dir().join(format!(
-            "hertz-tui-presets-{}-{label}-{n}",
-            std::process::id()
-        ));
-        let _ = fs::remove_dir_all(&dir);
-        fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
+        TempDir(scratch::folder(&format!("presets-{label}")))
     }
 
     fn write(&self, relative: &str, text: &str) -> PathBuf {
@@ -35,12 +28,6 @@ impl TempDir {
 
     fn path(&self) -> &Path {
         &self.0
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = fs::remove_dir_all(&self.0);
     }
 }
 

@@ -1,7 +1,6 @@
 //! Scenes carry their view: `models = [...]` (checked, the first focused) and `[solver]` in a scene
 //! file, read strictly (refusals located at file:line), defaulted, and written back on save.
 
-use std::fs;
 use std::path::PathBuf;
 
 use hertz_tui::model::ForceModel;
@@ -12,6 +11,8 @@ use hertz_tui::model::presets::{Registry, SaveTarget};
 use hertz_tui::model::scene_file::{
     Document, PAPER_MODELS, Problem, SceneView, ValueIssue, decode_view, parse_scene,
 };
+
+use crate::scratch;
 
 /// A valid scene file without a view; tests add lines after line 1 (so `models` is on line 2).
 const SCENE: &str = r#"name = "view test"
@@ -178,8 +179,7 @@ fn bad_view_values_carry_what_was_given() {
 
 #[test]
 fn saving_writes_the_view_back() {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-view-{}", std::process::id()));
-    fs::create_dir_all(&dir).unwrap();
+    let dir = scratch::folder("view");
     let registry = Registry::load_from(Some(&dir)).unwrap();
     let scene = registry.scene("fig4-steel-sphere-r10-plate").unwrap();
     let view = SceneView {
@@ -199,7 +199,6 @@ fn saving_writes_the_view_back() {
     let path = file.to_str().unwrap();
     let (scene_back, view_back) = (registry.scene(path), registry.scene_view(path));
     let description = registry.scene_description(path);
-    fs::remove_dir_all(&dir).unwrap();
     assert_eq!(scene_back.unwrap(), scene);
     assert_eq!(view_back.unwrap(), view);
     assert_eq!(description.unwrap().as_deref(), Some("kept"));

@@ -7,6 +7,8 @@ use hertz_tui::model::system::{
     Contact, Damping, Forcing, RunOptions, SystemKind, SystemModel, SystemSpec, simulate,
 };
 
+use crate::scratch;
+
 const PRESETS: [&str; 3] = [
     "bouncing-ball",
     "impact-oscillator",
@@ -323,8 +325,7 @@ fn set_overrides_take_each_keys_unit_and_a_wrong_unit_names_the_key() {
 #[test]
 fn a_system_scene_saved_with_its_table_reads_back_the_same() {
     let registry = Registry::builtin().unwrap();
-    let dir = std::env::temp_dir().join(format!("hertz-tui-system-save-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch::folder("system-save");
     for name in PRESETS {
         let scene = registry.scene(name).unwrap();
         let view = registry.scene_view(name).unwrap();
@@ -376,7 +377,6 @@ fn a_system_scene_saved_with_its_table_reads_back_the_same() {
         .to_string();
     assert!(e.contains("system.frequency"), "{e}");
     assert!(!file.exists());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -20,16 +20,20 @@ use hertz_tui::model::ForceModel;
 use hertz_tui::model::impact::{SolveOptions, solve_impact};
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
 
+use super::scratch::{self, Folder};
+
 const WIDTH: u16 = 100;
 const HEIGHT: u16 = 30;
 /// Overall limit of every wait; the polls themselves are 50 ms apart.
 const TIMEOUT: Duration = Duration::from_secs(60);
 const POLL: Duration = Duration::from_millis(50);
 
-/// A tmux server of its own (`-L`), killed on drop.
+/// A tmux server of its own, killed on drop. Its socket (`-S`) and the config folder are in a
+/// temporary folder that goes after it: tmux leaves its socket file behind when killed.
 struct Tmux {
-    socket: String,
+    socket: PathBuf,
     config_home: PathBuf,
+    _folder: Folder,
 }
 
 impl Tmux {
@@ -42,12 +46,13 @@ impl Tmux {
         if Command::new("tmux").arg("-V").output().is_err() {
             panic!("tmux is needed for the end-to-end tests: install it (apt-get install -y tmux)");
         }
-        let id = format!("{tag}{}", std::process::id());
-        let config_home = std::env::temp_dir().join(format!("hertz-e2e-config-{id}"));
+        let folder = scratch::folder(format!("e2e-{tag}").trim_end_matches('-'));
+        let config_home = folder.join("config");
         std::fs::create_dir_all(&config_home).unwrap();
         let tmux = Tmux {
-            socket: format!("hertz-e2e-{id}"),
+            socket: folder.join("tmux.sock"),
             config_home,
+            _folder: folder,
         };
         let size = (WIDTH.to_string(), HEIGHT.to_string());
         let out = tmux.run(&[
@@ -73,7 +78,7 @@ impl Tmux {
 
     fn run(&self, args: &[&str]) -> Output {
         Command::new("tmux")
-            .arg("-L")
+            .arg("-S")
             .arg(&self.socket)
             .args(args)
             .env("LANG", "C.UTF-8")
@@ -134,12 +139,14 @@ impl Tmux {
 }
 
 impl Drop for Tmux {
-    /// Never panics (a panic while a failed test unwinds would abort the whole binary).
+    /// Never panics (a panic while a failed test unwinds would abort the whole binary). The
+    /// folder with the socket and the config is removed next, when the fields drop.
     fn drop(&mut self) {
         let _ = Command::new("tmux")
-            .args(["-L", &self.socket, "kill-server"])
+            .arg("-S")
+            .arg(&self.socket)
+            .arg("kill-server")
             .output();
-        let _ = std::fs::remove_dir_all(&self.config_home);
     }
 }
 

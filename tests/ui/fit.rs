@@ -19,6 +19,7 @@ use hertz_tui::ui::views::fit::{self, Source};
 use ratatui::crossterm::event::KeyCode;
 
 use super::render::{app, press, render, settle, text};
+use super::scratch::{self, ScratchPath};
 
 const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (160, 48)];
 const STEEL: &str = "presets/data/steel-hunt-crossley.csv";
@@ -44,11 +45,11 @@ fn report(app: &App) -> FitReport {
     fit::finished(app).expect("a finished fit").1.clone()
 }
 
-/// A file in the temporary folder holding `text`.
-fn data_file(name: &str, text: &str) -> String {
-    let path = std::env::temp_dir().join(format!("hertz-tui-fit-ui-{}-{name}", std::process::id()));
+/// A file `name` holding `text`, in a temporary folder removed when the result is dropped.
+fn data_file(name: &str, text: &str) -> ScratchPath {
+    let path = scratch::path("fit-ui", name);
     std::fs::write(&path, text).unwrap();
-    path.display().to_string()
+    path
 }
 
 /// Types `text` into the open prompt: `o`, clear, the text, Enter.
@@ -132,8 +133,9 @@ fn without_data_the_view_says_how_to_load_some_and_where_the_examples_are() {
 
 #[test]
 fn a_refused_file_shows_the_readers_error_with_file_and_line_and_another_opens() {
-    let bad = data_file("bad.csv", "v (m/s), e\n0.1, 0.9\n0.2, 1.5\n");
-    let mut app = on_fit(Some(&bad), (120, 40));
+    let file = data_file("bad.csv", "v (m/s), e\n0.1, 0.9\n0.2, 1.5\n");
+    let bad = file.to_str().unwrap();
+    let mut app = on_fit(Some(bad), (120, 40));
     assert!(matches!(app.views.fit.source, Source::Failed { .. }));
     let s = screen(&app, (120, 40));
     assert!(s.contains(&format!("{bad}:3: restitution e = 1.5")), "{s}");

@@ -10,6 +10,8 @@ mod models_pane;
 mod readme_screen;
 mod render;
 mod results_damping;
+#[path = "../scratch/mod.rs"]
+mod scratch;
 mod system;
 mod system_branch;
 mod system_scene;

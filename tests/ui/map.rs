@@ -1,8 +1,8 @@
 //! The map view (docs/maps.md §6) rendered into ratatui's TestBackend and read as a measurement:
 //! a cell read through the axis ticks and the cursor is the cell `hertz-tui map` computes for the
-//! same scene and grid, the legend counts are the command's, the bouncing ball's period-1 region
-//! lies between Γ_SN and Γ_PD (docs/physics.md §8.1), Esc cancels a map being computed, and a
-//! scene without `[system]` says how to add one.
+//! same scene and grid, the legend counts are the command's (an unsettled cell's included), the
+//! bouncing ball's period-1 region lies between Γ_SN and Γ_PD (docs/physics.md §8.1), Esc cancels
+//! a map being computed, and a scene without `[system]` says how to add one.
 
 use std::process::Command;
 use std::sync::mpsc;
@@ -323,14 +323,22 @@ fn the_legend_counts_are_the_commands_for_every_map() {
     set(&mut app, Row::Points(Which::X), "10");
     set(&mut app, Row::Points(Which::Y), "4");
     settle_latest(&mut app);
-    let cli = command_cells(&app, "both");
+    legends_are_the_commands(&mut app, w, h);
+}
+
+/// Each map's legend (rigid, the law's, the difference, in turn with `c`) lists every motion of
+/// `hertz-tui map`'s cells with its count, and nothing else; the look name and glyph, with their
+/// counts, of each map.
+fn legends_are_the_commands(app: &mut App, w: u16, h: u16) -> Vec<Vec<((String, char), usize)>> {
+    let cli = command_cells(app, "both");
     let law = app.focused.to_string();
+    let mut legends = Vec::new();
     for (contact, title) in [
         ("rigid", "rigid map"),
         (law.as_str(), &format!("{law} map") as &str),
         ("difference", "difference map"),
     ] {
-        let s = screen(&app, w, h);
+        let s = screen(app, w, h);
         assert!(s.contains(title), "{title}\n{s}");
         let text = left_text(&s, 44);
         let mut counts: Vec<((String, char), usize)> = Vec::new();
@@ -349,8 +357,54 @@ fn the_legend_counts_are_the_commands_for_every_map() {
             assert!(!text.contains("too small to draw"), "{text}");
         }
         assert_eq!(text.matches(" %)").count(), counts.len(), "{text}");
-        press(&mut app, KeyCode::Char('c'));
+        legends.push(counts);
+        press(app, KeyCode::Char('c'));
     }
+    legends
+}
+
+#[test]
+fn the_legend_names_cells_whose_transient_never_ended() {
+    // The focused proposed law (x_pl = 0) is elastic: the ball climbs ever higher and a cell's
+    // 1000 transient impacts are not done in the 20 000 forcing periods of its run, yet it still
+    // impacts at the end: `unsettled`, not `no impact` (docs/maps.md §2).
+    let (w, h) = (160, 48);
+    let mut app = app_on("bouncing-ball", w, h);
+    assert_eq!(app.focused.to_string(), "proposed");
+    app.views.map.settings.budget = Some((1000, 16, 20));
+    set(&mut app, Row::Points(Which::X), "4");
+    set(&mut app, Row::Points(Which::Y), "2");
+    settle_latest(&mut app);
+    let legends = legends_are_the_commands(&mut app, w, h);
+    let unsettled = look("unsettled", None);
+    let count = |legend: &[((String, char), usize)]| {
+        legend
+            .iter()
+            .find(|((name, glyph), _)| *name == unsettled.name && *glyph == unsettled.glyph)
+            .map_or(0, |(_, n)| *n)
+    };
+    assert!(count(&legends[1]) >= 1, "{:?}", legends[1]);
+    assert_eq!(count(&legends[0]), 0, "{:?}", legends[0]);
+    assert!(
+        legends
+            .iter()
+            .flatten()
+            .all(|((name, _), _)| *name != look("no-impact", None).name),
+        "{legends:?}"
+    );
+    // On screen, the law's map: its glyph in the cells and its words in the legend.
+    let s = screen(&app, w, h);
+    assert!(s.contains("rigid map"), "{s}");
+    press(&mut app, KeyCode::Char('c'));
+    let s = screen(&app, w, h);
+    let text = left_text(&s, 44);
+    assert!(
+        text.contains(&format!(
+            "u unsettled (transient never ended): {} cell",
+            count(&legends[1])
+        )),
+        "{text}"
+    );
 }
 
 /// Γ_SN = π(1−e)/(1+e) and Γ_PD = √(Γ_SN² + (2(1+e²)/(1+e)²)²) (docs/physics.md §8.1).

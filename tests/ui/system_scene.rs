@@ -2,8 +2,6 @@
 //! file with `--set system.*` (units included) applied, written back by `s` so that the file opens
 //! again to the same table, undone by `u` like the form's edits, and added to a scene without one.
 
-use std::path::PathBuf;
-
 use hertz_tui::format::units::sig;
 use hertz_tui::model::presets::Registry;
 use hertz_tui::model::scene_file;
@@ -18,6 +16,7 @@ use hertz_tui::ui::{MarkerStyle, Opened};
 use ratatui::crossterm::event::KeyCode;
 
 use super::render::settle;
+use super::scratch::{self, ScratchPath};
 use super::system::{DIAGRAM_VALUES, app_on, go_to_row, press, screen, type_in};
 
 /// A bouncing ball as a user writes it (docs/systems.md §1), with A = 0.9 mm: its name is not the
@@ -44,11 +43,9 @@ amplitude = 0.0009
 frequency = 20.0
 "#;
 
-/// A file of this test run called `name` holding `text`.
-fn scene_file(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("hertz-tui-ui-system-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
+/// A file called `name` holding `text`, in a temporary folder removed when the result is dropped.
+fn scene_file(name: &str, text: &str) -> ScratchPath {
+    let path = scratch::path("ui-system", name);
     std::fs::write(&path, text).unwrap();
     path
 }

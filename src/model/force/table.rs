@@ -144,6 +144,10 @@ pub struct LawSpec {
     pub style: LawStyle,
     /// χ(e) of a Hunt–Crossley-family row, F = k·xⁿ·(1 + χ(e)·ẋ/v₀); `None` for other laws.
     pub chi: Option<fn(f64) -> f64>,
+    /// With its damping from e, its impact in the solver's scaled variables (x/x_e, ẋ/v₀,
+    /// t·v₀/x_e) depends on n, e and its contact rule alone, so one solve scaled serves every v₀,
+    /// m and k (docs/physics.md §6.9). Tested against direct solves for every row.
+    pub similar: bool,
 }
 
 const CHI: DampingParam = DampingParam {
@@ -187,6 +191,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: None,
+        similar: true,
     };
     HertzLineExact = hertz_line_exact::HertzLineExact::build,
     LawSpec {
@@ -203,6 +208,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: None,
+        similar: false,
     };
     DryFriction = dry_friction::DryFriction::build,
     LawSpec {
@@ -223,6 +229,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: None,
+        similar: true,
     };
     Proposed = proposed::Proposed::build,
     LawSpec {
@@ -243,6 +250,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: None,
+        similar: false,
     };
     HertzViscous = hertz_viscous::HertzViscous::build,
     LawSpec {
@@ -259,6 +267,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: None,
+        similar: true,
     };
     HertzViscousTension = hertz_viscous::HertzViscous::build,
     LawSpec {
@@ -275,6 +284,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: None,
+        similar: true,
     };
     KelvinVoigt = kelvin_voigt::KelvinVoigt::build,
     LawSpec {
@@ -291,6 +301,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: None,
+        similar: true,
     };
     KelvinVoigtTension = kelvin_voigt::KelvinVoigt::build,
     LawSpec {
@@ -307,6 +318,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: None,
+        similar: true,
     };
     KuwabaraKono = proposed::Proposed::build_kuwabara_kono,
     LawSpec {
@@ -323,6 +335,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: None,
+        similar: true,
     };
     KuwabaraKonoTension = proposed::Proposed::build_kuwabara_kono,
     LawSpec {
@@ -339,6 +352,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: None,
+        similar: true,
     };
     AdamsImpact = adams_impact::AdamsImpact::build,
     LawSpec {
@@ -360,6 +374,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: None,
+        similar: true,
     };
     Thornton = thornton::Thornton::build,
     LawSpec {
@@ -380,6 +395,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: None,
+        similar: false,
     };
     HuntCrossley = hysteresis::Hysteresis::build,
     LawSpec {
@@ -396,6 +412,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: Some(|e| 1.5 * (1.0 - e)),
+        similar: true,
     };
     LankaraniNikravesh = hysteresis::Hysteresis::build,
     LawSpec {
@@ -412,6 +429,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: Some(|e| 0.75 * (1.0 - e * e)),
+        similar: true,
     };
     HerbertMcWhannell = hysteresis::Hysteresis::build,
     LawSpec {
@@ -428,6 +446,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: Some(|e| 6.0 * (1.0 - e) / ((2.0 * e - 1.0).powi(2) + 3.0)),
+        similar: true,
     };
     LeeWang = hysteresis::Hysteresis::build,
     LawSpec {
@@ -444,6 +463,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: Some(|e| 0.75 * (1.0 - e)),
+        similar: true,
     };
     Gonthier = hysteresis::Hysteresis::build,
     LawSpec {
@@ -460,6 +480,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: Some(|e| (1.0 - e * e) / e),
+        similar: true,
     };
     ZhiyingQishao = hysteresis::Hysteresis::build,
     LawSpec {
@@ -476,6 +497,7 @@ law_table! {
             dash: Dash::Solid,
         },
         chi: Some(|e| 0.75 * (1.0 - e * e) * (2.0 * (1.0 - e)).exp()),
+        similar: true,
     };
     Flores = hysteresis::Hysteresis::build,
     LawSpec {
@@ -492,6 +514,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: Some(|e| 1.6 * (1.0 - e) / e),
+        similar: true,
     };
     HuGuo = hysteresis::Hysteresis::build,
     LawSpec {
@@ -508,6 +531,7 @@ law_table! {
             dash: Dash::Dotted,
         },
         chi: Some(|e| 1.5 * (1.0 - e) / e),
+        similar: true,
     };
     GharibHurmuzlu = hysteresis::Hysteresis::build,
     LawSpec {
@@ -524,6 +548,7 @@ law_table! {
             dash: Dash::Dashed,
         },
         chi: Some(|e| 1.0 / e - 1.0),
+        similar: true,
     };
 }
 

@@ -214,12 +214,14 @@ pub enum ImpactError {
 mod auto;
 mod phases;
 mod scale;
+mod similar;
 mod summary;
 mod system;
 mod tolerance;
 mod trajectory;
 
 pub use phases::TIME_LIMIT_CONTACTS;
+pub use similar::SimilarImpact;
 pub use system::ENERGY_LIMIT;
 pub use trajectory::Trajectory;
 

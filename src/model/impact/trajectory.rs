@@ -149,6 +149,49 @@ impl Trajectory {
         traj
     }
 
+    /// These curves moved to `law`, a similar law's impact under other parameters (docs/physics.md
+    /// §6.9): the dense outputs are in scaled variables and stay, the scales and the extrema move.
+    /// Curves integrated already are kept (equal, to rounding, to integrating them again).
+    pub(crate) fn rescaled(&self, law: AnyLaw, scales: Scales) -> Self {
+        let from = &self.scales;
+        let (x, v, t) = (scales.x / from.x, scales.v / from.v, scales.t / from.t);
+        let f = scales.f / from.f;
+        let moved = |lock: &OnceLock<Curves>| {
+            lock.get().map_or_else(OnceLock::new, |c| {
+                OnceLock::from(Curves {
+                    unloading_scales: if c.unloading_scales.shift == 0.0 {
+                        scales.without_shift()
+                    } else {
+                        scales
+                    },
+                    unloading_law: c.unloading_law.map(|_| law),
+                    ..c.clone()
+                })
+            })
+        };
+        let e = &self.extrema;
+        Trajectory {
+            law,
+            scales,
+            curves: moved(&self.curves),
+            pending: self.pending,
+            drawn: self.drawn,
+            drawn_curves: moved(&self.drawn_curves),
+            t_end: self.t_end * t,
+            extrema: Extrema {
+                t_f_max: e.t_f_max * t,
+                f_max: e.f_max * f,
+                peak: (e.peak.0 * x, e.peak.1 * v),
+                t_x_max: e.t_x_max * t,
+                x_max: e.x_max * x,
+                t_contact: e.t_contact * t,
+                x_residual: e.x_residual * x,
+                v_out: e.v_out * v,
+            },
+            marks: OnceLock::new(),
+        }
+    }
+
     fn bare(law: AnyLaw, scales: Scales, summary: &ImpactSummary, peak: (f64, f64)) -> Self {
         Trajectory {
             law,
@@ -263,6 +306,11 @@ impl Trajectory {
     fn state_at(&self, t: f64) -> Option<(State, Phase)> {
         self.curves()
             .state_at(t / self.scales.t, &self.scales, &mut Cursor::default())
+    }
+
+    /// The law these curves are of.
+    pub(crate) fn law(&self) -> &AnyLaw {
+        &self.law
     }
 
     /// Duration of contact covered, s.

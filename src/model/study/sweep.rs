@@ -6,7 +6,9 @@ use thiserror::Error;
 
 use crate::model::force::ForceModel;
 use crate::model::force::ImpactParams;
-use crate::model::impact::{SolveOptions, solve_impact, solve_law};
+use crate::model::impact::{
+    ImpactError, ImpactSummary, SimilarImpact, SolveOptions, solve_impact, solve_law,
+};
 use crate::model::quasistatic::ContactGeometry;
 use crate::model::scene::{Scene, SceneBodies};
 use crate::model::scene_fit::{FittedLaw, fitted_law_for};
@@ -128,12 +130,16 @@ pub fn check(base: &Scene, spec: &SweepSpec) -> Result<Vec<f64>, SweepError> {
 
 /// A sweep ready to be solved point by point. When its key is an impact condition (v₀, e, x_pl)
 /// the bodies are evaluated once for every point: the numbers are the same as re-evaluating the
-/// scene at each point, which a sweep of a body's key does.
+/// scene at each point, which a sweep of a body's key does. The similar laws are solved once, on
+/// the base scene, and scaled to every point with its n and e (docs/physics.md §6.9).
 pub struct SweepPlan<'a> {
     base: &'a Scene,
     spec: &'a SweepSpec,
     /// The base scene's bodies, when the key leaves them unchanged.
     bodies: Option<SceneBodies>,
+    /// Per model of the spec, its impact on the base scene when the law is similar (not for a
+    /// fitted scene, whose e follows the point).
+    similar: Vec<Option<SimilarImpact>>,
 }
 
 impl<'a> SweepPlan<'a> {
@@ -143,7 +149,25 @@ impl<'a> SweepPlan<'a> {
             .key
             .impact_condition(&mut impact)
             .map(|_| SceneBodies::of(base));
-        SweepPlan { base, spec, bodies }
+        let params = base
+            .quasistatic()
+            .ok()
+            .filter(|_| base.fit.is_none())
+            .map(|qs| base.impact_params(&qs));
+        let similar = spec
+            .models
+            .iter()
+            .map(|&model| {
+                let params = params.as_ref()?;
+                SimilarImpact::solve(model, params, &spec.options)?.ok()
+            })
+            .collect();
+        SweepPlan {
+            base,
+            spec,
+            bodies,
+            similar,
+        }
     }
 
     /// One point of the sweep: the scene with the key set to `value`, its quasistatic numbers and
@@ -193,7 +217,14 @@ impl<'a> SweepPlan<'a> {
             .spec
             .models
             .iter()
-            .map(|&model| impact_point(model, &params, self.base.fit.as_ref(), &self.spec.options))
+            .zip(&self.similar)
+            .map(|(&model, similar)| {
+                let solved = match similar.as_ref().and_then(|s| s.at(&params)) {
+                    Some(scaled) => scaled,
+                    None => solve(model, &params, self.base.fit.as_ref(), &self.spec.options),
+                };
+                impact_point(model, solved)
+            })
             .collect();
         SweepRow {
             value,
@@ -210,32 +241,33 @@ impl<'a> SweepPlan<'a> {
     }
 }
 
-/// `model`'s impact under `params` (the fitted law with its constant where `fit` is its), or the
-/// error that stopped it.
-fn impact_point(
+/// `model`'s impact under `params` (the fitted law with its constant where `fit` is its).
+fn solve(
     model: ForceModel,
     params: &ImpactParams,
     fit: Option<&FittedLaw>,
     options: &SolveOptions,
-) -> ImpactPoint {
+) -> Result<ImpactSummary, ImpactError> {
     let solved = match fitted_law_for(fit, model, params) {
         Ok(Some(law)) => solve_law(&law, options),
         Ok(None) => solve_impact(model, params, options),
         Err(e) => Err(e.into()),
     };
+    solved.map(|solution| solution.summary)
+}
+
+/// The row entry of `model`'s impact, or of the error that stopped it.
+fn impact_point(model: ForceModel, solved: Result<ImpactSummary, ImpactError>) -> ImpactPoint {
     match solved {
-        Ok(solution) => {
-            let s = solution.summary;
-            ImpactPoint {
-                model,
-                x_max: Some(s.x_max),
-                f_max: Some(s.f_max),
-                t_contact: Some(s.t_contact),
-                v_out: Some(s.v_out),
-                e_out: Some(s.e_out),
-                error: None,
-            }
-        }
+        Ok(s) => ImpactPoint {
+            model,
+            x_max: Some(s.x_max),
+            f_max: Some(s.f_max),
+            t_contact: Some(s.t_contact),
+            v_out: Some(s.v_out),
+            e_out: Some(s.e_out),
+            error: None,
+        },
         Err(e) => ImpactPoint {
             model,
             x_max: None,
@@ -413,6 +445,57 @@ mod tests {
                 failures += usize::from(row.error.is_some());
             }
             assert_eq!(failures, 1, "{key:?}: one invalid value each");
+        }
+    }
+
+    /// A v₀ sweep over three decades (and one over the sphere's radius) with every law: the
+    /// similar laws, scaled from one solve on the base scene, equal direct solves at each point
+    /// to 1e-12 relative (their solver's own error is 1e-8), so the scaling adds nothing to it;
+    /// and the plan scales exactly the laws the table calls similar.
+    #[test]
+    fn a_sweep_scales_the_similar_laws_to_the_numbers_of_direct_solves() {
+        let scene = crate::model::scene::tests::fig5_scene();
+        let mut v0 = spec(0.001, 3.0, 40, true);
+        v0.models = ForceModel::ALL.to_vec();
+        let mut radius = v0.clone();
+        radius.key = SceneKey::Body(BodyIndex::One, BodyField::Radius);
+        (radius.from, radius.to, radius.points) = (1e-3, 0.1, 15);
+        for spec in [v0, radius] {
+            let plan = SweepPlan::new(&scene, &spec);
+            let scaled: Vec<_> = (spec.models.iter().zip(&plan.similar))
+                .filter_map(|(m, s)| s.as_ref().map(|_| *m))
+                .collect();
+            let similar: Vec<_> = (spec.models.iter().copied())
+                .filter(|m| m.spec().similar)
+                .collect();
+            assert_eq!(scaled, similar);
+            assert!(scaled.len() >= 5, "{scaled:?}");
+            for value in sweep_values(&spec).unwrap() {
+                let row = plan.point(value);
+                let mut at = scene.clone();
+                spec.key.set(&mut at, value).unwrap();
+                let params = at.impact_params(&at.quasistatic().unwrap());
+                for point in &row.impacts {
+                    let direct = solve_impact(point.model, &params, &spec.options)
+                        .unwrap()
+                        .summary;
+                    for (got, want) in [
+                        (point.x_max, direct.x_max),
+                        (point.f_max, direct.f_max),
+                        (point.t_contact, direct.t_contact),
+                        (point.v_out, direct.v_out),
+                        (point.e_out, direct.e_out),
+                    ] {
+                        let got = got.unwrap();
+                        assert!(
+                            (got - want).abs() <= 1e-12 * want.abs(),
+                            "{:?} = {value}: {} {got} against {want}",
+                            spec.key,
+                            point.model.name()
+                        );
+                    }
+                }
+            }
         }
     }
 

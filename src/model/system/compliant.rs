@@ -306,6 +306,7 @@ pub fn run(
     let mut sticks = Vec::new();
     let mut dents = Dents::default();
     let mut total = 0usize;
+    let mut last_impact = None;
     let mut sampler: Option<Sampler> = None;
     let mut touched = false;
     let end = loop {
@@ -336,6 +337,7 @@ pub fn run(
             Landing::Contact { stop: i, t, x, v } => (i, t, x, v),
         };
         total += 1;
+        last_impact = Some(t);
         if total > options.max_impacts {
             return Err(SystemError::ImpactBudget {
                 what: "the simulation".into(),
@@ -410,6 +412,7 @@ pub fn run(
             impacts,
             sticks,
             impacts_total: total,
+            last_impact,
             end_state: State {
                 t: state.0,
                 x: state.1,

@@ -44,8 +44,8 @@ pub use model::SystemModel;
 pub use orbit::{GuessStart, ImpactPoint, Orbit, OrbitGuess, OrbitOptions};
 pub use param::{Param, SystemKey};
 pub use run::{
-    Dents, EndReason, History, ImpactKind, ImpactRecord, RunOptions, State, Stick, StopIndex,
-    SystemSample,
+    Dents, EndReason, History, IMPACTING_AT_END, ImpactKind, ImpactRecord, RunOptions, State,
+    Stick, StopIndex, SystemSample,
 };
 pub use spec::{
     Damping, Forcing, Groups, OscillatorCoefficients, STANDARD_GRAVITY, SystemKind, SystemSpec,

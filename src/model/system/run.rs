@@ -151,6 +151,10 @@ pub struct History {
     /// Impacts counted in all (transient and chatter included; a chatter sequence counts the
     /// impacts simulated before its accumulation point was summed).
     pub impacts_total: usize,
+    /// The time of the last impact, transient and chatter included (for a compliant stop, the
+    /// start of the last contact), s; None if there was none. Whether the body still impacts
+    /// when the time limit ends the run ([`History::impacting_at_end`]).
+    pub last_impact: Option<f64>,
     /// The state at the end (to continue from, e.g. the next value of a diagram).
     pub end_state: State,
     /// Why it ended.
@@ -160,7 +164,37 @@ pub struct History {
     pub dents: Dents,
 }
 
+/// A run that reaches its time limit still impacts at its end when its last impact came within
+/// this fraction of the run from the end (docs/maps.md §2): since its last impact a body that
+/// still impacts has made one unfinished flight, one that stopped impacting has moved freely for
+/// the rest of the run.
+pub const IMPACTING_AT_END: f64 = 0.1;
+
 impl History {
+    /// Whether the body still impacted when the run ended: a run that recorded all its impacts
+    /// ended on one; one that reached its time limit still impacts if its last impact (transient
+    /// included) came within [`IMPACTING_AT_END`] of its `max_periods` forcing periods of
+    /// `forcing_period` s from its end (docs/maps.md §2); one stuck for ever does not.
+    pub fn impacting_at_end(&self, max_periods: f64, forcing_period: f64) -> bool {
+        match self.end {
+            EndReason::Recorded => true,
+            EndReason::StuckForever => false,
+            EndReason::TimeLimit => self.last_impact.is_some_and(|t| {
+                self.end_state.t - t <= IMPACTING_AT_END * max_periods * forcing_period
+            }),
+        }
+    }
+
+    /// Whether the run reached its time limit before its `transient` impacts were done while
+    /// still impacting ([`History::impacting_at_end`]): the transient never ended, so nothing
+    /// was recorded. The map's `unsettled` and the compliant verdict's "the transient never
+    /// ended" are this (docs/maps.md §2).
+    pub fn transient_unfinished(&self, options: &RunOptions, forcing_period: f64) -> bool {
+        self.end == EndReason::TimeLimit
+            && self.impacts_total < options.transient_impacts
+            && self.impacting_at_end(options.max_periods, forcing_period)
+    }
+
     /// The period of the recorded impacts if they repeat: (impacts n, forcing periods m), the
     /// smallest n ≤ 128 for which every impact matches the one n before (same stop, speed within
     /// 1e-6 of the largest, phase within 1e-6 rad). `forcing_period` in s.

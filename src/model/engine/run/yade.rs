@@ -114,6 +114,8 @@ for _ in range({max_steps}):
 e_out = v_rel / V0
 contact_time = steps_in_contact * O.dt
 {PY_RESULT}
+# Yade removes its temporary folder (/tmp/yade-XXXXXX) only on this exit, which `-x` skips.
+O.exitNoBacktrace()
 "#,
         name = scene.scene.name,
         e = num(choice.at_step.e_out),

@@ -137,8 +137,9 @@ impl Resting {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(rename_all = "kebab-case", tag = "kind")]
 pub enum NothingRecorded {
-    /// The run reached its time limit (`--max-periods`) before its transient impacts were done:
-    /// the motion never settled, so nothing was recorded.
+    /// The run reached its time limit (`--max-periods`) before its transient impacts were done,
+    /// still impacting in its last stretch ([`History::transient_unfinished`]): the motion never
+    /// settled, so nothing was recorded.
     TransientUnfinished {
         /// Impacts made in all.
         impacts: usize,
@@ -149,7 +150,8 @@ pub enum NothingRecorded {
     },
     /// The body came to rest on the stop for ever.
     RestsForever,
-    /// The transient ended and then the body made at most resting contacts until the time limit.
+    /// The body stopped impacting, in the transient or after it, or made at most resting
+    /// contacts until the time limit.
     NoBounce,
 }
 
@@ -162,7 +164,8 @@ impl NothingRecorded {
         let start = options.initial.map_or(0.0, |s| s.t);
         Some(match history.end {
             EndReason::StuckForever => NothingRecorded::RestsForever,
-            EndReason::TimeLimit if history.impacts_total < options.transient_impacts => {
+            // The map's `unsettled` is the same notion (docs/maps.md §2).
+            EndReason::TimeLimit if history.transient_unfinished(options, period) => {
                 NothingRecorded::TransientUnfinished {
                     impacts: history.impacts_total,
                     transient: options.transient_impacts,

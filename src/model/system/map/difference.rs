@@ -42,6 +42,12 @@ pub enum Cause {
         /// The compliant stop's m, if it repeats.
         compliant: Option<u32>,
     },
+    /// One stop's run reached its time limit still in its transient (its motion is
+    /// [`Motion::Unsettled`]) where the other's settled: the two are not compared (`unknown`).
+    Unsettled {
+        /// Which stop's run: the rigid one's (else the compliant one's).
+        rigid: bool,
+    },
 }
 
 impl Cause {
@@ -62,6 +68,21 @@ impl Cause {
                     m(compliant)
                 )
             }
+            Cause::Unsettled { rigid } => format!(
+                "the {} stop's transient never ended",
+                if rigid { "rigid" } else { "compliant" }
+            ),
+        }
+    }
+
+    /// Why two stops' motions are `unknown` where one of them is known: the other never settled
+    /// (none where a run failed: the failed cell keeps its error).
+    pub fn unknown(rigid: Motion, compliant: Motion) -> Option<Cause> {
+        match (rigid, compliant) {
+            (Motion::Failed, _) | (_, Motion::Failed) => None,
+            (Motion::Unsettled, _) => Some(Cause::Unsettled { rigid: true }),
+            (_, Motion::Unsettled) => Some(Cause::Unsettled { rigid: false }),
+            _ => None,
         }
     }
 
@@ -97,7 +118,8 @@ pub enum Agreement {
     Same,
     /// Different kinds, or different periods.
     Differs,
-    /// One of the two runs failed.
+    /// One of the two runs failed, or one never settled where the other did
+    /// ([`Motion::Unsettled`]): its motion, so the comparison, is not known.
     Unknown,
 }
 
@@ -114,12 +136,15 @@ impl Agreement {
     /// Whether two motions agree. Two chatters agree when they repeat over the same forcing
     /// periods m (or neither repeats): their n is not compared, since an impact whose flight is
     /// near [`CHATTER_FLIGHT`](super::motion::CHATTER_FLIGHT) falls on either side of it for two
-    /// stops whose sequences differ by the contact time (docs/maps.md §2).
+    /// stops whose sequences differ by the contact time (docs/maps.md §2). Two unsettled runs
+    /// agree (both still impact at the time limit); one unsettled beside a settled one is
+    /// unknown: given longer, it might settle to the same motion.
     pub fn of(a: Motion, b: Motion) -> Agreement {
         let cycles = |p: Option<(u32, u32)>| p.map(|(_, m)| m);
         match (a, b) {
             _ if a == Motion::Failed || b == Motion::Failed => Agreement::Unknown,
             _ if a == b => Agreement::Same,
+            _ if a == Motion::Unsettled || b == Motion::Unsettled => Agreement::Unknown,
             (Motion::Chattering { period: p }, Motion::Chattering { period: q })
                 if cycles(p) == cycles(q) =>
             {
@@ -145,7 +170,8 @@ pub struct DifferenceCell {
     pub agreement: Agreement,
     /// λ_compliant − λ_rigid, per impact, where both have one.
     pub lyapunov_change: Option<f64>,
-    /// Why the motions differ, where they do and the cause is known.
+    /// Why the motions differ, where they do and the cause is known; where they are unknown,
+    /// the stop whose transient never ended.
     pub cause: Option<Cause>,
 }
 
@@ -163,9 +189,11 @@ pub fn difference(rigid: &[Cell], compliant: &[Cell]) -> Vec<DifferenceCell> {
                 y: r.y,
                 agreement,
                 lyapunov_change: r.lyapunov.zip(c.lyapunov).map(|(a, b)| b - a),
-                cause: (agreement == Agreement::Differs)
-                    .then(|| Cause::of(r, c))
-                    .flatten(),
+                cause: match agreement {
+                    Agreement::Differs => Cause::of(r, c),
+                    Agreement::Unknown => Cause::unknown(r.motion, c.motion),
+                    Agreement::Same => None,
+                },
             }
         })
         .collect()

@@ -3,10 +3,11 @@
 //! [`map`] runs the system at every cell of a [`Grid`] of two scene keys and tells its motion
 //! ([`Motion`]): n:m periodic from the recorded impacts, quasi-periodic or chaotic from the
 //! largest Lyapunov exponent of the impact map ([`lyapunov`]: the exact Jacobian for the rigid
-//! stop, two trajectories for the compliant one), chattering, sticking, no impact. Rows run in
-//! parallel on rayon's pool; along a row the attractor of one cell starts the next, so that the
-//! result is fixed by the grid alone: independent of the number of threads and of the [`Shard`]
-//! the rows are dealt into. [`difference`] compares the rigid and compliant maps cell by cell.
+//! stop, two trajectories for the compliant one), chattering, sticking, no impact, unsettled.
+//! Rows run in parallel on rayon's pool; along a row the attractor of one cell starts the next,
+//! so that the result is fixed by the grid alone: independent of the number of threads and of
+//! the [`Shard`] the rows are dealt into. [`difference`] compares the rigid and compliant maps
+//! cell by cell.
 
 mod contacts;
 mod difference;

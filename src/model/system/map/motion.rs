@@ -12,8 +12,13 @@ use crate::model::system::{EndReason, History, ImpactKind, ImpactRecord};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case", tag = "kind")]
 pub enum Motion {
-    /// At most one impact recorded after the transient within the run's time limit.
+    /// At most one impact recorded after the transient within the run's time limit, and none
+    /// in the run's last stretch: the body stopped impacting.
     NoImpact,
+    /// At most one impact recorded within the run's time limit, yet the body still impacted in
+    /// the run's last stretch ([`History::impacting_at_end`]): the transient never ended (or only
+    /// just), so the motion is not known (docs/maps.md §2).
+    Unsettled,
     /// The body rests on a stop for ever (a rigid stop's chatter ends in a stick that never
     /// releases; a compliant contact is held for [`HELD_PERIODS`](crate::model::system::compliant::HELD_PERIODS)).
     Sticking,
@@ -50,6 +55,7 @@ impl Motion {
     pub fn name(self) -> &'static str {
         match self {
             Motion::NoImpact => "no-impact",
+            Motion::Unsettled => "unsettled",
             Motion::Sticking => "sticking",
             Motion::Chattering { .. } => "chattering",
             Motion::Periodic { .. } => "periodic",
@@ -75,6 +81,7 @@ impl Motion {
     pub fn parse(name: &str, period: Option<(u32, u32)>) -> Option<Motion> {
         Some(match name {
             "no-impact" => Motion::NoImpact,
+            "unsettled" => Motion::Unsettled,
             "sticking" => Motion::Sticking,
             "chattering" => Motion::Chattering { period },
             "periodic" => {
@@ -179,19 +186,35 @@ pub fn skeleton(impacts: &[ImpactRecord], forcing_period: f64) -> (Vec<ImpactRec
     (kept, tail)
 }
 
-/// What the history says before any exponent: `Some` when it decides the motion alone (no
-/// impact, sticking, chatter, a period), `None` when the exponent must decide.
+/// What the history of a run of `max_periods` forcing periods says before any exponent: `Some`
+/// when it decides the motion alone (no impact, unsettled, sticking, chatter, a period), `None`
+/// when the exponent must decide.
+///
+/// Out of time with at most one impact recorded, the motion is `unsettled` if the body still
+/// impacted in the run's last stretch ([`History::impacting_at_end`]), else `no-impact`: the
+/// counts alone cannot tell a transient that never ends from one that ends in free motion.
 ///
 /// Chatter is one definition for both stops (docs/maps.md §2): a resting phase, an impact in a
 /// chatter's tail, or a contact holding the body; its period is that of the events outside the
 /// tail, a resting phase counting once.
-pub fn from_history(history: &History, forcing_period: f64, tol: &Tolerances) -> Option<Motion> {
+pub fn from_history(
+    history: &History,
+    forcing_period: f64,
+    max_periods: f64,
+    tol: &Tolerances,
+) -> Option<Motion> {
     let impacts = &history.impacts;
     match history.end {
         EndReason::StuckForever => return Some(Motion::Sticking),
-        // Out of time with (almost) nothing recorded: the body stopped impacting. With more, the
-        // impacts were only slow to come; what was recorded is read as usual.
-        EndReason::TimeLimit if impacts.len() < 2 => return Some(Motion::NoImpact),
+        // Out of time with (almost) nothing recorded. With more, the impacts were only slow to
+        // come; what was recorded is read as usual.
+        EndReason::TimeLimit if impacts.len() < 2 => {
+            return Some(if history.impacting_at_end(max_periods, forcing_period) {
+                Motion::Unsettled
+            } else {
+                Motion::NoImpact
+            });
+        }
         EndReason::TimeLimit | EndReason::Recorded => {}
     }
     let (kept, tail) = skeleton(impacts, forcing_period);

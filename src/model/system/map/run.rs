@@ -271,7 +271,7 @@ fn read(
         slowest_impact,
     };
     let tol = &options.tolerances;
-    let decided = motion::from_history(&history, model.spec.period(), tol);
+    let decided = motion::from_history(&history, model.spec.period(), run.max_periods, tol);
     let exponent_needed = matches!(decided, None | Some(Motion::Periodic { .. }));
     if !exponent_needed || options.lyapunov_impacts == 0 {
         return Ok((reading(decided.unwrap_or(Motion::Unresolved), None), end));
@@ -293,6 +293,14 @@ fn read(
         (Some(periodic), Err(_)) => (periodic, None),
         (None, Ok(l)) => (motion::from_exponent(Some(l), tol), Some(l)),
         (None, Err(NoExponent::Chatters)) => (Motion::Chattering { period: None }, None),
+        // No next impact within a map step's horizon: the body stopped impacting only if its run
+        // says so; a run that still impacted at its end makes flights longer than the horizon
+        // (the elastic ball climbing ever higher), so the map could not be iterated.
+        (None, Err(NoExponent::NoImpact))
+            if history.impacting_at_end(run.max_periods, model.spec.period()) =>
+        {
+            (Motion::Unresolved, None)
+        }
         (None, Err(NoExponent::NoImpact)) => (Motion::NoImpact, None),
         (None, Err(NoExponent::Grazes)) => (Motion::Unresolved, None),
     };

@@ -221,6 +221,7 @@ impl<'a> Run<'a> {
                 impacts: Vec::with_capacity(options.recorded_impacts.min(1 << 16)),
                 sticks: Vec::new(),
                 impacts_total: 0,
+                last_impact: None,
                 end_state: State {
                     t: 0.0,
                     x: 0.0,
@@ -297,6 +298,7 @@ impl<'a> Run<'a> {
     ) -> Result<bool, SystemError> {
         let recording = self.recording();
         self.history.impacts_total += 1;
+        self.history.last_impact = Some(after.t);
         if self.history.impacts_total > self.options.max_impacts {
             return Err(SystemError::ImpactBudget {
                 what: "the simulation".into(),
