@@ -6,7 +6,7 @@ use std::borrow::Borrow;
 use crate::chart::{Chart, Ink, Series as ChartSeries};
 use crate::format::units::{self, Unit};
 use crate::model::ForceModel;
-use crate::model::impact::{ImpactSolution, Sample};
+use crate::model::impact::{ImpactSolution, Ratios, Sample};
 
 use super::kind::ChartKind;
 use super::ticks::{NiceAxis, nice_axis};
@@ -108,6 +108,31 @@ impl<K> Series<K> {
         let (dt, dx) = dots.spacing(solution);
         let samples = solution.trajectory.drawn_samples_within(dt, dx, SAMPLES);
         Series::of(model, solution, samples)
+    }
+
+    /// These samples of a similar law's solution moved with it by `r`
+    /// ([`ImpactSolution::similar_at`], [`ImpactSolution::ratios_to`]): the sampling is spaced in
+    /// the solution's own t_contact and x_max, so the moved solution would be sampled at the
+    /// moved times.
+    pub fn moved(&self, r: Ratios) -> Series<K>
+    where
+        K: Copy,
+    {
+        let (t, x, v, f) = (r.t, r.x, r.v, r.f);
+        Series {
+            model: self.model,
+            samples: (self.samples.iter())
+                .map(|s| Sample {
+                    t: s.t * t,
+                    x: s.x * x,
+                    v: s.v * v,
+                    f: s.f * f,
+                })
+                .collect(),
+            force_peak_x: (self.force_peak_x.0 * x, self.force_peak_x.1 * f),
+            force_peak_t: (self.force_peak_t.0 * t, self.force_peak_t.1 * f),
+            deepest: (self.deepest.0 * x, self.deepest.1 * v),
+        }
     }
 
     fn of(model: K, solution: &ImpactSolution, samples: Vec<Sample>) -> Series<K> {

@@ -30,7 +30,14 @@ pub struct Job {
     /// The model's last solution when it was solved with the same options and damping rule: a
     /// similar law's is moved to the new parameters instead of solving them (docs/physics.md
     /// §6.9), as a nudge of v₀ does for 17 of the 21 laws.
-    pub previous: Option<Arc<ImpactSolution>>,
+    pub previous: Option<Previous>,
+}
+
+/// A model's last solution, and its curves as sampled for the job's charts.
+#[derive(Debug, Clone)]
+pub struct Previous {
+    pub solution: Arc<ImpactSolution>,
+    pub sampled: Option<Arc<Series>>,
 }
 
 /// What a solve produced; errors are kept as the solver's message.
@@ -134,7 +141,10 @@ impl Solutions {
                     && fitted.is_none()
                     && options.dt.is_none() =>
             {
-                Some(Arc::clone(solution))
+                Some(Previous {
+                    solution: Arc::clone(solution),
+                    sampled: slot.sampled.clone(),
+                })
             }
             _ => None,
         };
@@ -292,7 +302,9 @@ mod tests {
             ..failed(&job, "")
         }));
         let next = s.request(model, fig5_params(0.05), opts, false).unwrap();
-        assert!(Arc::ptr_eq(next.previous.as_ref().unwrap(), &solution));
+        let previous = next.previous.unwrap();
+        assert!(Arc::ptr_eq(&previous.solution, &solution));
+        assert!(previous.sampled.is_some());
         assert!(
             s.request(model, fig5_params(0.06), opts, true)
                 .unwrap()

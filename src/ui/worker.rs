@@ -12,20 +12,25 @@ use crate::model::impact::{ImpactError, ImpactSolution, solve_law};
 
 use super::jobs::Background;
 use super::solutions::{Job, Outcome, sampled};
+use crate::chart::sample::Series;
 
 /// Solves one job on the calling thread, and samples its curves for the job's charts (so that
 /// the UI thread only draws them).
 pub fn solve(job: &Job) -> Outcome {
     let start = Instant::now();
-    let (result, damping) = match law_of(job) {
-        Ok(law) => (solve_job(job, &law), law.damping()),
-        Err(message) => (Err(message), None),
+    let (result, damping, moved) = match law_of(job) {
+        Ok(law) => {
+            let (result, moved) = solve_job(job, &law);
+            (result, law.damping(), moved)
+        }
+        Err(message) => (Err(message), None, None),
     };
     let elapsed = start.elapsed();
-    let sampled = result
-        .as_ref()
-        .ok()
-        .map(|solution| (job.dots, sampled(job.model, solution, job.dots)));
+    let sampled = match (result.as_ref(), moved) {
+        (Ok(_), Some(series)) => Some((job.dots, series)),
+        (Ok(solution), None) => Some((job.dots, sampled(job.model, solution, job.dots))),
+        (Err(_), _) => None,
+    };
     Outcome {
         generation: job.generation,
         model: job.model,
@@ -52,14 +57,23 @@ fn law_of(job: &Job) -> Result<AnyLaw, String> {
     }
 }
 
-/// The job's law solved, or its previous solution moved to it where the law is similar.
-fn solve_job(job: &Job, law: &AnyLaw) -> Result<Arc<ImpactSolution>, String> {
-    if let Some(moved) = job.previous.as_ref().and_then(|p| p.similar_at(law)) {
-        return Ok(Arc::new(moved));
+/// The job's law solved, or its previous solution moved to it where the law is similar, with
+/// the previous curves moved too when they were sampled for the job's charts.
+fn solve_job(
+    job: &Job,
+    law: &AnyLaw,
+) -> (Result<Arc<ImpactSolution>, String>, Option<Arc<Series>>) {
+    if let Some(previous) = &job.previous
+        && let Some(moved) = previous.solution.similar_at(law)
+    {
+        let ratios = previous.solution.ratios_to(&moved);
+        let series = (previous.sampled.as_ref()).map(|s| Arc::new(s.moved(ratios)));
+        return (Ok(Arc::new(moved)), series);
     }
-    solve_law(law, &job.options)
+    let solved = solve_law(law, &job.options)
         .map(Arc::new)
-        .map_err(|e: ImpactError| e.to_string())
+        .map_err(|e: ImpactError| e.to_string());
+    (solved, None)
 }
 
 impl Background for Job {
@@ -93,6 +107,7 @@ mod tests {
     use super::*;
     use crate::model::impact::{SolveOptions, solve_impact};
     use crate::ui::jobs::supersede;
+    use crate::ui::solutions::Previous;
     use crate::ui::testing::fig5_params;
 
     fn job(generation: u64, model: ForceModel) -> Job {
@@ -117,7 +132,10 @@ mod tests {
             ForceModel::with_id("hertz-viscous"),
         ] {
             let solved = solve(&job(1, model));
-            let previous = solved.result.clone().ok();
+            let previous = Some(Previous {
+                solution: solved.result.clone().unwrap(),
+                sampled: solved.sampled.clone().map(|(_, s)| s),
+            });
             let nudged = Job {
                 params: fig5_params(0.05),
                 previous,
@@ -139,10 +157,30 @@ mod tests {
                 assert!((a - b).abs() <= 1e-12 * b.abs(), "{model:?}: {a} vs {b}");
             }
             assert_eq!(moved.summary.steps, direct.summary.steps);
+            // Its curves moved with it: the samples of a solve there, to 1e-7 of each scale.
+            let moved_curves = solve(&nudged).sampled.unwrap().1;
+            let direct_curves = sampled(model, &direct, nudged.dots);
+            assert_eq!(moved_curves.samples.len(), direct_curves.samples.len());
+            let s = &direct.summary;
+            for (a, b) in moved_curves.samples.iter().zip(&direct_curves.samples) {
+                let off = [
+                    (a.t - b.t) / s.t_contact,
+                    (a.x - b.x) / s.x_max,
+                    (a.v - b.v) / 0.05,
+                    (a.f - b.f) / s.f_max,
+                ];
+                assert!(off.iter().all(|d| d.abs() < 1e-7), "{model:?}: {a:?} {b:?}");
+            }
         }
         // The proposed model's damping holds x_pl/x_e, which moves with v₀: solved afresh.
         let proposed = ForceModel::Proposed;
-        let previous = solve(&job(1, proposed)).result.ok();
+        let previous = solve(&job(1, proposed))
+            .result
+            .ok()
+            .map(|solution| Previous {
+                solution,
+                sampled: None,
+            });
         let nudged = Job {
             params: fig5_params(0.05),
             previous,

@@ -221,7 +221,7 @@ mod tolerance;
 mod trajectory;
 
 pub use phases::TIME_LIMIT_CONTACTS;
-pub use similar::SimilarImpact;
+pub use similar::{Ratios, SimilarImpact};
 pub use system::ENERGY_LIMIT;
 pub use trajectory::Trajectory;
 

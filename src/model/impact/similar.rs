@@ -80,6 +80,35 @@ impl ImpactSolution {
     }
 }
 
+/// What a similar law's impact is multiplied by to move it (docs/physics.md §6.9): time, approach,
+/// velocity and force.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ratios {
+    /// Of x_e/v₀.
+    pub t: f64,
+    /// Of x_e (eq 5).
+    pub x: f64,
+    /// Of v₀.
+    pub v: f64,
+    /// Of k·x_eⁿ (eq 6).
+    pub f: f64,
+}
+
+impl ImpactSolution {
+    /// The ratios of `other`'s scales (x_e, x_e/v₀, v₀, k·x_eⁿ) to this solution's: what moves
+    /// this one onto `other` when [`ImpactSolution::similar_at`] made it.
+    pub fn ratios_to(&self, other: &ImpactSolution) -> Ratios {
+        let from = Scales::new(self.trajectory.law().params());
+        let to = Scales::new(other.trajectory.law().params());
+        Ratios {
+            t: to.t / from.t,
+            x: to.x / from.x,
+            v: to.v / from.v,
+            f: to.f / from.f,
+        }
+    }
+}
+
 /// `s`, an impact under scales `from`, moved to scales `to`: x scales by x_e, ẋ by v₀, t by
 /// x_e/v₀, F by k·x_eⁿ (eqs 5–7) and energy by m·v₀²; the step counts stay.
 fn moved(s: &ImpactSummary, from: &Scales, to: &Scales) -> ImpactSummary {
