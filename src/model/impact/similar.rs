@@ -40,7 +40,7 @@ impl SimilarImpact {
         )
     }
 
-    /// The impact under `params` by scaling ([`moved`]), when they share n and e with the solved
+    /// The impact under `params` by scaling (x_e, v₀, x_e/v₀, k·x_eⁿ), when they share n and e with the solved
     /// one (`None` otherwise: solve it); a solve under `params` takes the same steps and gives
     /// the same numbers, to rounding.
     pub fn at(&self, params: &ImpactParams) -> Option<Result<ImpactSummary, ImpactError>> {
