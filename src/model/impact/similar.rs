@@ -40,9 +40,9 @@ impl SimilarImpact {
         )
     }
 
-    /// The impact under `params` by scaling (x_e, v₀, x_e/v₀, k·x_eⁿ), when they share n and e with the solved
-    /// one (`None` otherwise: solve it); a solve under `params` takes the same steps and gives
-    /// the same numbers, to rounding.
+    /// The impact under `params` by scaling (by x_e, v₀, x_e/v₀, k·x_eⁿ), when they share n and
+    /// e with the solved one (`None` otherwise: solve it); a solve under `params` takes the same
+    /// steps and gives the same numbers, to rounding.
     pub fn at(&self, params: &ImpactParams) -> Option<Result<ImpactSummary, ImpactError>> {
         if params.law.n.to_bits() != self.n.to_bits()
             || params.restitution.to_bits() != self.restitution.to_bits()
