@@ -1,8 +1,11 @@
-//! One labelled value row of the study forms (the stability step, the sweep settings), drawn as
-//! the explorer's form draws its fields: the open editor's text and cursor when it edits the row.
+//! The study forms (the stability step, the sweep, system and map settings): a labelled value
+//! row, drawn as the explorer's form draws its fields (the open editor's text and cursor when it
+//! edits the row), and the form with its help line under the rows.
 
-use ratatui::layout::Position;
+use ratatui::Frame;
+use ratatui::layout::{Position, Rect};
 use ratatui::text::{Line, Span};
+use ratatui::widgets::Paragraph;
 
 use crate::ui::app::Editor;
 use crate::ui::style::{Role, Theme};
@@ -51,4 +54,26 @@ pub fn line(row: Row, theme: Theme) -> (Line<'static>, Option<Position>) {
         Span::styled(text, theme.style(role)),
     ]);
     (line, Some(Position::new(x, row.y)))
+}
+
+/// Draws a form's `lines` in `area` with the line under them: the open editor's refusal where it
+/// has one, else `hint`; and the terminal cursor where the edited row put it.
+pub fn draw_form(
+    frame: &mut Frame,
+    area: Rect,
+    mut lines: Vec<Line<'static>>,
+    editor: Option<&Editor>,
+    hint: &'static str,
+    cursor: Option<Position>,
+    theme: Theme,
+) {
+    let help = match editor.and_then(|e| e.error.as_ref()) {
+        Some(error) => Span::styled(format!("  ✗ {error}"), theme.style(Role::Error)),
+        None => Span::styled(hint, theme.style(Role::Muted)),
+    };
+    lines.push(Line::from(help));
+    frame.render_widget(Paragraph::new(lines), area);
+    if let Some(position) = cursor {
+        frame.set_cursor_position(position);
+    }
 }

@@ -25,7 +25,7 @@ use crate::ui::style::{Role, Theme};
 use crate::ui::tab::Tab;
 use crate::ui::views::system::settings::{NO_SYSTEM, TOML_SNIPPET};
 use crate::ui::widgets::common::{pane, span, wrap};
-use crate::ui::widgets::editable;
+use crate::ui::widgets::editable::{self, draw_form};
 
 use super::settings::{ROWS, Row, Shown, unit};
 use super::{Focus, data, fitted, look_of};
@@ -281,24 +281,14 @@ fn form(frame: &mut Frame, a: &Areas, app: &App, model: &SystemModel, roomy: boo
         lines.push(line);
         cursor = cursor.or(position);
     }
-    let help = match editor.and_then(|e| e.error.as_ref()) {
-        Some(error) => span(format!("  ✗ {error}"), theme.style(Role::Error)),
-        None => span(
-            match (on_form, ROWS.get(cursor_at)) {
-                (false, _) => "  ←→↑↓ the cursor · PgUp the form",
-                (_, Some(Row::Key(_))) => "  ← → any key of the system",
-                (_, Some(Row::Points(_))) => "  Enter types · ← → ½× 2×",
-                (_, Some(Row::Start | Row::Stops | Row::Shown)) => "  ← → the other",
-                _ => "  Enter types it (0.5 mm) · ← → 5 %",
-            },
-            theme.style(Role::Muted),
-        ),
+    let hint = match (on_form, ROWS.get(cursor_at)) {
+        (false, _) => "  ←→↑↓ the cursor · PgUp the form",
+        (_, Some(Row::Key(_))) => "  ← → any key of the system",
+        (_, Some(Row::Points(_))) => "  Enter types · ← → ½× 2×",
+        (_, Some(Row::Start | Row::Stops | Row::Shown)) => "  ← → the other",
+        _ => "  Enter types it (0.5 mm) · ← → 5 %",
     };
-    lines.push(Line::from(help));
-    frame.render_widget(Paragraph::new(lines), inner);
-    if let Some(position) = cursor {
-        frame.set_cursor_position(position);
-    }
+    draw_form(frame, inner, lines, editor, hint, cursor, theme);
 }
 
 /// A tick of an axis: its label and the grid cell nearest its value.

@@ -19,7 +19,7 @@ use crate::ui::style::{Role, Theme, sample};
 use crate::format::units::{self, sig};
 use crate::ui::views;
 use crate::ui::widgets::common::{pane, span, titled};
-use crate::ui::widgets::editable;
+use crate::ui::widgets::editable::{self, draw_form};
 use crate::ui::widgets::graph::{self, budget};
 use crate::chart::stability::{self as plot, Curve};
 
@@ -131,17 +131,8 @@ fn header(frame: &mut Frame, area: Rect, app: &App, data: Option<&StabilityData>
         .unwrap_or_default();
         first.spans.push(span(text, theme.style(Role::Normal)));
     }
-    let second = match editor.and_then(|e| e.error.as_ref()) {
-        Some(error) => Line::from(span(format!("  ✗ {error}"), theme.style(Role::Error))),
-        None => Line::from(span(
-            "  Enter types a step (2 µs, 5e-7, auto) · ← → halve / double · [ ] model",
-            theme.style(Role::Muted),
-        )),
-    };
-    frame.render_widget(Paragraph::new(vec![first, second]), area);
-    if let Some(position) = cursor {
-        frame.set_cursor_position(position);
-    }
+    let hint = "  Enter types a step (2 µs, 5e-7, auto) · ← → halve / double · [ ] model";
+    draw_form(frame, area, vec![first], editor, hint, cursor, theme);
 }
 
 /// A verdict in words with the headline errors against the reference, with its colour: the

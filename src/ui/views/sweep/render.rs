@@ -13,7 +13,7 @@ use crate::ui::layout::ScreenLayout;
 use crate::model::study::runner::{StudyKind, SweepData};
 use crate::ui::style::Role;
 use crate::ui::widgets::common::{pane, span, titled, wrap};
-use crate::ui::widgets::editable;
+use crate::ui::widgets::editable::{self, draw_form};
 use crate::ui::widgets::graph::{self, budget};
 use crate::ui::widgets::models;
 use crate::chart::sweep as plot;
@@ -74,24 +74,14 @@ fn form(frame: &mut Frame, area: Rect, app: &App, scene: &Scene, roomy: bool) {
         lines.push(line);
         cursor = cursor.or(position);
     }
-    let help = match editor.and_then(|e| e.error.as_ref()) {
-        Some(error) => span(format!("  ✗ {error}"), theme.style(Role::Error)),
-        None => span(
-            match app.views.sweep.cursor {
-                SweepField::Parameter => "  ← → any scene key",
-                SweepField::Output => "  ← → p₀, a|b, x_max, F_max, t_c, v_out, e_out",
-                SweepField::From | SweepField::To => "  Enter types it (10 mm/s) · ← → steps",
-                SweepField::Points => "  Enter: a count or auto · ← → ½× 2×",
-                SweepField::Scale => "  Enter or ← → switches log / linear",
-            },
-            theme.style(Role::Muted),
-        ),
+    let hint = match app.views.sweep.cursor {
+        SweepField::Parameter => "  ← → any scene key",
+        SweepField::Output => "  ← → p₀, a|b, x_max, F_max, t_c, v_out, e_out",
+        SweepField::From | SweepField::To => "  Enter types it (10 mm/s) · ← → steps",
+        SweepField::Points => "  Enter: a count or auto · ← → ½× 2×",
+        SweepField::Scale => "  Enter or ← → switches log / linear",
     };
-    lines.push(Line::from(help));
-    frame.render_widget(Paragraph::new(lines), inner);
-    if let Some(position) = cursor {
-        frame.set_cursor_position(position);
-    }
+    draw_form(frame, inner, lines, editor, hint, cursor, theme);
 }
 
 /// The onset velocities, what failed, why nothing is drawn.

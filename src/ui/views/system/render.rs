@@ -16,7 +16,7 @@ use crate::ui::app::{App, Mode};
 use crate::ui::layout::{ScreenLayout, left_width};
 use crate::ui::style::Role;
 use crate::ui::widgets::common::{pane, span, wrap};
-use crate::ui::widgets::editable;
+use crate::ui::widgets::editable::{self, draw_form};
 use crate::ui::widgets::graph::{self, budget};
 
 use super::settings::{NO_SYSTEM, Row, SYSTEM_PRESETS, Settings, TOML_SNIPPET};
@@ -82,22 +82,12 @@ fn form(frame: &mut Frame, area: Rect, app: &App, model: &SystemModel, rows: &[R
         lines.push(line);
         cursor = cursor.or(position);
     }
-    let help = match editor.and_then(|e| e.error.as_ref()) {
-        Some(error) => span(format!("  ✗ {error}"), theme.style(Role::Error)),
-        None => span(
-            match rows.get(cursor_at) {
-                Some(Row::DiagramKey) => "  ← → any key of the system",
-                Some(Row::Values) => "  Enter types · ← → ½× 2×",
-                _ => "  Enter types it (0.5 mm) · ← → 5 %",
-            },
-            theme.style(Role::Muted),
-        ),
+    let hint = match rows.get(cursor_at) {
+        Some(Row::DiagramKey) => "  ← → any key of the system",
+        Some(Row::Values) => "  Enter types · ← → ½× 2×",
+        _ => "  Enter types it (0.5 mm) · ← → 5 %",
     };
-    lines.push(Line::from(help));
-    frame.render_widget(Paragraph::new(lines), inner);
-    if let Some(position) = cursor {
-        frame.set_cursor_position(position);
-    }
+    draw_form(frame, inner, lines, editor, hint, cursor, theme);
 }
 
 /// On a scene without `[system]`: the system presets whose table Enter adds.
