@@ -13,9 +13,8 @@ use super::{
 #[derive(Debug, Clone)]
 pub struct SimilarImpact {
     summary: ImpactSummary,
+    params: ImpactParams,
     scales: Scales,
-    n: f64,
-    restitution: f64,
 }
 
 impl SimilarImpact {
@@ -33,9 +32,8 @@ impl SimilarImpact {
         Some(
             solve_impact(model, params, opts).map(|solution| SimilarImpact {
                 summary: solution.summary,
+                params: *params,
                 scales: Scales::new(params),
-                n: params.law.n,
-                restitution: params.restitution,
             }),
         )
     }
@@ -44,15 +42,14 @@ impl SimilarImpact {
     /// e with the solved one (`None` otherwise: solve it); a solve under `params` takes the same
     /// steps and gives the same numbers, to rounding.
     pub fn at(&self, params: &ImpactParams) -> Option<Result<ImpactSummary, ImpactError>> {
-        if params.law.n.to_bits() != self.n.to_bits()
-            || params.restitution.to_bits() != self.restitution.to_bits()
-        {
+        if !movable(&self.params, params) {
             return None;
         }
         if let Err(e) = params.validate() {
             return Some(Err(e.into()));
         }
-        Some(Ok(moved(&self.summary, &self.scales, &Scales::new(params))))
+        let ratios = Ratios::between(&self.scales, &Scales::new(params));
+        Some(Ok(moved(&self.summary, &ratios)))
     }
 }
 
@@ -64,24 +61,38 @@ impl ImpactSolution {
     /// options fix no step in seconds.
     pub fn similar_at(&self, law: &AnyLaw) -> Option<ImpactSolution> {
         let own = self.trajectory.law();
-        let (p, q) = (own.params(), law.params());
         let same = law.model() == own.model()
             && law.model().spec().similar
-            && p.law.n.to_bits() == q.law.n.to_bits()
-            && p.restitution.to_bits() == q.restitution.to_bits();
+            && movable(own.params(), law.params());
         if !same {
             return None;
         }
         let (from, to) = (Scales::of_law(own), Scales::of_law(law));
+        let ratios = Ratios::between(&from, &to);
         Some(ImpactSolution {
-            summary: moved(&self.summary, &from, &to),
-            trajectory: self.trajectory.rescaled(*law, to),
+            summary: moved(&self.summary, &ratios),
+            trajectory: self.trajectory.rescaled(*law, to, &ratios),
         })
+    }
+
+    /// The ratios of `other`'s scales to this solution's: what moves this one onto `other` when
+    /// [`ImpactSolution::similar_at`] made it.
+    pub fn ratios_to(&self, other: &ImpactSolution) -> Ratios {
+        Ratios::between(
+            &Scales::new(self.trajectory.law().params()),
+            &Scales::new(other.trajectory.law().params()),
+        )
     }
 }
 
+/// Whether a similar row's impact under `from` moves to `to`: the same n and e, to the bit.
+fn movable(from: &ImpactParams, to: &ImpactParams) -> bool {
+    from.law.n.to_bits() == to.law.n.to_bits()
+        && from.restitution.to_bits() == to.restitution.to_bits()
+}
+
 /// What a similar law's impact is multiplied by to move it (docs/physics.md §6.9): time, approach,
-/// velocity and force.
+/// velocity, force and energy.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ratios {
     /// Of x_e/v₀.
@@ -92,31 +103,27 @@ pub struct Ratios {
     pub v: f64,
     /// Of k·x_eⁿ (eq 6).
     pub f: f64,
+    /// Of m·v₀².
+    pub energy: f64,
 }
 
-impl ImpactSolution {
-    /// The ratios of `other`'s scales (x_e, x_e/v₀, v₀, k·x_eⁿ) to this solution's: what moves
-    /// this one onto `other` when [`ImpactSolution::similar_at`] made it.
-    pub fn ratios_to(&self, other: &ImpactSolution) -> Ratios {
-        let from = Scales::new(self.trajectory.law().params());
-        let to = Scales::new(other.trajectory.law().params());
+impl Ratios {
+    /// The ratios of scales `to` to scales `from`.
+    pub(crate) fn between(from: &Scales, to: &Scales) -> Ratios {
         Ratios {
             t: to.t / from.t,
             x: to.x / from.x,
             v: to.v / from.v,
             f: to.f / from.f,
+            energy: (to.mass * to.v * to.v) / (from.mass * from.v * from.v),
         }
     }
 }
 
-/// `s`, an impact under scales `from`, moved to scales `to`: x scales by x_e, ẋ by v₀, t by
-/// x_e/v₀, F by k·x_eⁿ (eqs 5–7) and energy by m·v₀²; the step counts stay.
-fn moved(s: &ImpactSummary, from: &Scales, to: &Scales) -> ImpactSummary {
-    let x = to.x / from.x;
-    let v = to.v / from.v;
-    let t = to.t / from.t;
-    let f = to.f / from.f;
-    let energy = (to.mass * to.v * to.v) / (from.mass * from.v * from.v);
+/// `s` moved by `r`: x scales by x_e, ẋ by v₀, t by x_e/v₀, F by k·x_eⁿ (eqs 5–7) and energy
+/// by m·v₀²; the step counts stay.
+fn moved(s: &ImpactSummary, r: &Ratios) -> ImpactSummary {
+    let (x, v, t, f) = (r.x, r.v, r.t, r.f);
     ImpactSummary {
         x_max: s.x_max * x,
         t_x_max: s.t_x_max * t,
@@ -125,7 +132,7 @@ fn moved(s: &ImpactSummary, from: &Scales, to: &Scales) -> ImpactSummary {
         t_contact: s.t_contact * t,
         v_out: s.v_out * v,
         x_residual: s.x_residual * x,
-        energy_dissipated: s.energy_dissipated * energy,
+        energy_dissipated: s.energy_dissipated * r.energy,
         tensile_cutoff: s.tensile_cutoff.map(|c| TensileCutoff {
             t: c.t * t,
             x: c.x * x,
@@ -198,9 +205,8 @@ mod tests {
                 let base = varied(cylinder, 1.0, 1.0, 1.0);
                 let reference = SimilarImpact {
                     summary: solve_impact(model, &base, &opts).unwrap().summary,
+                    params: base,
                     scales: Scales::new(&base),
-                    n: base.law.n,
-                    restitution: base.restitution,
                 };
                 for (v0, mass, k) in [(1.0 / 30.0, 1.0, 1.0), (30.0, 1.0, 1.0), (0.5, 7.0, 0.2)] {
                     let p = varied(cylinder, v0, mass, k);

@@ -7,6 +7,7 @@ use crate::model::ode::{DenseOutput, State};
 
 use super::phases::{self, Run, RunOptions};
 use super::scale::Scales;
+use super::similar::Ratios;
 use super::{ImpactSummary, Sample};
 
 /// Both phases' dense outputs, in scaled variables.
@@ -149,13 +150,12 @@ impl Trajectory {
         traj
     }
 
-    /// These curves moved to `law`, a similar law's impact under other parameters (docs/physics.md
-    /// §6.9): the dense outputs are in scaled variables and stay, the scales and the extrema move.
+    /// These curves moved to `law` with `scales`, `r` from this trajectory's scales (a similar
+    /// law's impact under other parameters, docs/physics.md §6.9): the dense outputs are in
+    /// scaled variables and stay, the scales and the extrema move.
     /// Curves integrated already are kept (equal, to rounding, to integrating them again).
-    pub(crate) fn rescaled(&self, law: AnyLaw, scales: Scales) -> Self {
-        let from = &self.scales;
-        let (x, v, t) = (scales.x / from.x, scales.v / from.v, scales.t / from.t);
-        let f = scales.f / from.f;
+    pub(crate) fn rescaled(&self, law: AnyLaw, scales: Scales, r: &Ratios) -> Self {
+        let (x, v, t, f) = (r.x, r.v, r.t, r.f);
         let moved = |lock: &OnceLock<Curves>| {
             lock.get().map_or_else(OnceLock::new, |c| {
                 OnceLock::from(Curves {
