@@ -270,7 +270,9 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             }
         })
         .collect();
-    share(&mut strokes, (dx, dy), (plot.width, plot.height));
+    // Dots a cell are powers of two (braille's 2 × 4, or 1).
+    let shift = (dx.trailing_zeros(), dy.trailing_zeros());
+    share(&mut strokes, shift, (plot.width, plot.height));
     let canvas = Canvas::default()
         .marker(marker.marker())
         .x_bounds(chart.x.range)

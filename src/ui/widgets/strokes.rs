@@ -55,9 +55,14 @@ pub fn trace(
         // other side's dot the nearest to the line (a tie away from `from`); the last is `to`.
         let (dx, dy) = (to.0 - from.0, to.1 - from.1);
         let steps = dx.abs().max(dy.abs());
-        let (mut across, mut down) = (Along::new(dx, steps), Along::new(dy, steps));
-        for _ in 0..steps {
-            pen.put((from.0 + across.step(), from.1 + down.step()), out);
+        if steps == 1 {
+            // Most samples lie a dot from the last: the step is `to` itself.
+            pen.put(to, out);
+        } else {
+            let (mut across, mut down) = (Along::new(dx, steps), Along::new(dy, steps));
+            for _ in 0..steps {
+                pen.put((from.0 + across.step(), from.1 + down.step()), out);
+            }
         }
         from = to;
     }
@@ -90,21 +95,21 @@ impl Along {
         self.count += self.rise;
         if self.count >= self.run {
             self.count -= self.run;
-            self.at += 1;
+            self.at += self.sign;
         }
-        self.sign * self.at
+        self.at
     }
 }
 
-/// Puts the dots of one run in its pattern: counts every new dot along it, keeps those the
-/// pattern draws that lie on the grid.
+/// Puts the dots of one run in its pattern: counts every dot along it, keeps those the pattern
+/// draws that lie on the grid. The lines of [`trace`] never put a dot twice in a row: each step
+/// moves along the longer side, and a line starts one step from the last one's end.
 struct Pen {
     on: u32,
     period: u32,
     /// Dots counted so far, modulo the period.
     phase: u32,
-    last: Option<(i64, i64)>,
-    size: (i64, i64),
+    size: (u64, u64),
 }
 
 impl Pen {
@@ -114,22 +119,18 @@ impl Pen {
             on: u32::from(on),
             period: u32::from(on) + u32::from(off),
             phase: 0,
-            last: None,
-            size: (i64::from(size.0), i64::from(size.1)),
+            size: (u64::from(size.0), u64::from(size.1)),
         }
     }
 
     fn put(&mut self, d: (i64, i64), out: &mut Vec<(u16, u16)>) {
-        if self.last == Some(d) {
-            return;
-        }
-        self.last = Some(d);
         let draw = self.phase < self.on;
         self.phase += 1;
         if self.phase >= self.period {
             self.phase = 0;
         }
-        let inside = (0..self.size.0).contains(&d.0) && (0..self.size.1).contains(&d.1);
+        // A negative coordinate wraps to beyond the grid.
+        let inside = (d.0 as u64) < self.size.0 && (d.1 as u64) < self.size.1;
         if draw && inside {
             out.push((d.0 as u16, d.1 as u16));
         }
@@ -151,15 +152,16 @@ fn nearest(v: f64) -> i64 {
 /// curve reads as a dash of it, where curves taking turns cell by cell read as noise.
 const BLOCK: (u16, u16) = (3, 2);
 
-/// Which stroke shows in each cell of `cells` (columns, rows) of `per_cell` dots: where several
-/// strokes have dots in a cell, the one whose key scores highest in the cell's [`BLOCK`]
-/// (rendezvous hashing: each of k strokes owns about 1/k of the blocks they share, and removing
-/// one stroke changes only the cells it owned); each stroke keeps only its dots in the cells it
-/// owns.
-pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
-    let index = |&(x, y): &(u16, u16)| {
-        usize::from(y / per_cell.1) * usize::from(cells.0) + usize::from(x / per_cell.0)
-    };
+/// Which stroke shows in each cell of `cells` (columns, rows) of 2^`shift` dots across and down
+/// (braille's 2 × 4 is (1, 2)): where several strokes have dots in a cell, the one whose key
+/// scores highest in the cell's [`BLOCK`] (rendezvous hashing: each of k strokes owns about 1/k
+/// of the blocks they share, and removing one stroke changes only the cells it owned); each stroke
+/// keeps only its dots in the cells it owns.
+pub fn share(strokes: &mut [Stroke], shift: (u32, u32), cells: (u16, u16)) {
+    // Shifts, not divisions: every dot of every curve passes here twice a frame.
+    let cell = |&(x, y): &(u16, u16)| (x >> shift.0, y >> shift.1);
+    let index =
+        |(column, row): (u16, u16)| usize::from(row) * usize::from(cells.0) + usize::from(column);
     let mut owner: Vec<Option<(u64, usize)>> =
         vec![None; usize::from(cells.0) * usize::from(cells.1)];
     for (s, stroke) in strokes.iter().enumerate() {
@@ -167,7 +169,8 @@ pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
         // it is scored once for the run of them.
         let mut last = usize::MAX;
         for dot in &stroke.dots {
-            let i = index(dot);
+            let (x, y) = cell(dot);
+            let i = index((x, y));
             if i == last {
                 continue;
             }
@@ -175,7 +178,6 @@ pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
             let Some(slot) = owner.get_mut(i) else {
                 continue;
             };
-            let (x, y) = (dot.0 / per_cell.0, dot.1 / per_cell.1);
             let block = (u64::from(y / BLOCK.1) << 32) | u64::from(x / BLOCK.0);
             let score = mix(block ^ stroke.key.rotate_left(17));
             if slot.is_none_or(|(best, _)| score > best) {
@@ -187,7 +189,7 @@ pub fn share(strokes: &mut [Stroke], per_cell: (u16, u16), cells: (u16, u16)) {
         // The cell of the last dot and whether the stroke owns it.
         let mut last = (usize::MAX, false);
         stroke.dots.retain(|dot| {
-            let i = index(dot);
+            let i = index(cell(dot));
             if i != last.0 {
                 let owned = owner.get(i).copied().flatten().is_some_and(|(_, o)| o == s);
                 last = (i, owned);
@@ -301,13 +303,13 @@ mod tests {
             dots: dots.clone(),
         };
         let mut three = [stroke("a"), stroke("b"), stroke("c")];
-        share(&mut three, (2, 4), (200, 2));
+        share(&mut three, (1, 2), (200, 2));
         for s in &three {
             let cells = s.dots.len() / 2;
             assert!((45..=90).contains(&cells), "{cells} of 200");
         }
         let mut two = [stroke("a"), stroke("b")];
-        share(&mut two, (2, 4), (200, 2));
+        share(&mut two, (1, 2), (200, 2));
         for (before, after) in three.iter().zip(&two) {
             assert!(before.dots.iter().all(|d| after.dots.contains(d)));
         }
