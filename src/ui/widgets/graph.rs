@@ -9,8 +9,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::canvas::{Canvas, Points};
-use ratatui::widgets::{Block, Widget};
+use ratatui::widgets::Block;
 
 use crate::chart::layout::dot;
 use crate::chart::{Chart, Ink, place_ticks};
@@ -18,7 +17,8 @@ use crate::ui::style::MarkerStyle;
 use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
-use super::strokes::{Stroke, Strokes, key_of, share, trace};
+use super::dots::Dots;
+use super::strokes::{Stroke, key_of, share, trace};
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -215,8 +215,8 @@ fn glyphs(chart: &Chart, plot: Rect, theme: Theme, marker: MarkerStyle) -> Vec<G
 type GlyphAt = ((u16, u16), char, Ink, bool);
 
 /// The rules (dotted: every other dot, so curves crossing them stay visible) and the curves, on
-/// ratatui's canvas over the plot, each cell in the style of the ink painted last in it, and the
-/// glyphs over them.
+/// the plot's dots, each cell in the style of the ink painted last in it, and the glyphs over
+/// them.
 fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: MarkerStyle) {
     let increasing = |[lo, hi]: [f64; 2]| lo.is_finite() && hi.is_finite() && hi > lo;
     if !increasing(chart.x.range) || !increasing(chart.y.range) {
@@ -273,19 +273,20 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
     // Dots a cell are powers of two (braille's 2 × 4, or 1).
     let shift = (dx.trailing_zeros(), dy.trailing_zeros());
     share(&mut strokes, shift, (plot.width, plot.height));
-    let canvas = Canvas::default()
-        .marker(marker.marker())
-        .x_bounds(chart.x.range)
-        .y_bounds(chart.y.range)
-        .paint(|ctx| {
-            for (points, color) in &rules {
-                ctx.draw(&Points::new(points, *color));
+    let mut painted = Dots::new((plot.width, plot.height), marker);
+    for (points, color) in &rules {
+        for &p in points {
+            if let Some((x, y)) = painted.dot_of(chart.x.range, chart.y.range, p) {
+                painted.paint(x, y, *color);
             }
-            ctx.draw(&Strokes(&strokes));
-        });
+        }
+    }
+    for stroke in &strokes {
+        for &(x, y) in &stroke.dots {
+            painted.paint(usize::from(x), usize::from(y), stroke.color);
+        }
+    }
     let area = Rect::new(0, 0, plot.width, plot.height);
-    let mut dotted = Buffer::empty(area);
-    canvas.render(area, &mut dotted);
     let mut over = vec![None; usize::from(plot.width) * usize::from(plot.height)];
     for ((x, y), glyph, ink, bold) in glyphs(chart, plot, theme, marker) {
         let i = usize::from(y - plot.y) * usize::from(plot.width) + usize::from(x - plot.x);
@@ -302,11 +303,11 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             buf[at]
                 .set_char(*glyph)
                 .set_style(styled(theme, *ink, *bold, false));
-        } else if let Some((ink, bold)) = inks.of(dotted[position].fg) {
+        } else if let Some((symbol, color)) = painted.cell(i)
+            && let Some((ink, bold)) = inks.of(color)
+        {
             let style = styled(theme, ink, bold && !dim_dots, dim_dots);
-            buf[at]
-                .set_symbol(dotted[position].symbol())
-                .set_style(style);
+            buf[at].set_char(symbol).set_style(style);
         }
     }
 }

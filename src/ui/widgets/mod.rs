@@ -2,6 +2,7 @@
 //! status line and the overlays (help, engines, presets, prompts), each a pure function of `&App`.
 
 pub(crate) mod common;
+mod dots;
 pub(crate) mod editable;
 pub mod engine;
 pub mod graph;

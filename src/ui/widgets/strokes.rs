@@ -6,7 +6,6 @@
 //! of the cells it shares; a cell shows only its owner's dots, so the owner's pattern reads in it.
 
 use ratatui::style::Color;
-use ratatui::widgets::canvas::{Painter, Shape};
 
 use crate::chart::Dash;
 
@@ -204,19 +203,6 @@ fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^ (z >> 31)
-}
-
-/// Strokes painted dot by dot on ratatui's canvas.
-pub struct Strokes<'a>(pub &'a [Stroke]);
-
-impl Shape for Strokes<'_> {
-    fn draw(&self, painter: &mut Painter) {
-        for stroke in self.0 {
-            for &(x, y) in &stroke.dots {
-                painter.paint(usize::from(x), usize::from(y), stroke.color);
-            }
-        }
-    }
 }
 
 #[cfg(test)]
