@@ -16,7 +16,25 @@ pub struct Dots {
     /// Dots a cell across and down, as powers of two: braille's 2 × 4 is (1, 2).
     shift: (u32, u32),
     mark: Option<char>,
-    painted: Vec<(u8, Option<Color>)>,
+    painted: Vec<Painted>,
+}
+
+/// One cell: the dots painted on it by anyone, those of the stroke that owns it (see
+/// [`Dots::claim`]), and the colour painted last.
+#[derive(Clone, Copy, Default)]
+struct Painted {
+    dots: u8,
+    owned: u8,
+    color: Option<Color>,
+    /// The owner's score and index.
+    owner: Option<(u64, usize)>,
+}
+
+/// A dot's cell (column, row), its index row by row, and the dot's bit in it.
+pub struct At {
+    pub cell: (u16, u16),
+    pub index: usize,
+    bit: u8,
 }
 
 impl Dots {
@@ -32,7 +50,7 @@ impl Dots {
             cells,
             shift,
             mark,
-            painted: vec![(0, None); cells.0 * cells.1],
+            painted: vec![Painted::default(); cells.0 * cells.1],
         }
     }
 
@@ -65,26 +83,55 @@ impl Dots {
         Some((x, y))
     }
 
+    /// Where dot (`x`, `y`), from the top left, lies; `None` off the plot.
+    pub fn at(&self, x: usize, y: usize) -> Option<At> {
+        let (column, row) = (x >> self.shift.0, y >> self.shift.1);
+        if column >= self.cells.0 || row >= self.cells.1 {
+            return None;
+        }
+        // Braille's bits: the columns' dots of each row in turn, as ratatui's table has them.
+        let across = x & ((1 << self.shift.0) - 1);
+        let down = y & ((1 << self.shift.1) - 1);
+        Some(At {
+            cell: (column as u16, row as u16),
+            index: row * self.cells.0 + column,
+            bit: 1 << (across + (down << self.shift.0)),
+        })
+    }
+
     /// Paints dot (`x`, `y`), from the top left, in `color`; a dot off the plot is left out.
     pub fn paint(&mut self, x: usize, y: usize, color: Color) {
-        let (column, row) = (x >> self.shift.0, y >> self.shift.1);
-        if column >= self.cells.0 {
-            return;
+        if let Some(at) = self.at(x, y) {
+            let cell = &mut self.painted[at.index];
+            cell.dots |= at.bit;
+            cell.color = Some(color);
         }
-        if let Some(cell) = self.painted.get_mut(row * self.cells.0 + column) {
-            // Braille's bits: the columns' dots of each row in turn, as ratatui's table has them.
-            let across = x & ((1 << self.shift.0) - 1);
-            let down = y & ((1 << self.shift.1) - 1);
-            cell.0 |= 1 << (across + (down << self.shift.0));
-            cell.1 = Some(color);
+    }
+
+    /// Paints the dot `at` for stroke `stroke` in `color` where the stroke's `score` for its cell
+    /// is the highest so far (the first of equal ones): a cell shows only its owner's dots, on
+    /// those [`Dots::paint`] put there, in its colour.
+    pub fn claim(&mut self, at: &At, color: Color, (score, stroke): (u64, usize)) {
+        let cell = &mut self.painted[at.index];
+        match cell.owner {
+            Some((_, owner)) if owner == stroke => cell.owned |= at.bit,
+            Some((best, _)) if score <= best => {}
+            _ => {
+                cell.owner = Some((score, stroke));
+                cell.owned = at.bit;
+                cell.color = Some(color);
+            }
         }
     }
 
     /// The symbol and colour of cell `i` (row by row), if any dot of it is painted.
     pub fn cell(&self, i: usize) -> Option<(char, Color)> {
-        let &(pattern, color) = self.painted.get(i)?;
+        let cell = self.painted.get(i)?;
+        let pattern = cell.dots | cell.owned;
         let symbol = self.mark.unwrap_or(BRAILLE[usize::from(pattern)]);
-        color.filter(|_| pattern != 0).map(|color| (symbol, color))
+        cell.color
+            .filter(|_| pattern != 0)
+            .map(|color| (symbol, color))
     }
 }
 

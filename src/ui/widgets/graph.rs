@@ -18,7 +18,7 @@ use crate::ui::style::{Role, Theme, sample};
 
 use super::common::wrap;
 use super::dots::Dots;
-use super::strokes::{Stroke, key_of, share, trace};
+use super::strokes::{Stroke, key_of, paint, trace};
 
 /// Where the parts of a chart go inside its frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -242,13 +242,14 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             .collect();
         rules.push((points, inks.color(rule.ink, false)));
     }
-    // Each curve's dots in its pattern, then each cell shared by curves left to one of them.
+    // Each curve's dots in its pattern, painted with each cell shared by curves left to one of
+    // them.
     let grid = (plot.width * dx, plot.height * dy);
     let to_grid = |p: (f64, f64)| {
         let (x, y) = dot_of(chart, dots, p);
         (x, dots.1 - 1.0 - y)
     };
-    let mut strokes: Vec<Stroke> = chart
+    let strokes: Vec<Stroke> = chart
         .series
         .iter()
         .map(|series| {
@@ -270,9 +271,6 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             }
         })
         .collect();
-    // Dots a cell are powers of two (braille's 2 × 4, or 1).
-    let shift = (dx.trailing_zeros(), dy.trailing_zeros());
-    share(&mut strokes, shift, (plot.width, plot.height));
     let mut painted = Dots::new((plot.width, plot.height), marker);
     for (points, color) in &rules {
         for &p in points {
@@ -281,11 +279,7 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             }
         }
     }
-    for stroke in &strokes {
-        for &(x, y) in &stroke.dots {
-            painted.paint(usize::from(x), usize::from(y), stroke.color);
-        }
-    }
+    paint(&strokes, &mut painted);
     let area = Rect::new(0, 0, plot.width, plot.height);
     let mut over = vec![None; usize::from(plot.width) * usize::from(plot.height)];
     for ((x, y), glyph, ink, bold) in glyphs(chart, plot, theme, marker) {

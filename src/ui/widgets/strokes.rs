@@ -9,6 +9,8 @@ use ratatui::style::Color;
 
 use crate::chart::Dash;
 
+use super::dots::Dots;
+
 /// One curve's dots on the canvas grid (x from the left, y from the top, in dots), in its colour.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stroke {
@@ -151,50 +153,26 @@ fn nearest(v: f64) -> i64 {
 /// curve reads as a dash of it, where curves taking turns cell by cell read as noise.
 const BLOCK: (u16, u16) = (3, 2);
 
-/// Which stroke shows in each cell of `cells` (columns, rows) of 2^`shift` dots across and down
-/// (braille's 2 × 4 is (1, 2)): where several strokes have dots in a cell, the one whose key
-/// scores highest in the cell's [`BLOCK`] (rendezvous hashing: each of k strokes owns about 1/k
-/// of the blocks they share, and removing one stroke changes only the cells it owned); each stroke
-/// keeps only its dots in the cells it owns.
-pub fn share(strokes: &mut [Stroke], shift: (u32, u32), cells: (u16, u16)) {
-    // Shifts, not divisions: every dot of every curve passes here twice a frame.
-    let cell = |&(x, y): &(u16, u16)| (x >> shift.0, y >> shift.1);
-    let index =
-        |(column, row): (u16, u16)| usize::from(row) * usize::from(cells.0) + usize::from(column);
-    let mut owner: Vec<Option<(u64, usize)>> =
-        vec![None; usize::from(cells.0) * usize::from(cells.1)];
+/// Paints `strokes` on `dots`, each cell where several have dots left to one of them: the one
+/// whose key scores highest in the cell's [`BLOCK`] (rendezvous hashing: each of k strokes owns
+/// about 1/k of the blocks they share, and removing one stroke changes only the cells it owned).
+/// A cell shows only its owner's dots, in its colour.
+pub fn paint(strokes: &[Stroke], dots: &mut Dots) {
     for (s, stroke) in strokes.iter().enumerate() {
         // A stroke's consecutive dots mostly lie in one cell, whose score is the same for each:
         // it is scored once for the run of them.
-        let mut last = usize::MAX;
-        for dot in &stroke.dots {
-            let (x, y) = cell(dot);
-            let i = index((x, y));
-            if i == last {
-                continue;
-            }
-            last = i;
-            let Some(slot) = owner.get_mut(i) else {
+        let mut last = (usize::MAX, 0);
+        for &(x, y) in &stroke.dots {
+            let Some(at) = dots.at(usize::from(x), usize::from(y)) else {
                 continue;
             };
-            let block = (u64::from(y / BLOCK.1) << 32) | u64::from(x / BLOCK.0);
-            let score = mix(block ^ stroke.key.rotate_left(17));
-            if slot.is_none_or(|(best, _)| score > best) {
-                *slot = Some((score, s));
+            if at.index != last.0 {
+                let (column, row) = at.cell;
+                let block = (u64::from(row / BLOCK.1) << 32) | u64::from(column / BLOCK.0);
+                last = (at.index, mix(block ^ stroke.key.rotate_left(17)));
             }
+            dots.claim(&at, stroke.color, (last.1, s));
         }
-    }
-    for (s, stroke) in strokes.iter_mut().enumerate() {
-        // The cell of the last dot and whether the stroke owns it.
-        let mut last = (usize::MAX, false);
-        stroke.dots.retain(|dot| {
-            let i = index(cell(dot));
-            if i != last.0 {
-                let owned = owner.get(i).copied().flatten().is_some_and(|(_, o)| o == s);
-                last = (i, owned);
-            }
-            last.1
-        });
     }
 }
 
@@ -208,6 +186,7 @@ fn mix(mut z: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ui::style::MarkerStyle;
 
     fn line(dash: Dash) -> Vec<(u16, u16)> {
         let mut out = Vec::new();
@@ -282,24 +261,42 @@ mod tests {
     /// one leaves the others' cells as they were.
     #[test]
     fn shared_cells_are_shared_fairly_and_stay_put() {
-        let dots: Vec<(u16, u16)> = (0..400).map(|x| (x, 1)).collect();
-        let stroke = |name: &str| Stroke {
-            color: Color::Reset,
+        let line: Vec<(u16, u16)> = (0..400).map(|x| (x, 1)).collect();
+        let stroke = |name: &str, ink: u8| Stroke {
+            color: Color::Indexed(ink),
             key: key_of(name),
-            dots: dots.clone(),
+            dots: line.clone(),
         };
-        let mut three = [stroke("a"), stroke("b"), stroke("c")];
-        share(&mut three, (1, 2), (200, 2));
-        for s in &three {
-            let cells = s.dots.len() / 2;
+        let owners = |strokes: &[Stroke]| -> Vec<Option<(char, Color)>> {
+            let mut dots = Dots::new((200, 2), MarkerStyle::Braille);
+            paint(strokes, &mut dots);
+            (0..400).map(|i| dots.cell(i)).collect()
+        };
+        let three = owners(&[stroke("a", 1), stroke("b", 2), stroke("c", 3)]);
+        for ink in 1..=3 {
+            let cells = three
+                .iter()
+                .filter(|c| c.is_some_and(|(_, color)| color == Color::Indexed(ink)))
+                .count();
             assert!((45..=90).contains(&cells), "{cells} of 200");
         }
-        let mut two = [stroke("a"), stroke("b")];
-        share(&mut two, (1, 2), (200, 2));
+        // Each cell of the line shows both of its dots, its owner's: ⠒ (dots 2 and 5).
+        assert!(
+            three[..200]
+                .iter()
+                .all(|c| c.is_some_and(|(symbol, _)| symbol == '⠒'))
+        );
+        assert!(
+            three[200..].iter().all(Option::is_none),
+            "the row below is blank"
+        );
+        let two = owners(&[stroke("a", 1), stroke("b", 2)]);
         for (before, after) in three.iter().zip(&two) {
-            assert!(before.dots.iter().all(|d| after.dots.contains(d)));
+            if let Some((_, color)) = before
+                && *color != Color::Indexed(3)
+            {
+                assert_eq!(after.map(|(_, c)| c), Some(*color), "a cell kept its owner");
+            }
         }
-        let total: usize = three.iter().map(|s| s.dots.len()).sum();
-        assert_eq!(total, 400, "each cell shows its owner's dots");
     }
 }
