@@ -85,11 +85,12 @@ struct Build {
 }
 
 fn run(builds: &[Build], samples: usize) -> Result<(), String> {
-    let dir = std::env::temp_dir().join(format!("hertz-pty-bench-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let result = measure_all(builds, samples, &dir);
-    let _ = std::fs::remove_dir_all(&dir);
-    result
+    // Removed when dropped, a panic's unwinding included.
+    let dir = tempfile::Builder::new()
+        .prefix("hertz-pty-bench-")
+        .tempdir()
+        .map_err(|e| format!("cannot create a temporary folder: {e}"))?;
+    measure_all(builds, samples, dir.path())
 }
 
 fn measure_all(builds: &[Build], samples: usize, dir: &Path) -> Result<(), String> {
