@@ -40,9 +40,10 @@ fn labels(tab: Tab, compact: bool) -> [String; 3] {
 /// Whether the labels with their spaces are wider than a bar of `width` columns (at 80 columns
 /// with seven views): then they go without.
 fn compact(width: u16) -> bool {
+    // The widths of `labels(tab, false)`, counted rather than written out: the bar is drawn
+    // every frame.
     let wide: usize = Tab::all()
-        .flat_map(|tab| labels(tab, false))
-        .map(|l| l.chars().count())
+        .map(|tab| 2 * usize::from(tab.key().is_some()) + tab.title().chars().count() + 3)
         .sum();
     wide > usize::from(width)
 }
@@ -58,4 +59,21 @@ pub fn tab_at(column: u16, width: u16) -> Option<Tab> {
         start = end;
         hit
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The counted widths are those of the labels as written.
+    #[test]
+    fn the_bar_is_compact_where_the_written_labels_do_not_fit() {
+        let wide: usize = Tab::all()
+            .flat_map(|tab| labels(tab, false))
+            .map(|l| l.chars().count())
+            .sum();
+        let wide = u16::try_from(wide).unwrap();
+        assert!(compact(wide - 1));
+        assert!(!compact(wide));
+    }
 }
