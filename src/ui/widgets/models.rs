@@ -6,8 +6,7 @@
 use ratatui::Frame;
 use ratatui::layout::{Position, Rect};
 use ratatui::style::Modifier;
-use ratatui::text::Line;
-use ratatui::widgets::Paragraph;
+use ratatui::text::{Line, Text};
 
 use crate::chart::{Ink, model_glyph};
 use crate::model::ForceModel;
@@ -125,7 +124,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             Row::Model(model) => model_line(app, theme, *model, (names, name_width), &fits),
         })
         .collect();
-    frame.render_widget(Paragraph::new(lines), inner);
+    frame.render_widget(Text::from(lines), inner);
 }
 
 fn model_line(

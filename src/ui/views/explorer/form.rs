@@ -2,8 +2,7 @@
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Position, Rect};
-use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
+use ratatui::text::{Line, Span, Text};
 
 use crate::model::scene_key::{BodyIndex, SceneKey};
 use crate::ui::app::{App, Cursor, EditTarget, Mode, Scroll};
@@ -280,7 +279,7 @@ fn draw_description(frame: &mut Frame, area: Rect, app: &App) {
         .into_iter()
         .map(|line| Line::from(span(format!(" {line}"), app.theme.style(Role::Muted))))
         .collect();
-    frame.render_widget(Paragraph::new(lines), area);
+    frame.render_widget(Text::from(lines), area);
 }
 
 /// Whether `field` holds a value the scene's user did not give (a preset's stand-in).
@@ -355,7 +354,7 @@ fn draw_rows(frame: &mut Frame, area: Rect, app: &App, rows: &[Row], offset: usi
         };
         lines.push(line);
     }
-    frame.render_widget(Paragraph::new(lines), area);
+    frame.render_widget(Text::from(lines), area);
     if let Some(position) = cursor_position {
         frame.set_cursor_position(position);
     }

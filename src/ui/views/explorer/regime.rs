@@ -3,8 +3,7 @@
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
-use ratatui::text::{Line, Span};
-use ratatui::widgets::Paragraph;
+use ratatui::text::{Line, Span, Text};
 
 use crate::model::pressure::Regime;
 use crate::format::recommendation;
@@ -54,7 +53,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
     }
     let Some(valid) = &app.valid else {
         let lines = flow(items, width, max_lines, Span::raw("  "));
-        frame.render_widget(Paragraph::new(lines), inner);
+        frame.render_widget(Text::from(lines), inner);
         return;
     };
     let onset = &valid.quasistatic.onset;
@@ -176,5 +175,5 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             theme.style(Role::Muted),
         )));
     }
-    frame.render_widget(Paragraph::new(lines), inner);
+    frame.render_widget(Text::from(lines), inner);
 }
