@@ -5,7 +5,7 @@ use std::borrow::Cow;
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Modifier;
-use ratatui::text::{Line, Span};
+use ratatui::text::{Line, Span, Text};
 use ratatui::widgets::{Paragraph, Row, Table};
 
 use crate::format::{Zeros, scientific};
@@ -295,7 +295,7 @@ pub fn render(frame: &mut Frame, area: Rect, app: &App, roomy: bool) {
             Rect::new(reason_x, y, width, 1),
         );
     }
-    frame.render_widget(Paragraph::new(quasistatic_lines), q_area);
+    frame.render_widget(Text::from(quasistatic_lines), q_area);
     if !roomy {
         // The compact header has no room for units: name them once, in the title row.
         let mut notes: Vec<&str> = Vec::new();
