@@ -10,7 +10,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 count() {
-  local dir=$1
+  local dir=$1 label=$2
   if [[ ! -f $dir/benches/frame.rs ]]; then
     cp "$here/benches/frame.rs" "$dir/benches/frame.rs"
     printf '\n[[bench]]\nname = "frame"\nharness = false\n' >>"$dir/Cargo.toml"
@@ -29,9 +29,9 @@ for line in sys.stdin:
   local none hundred
   none=$(ir 0)
   hundred=$(ir 100)
-  echo "$dir: $(((hundred - none) / 100)) instructions a frame"
+  echo "$label: $(((hundred - none) / 100)) instructions a frame"
 }
 if [[ ${1:-} == --old ]]; then
-  count "$(cd "$2" && pwd)"
+  count "$(cd "$2" && pwd)" "$2"
 fi
-count "$here"
+count "$here" "this checkout"
