@@ -24,7 +24,8 @@ use hertz_tui::ui::app::App;
 use hertz_tui::ui::keymap::action_for_event;
 use hertz_tui::ui::style::Theme;
 use hertz_tui::ui::update::update;
-use hertz_tui::ui::{MarkerStyle, render, worker};
+use hertz_tui::ui::worker::settle;
+use hertz_tui::ui::{MarkerStyle, render};
 use ratatui::backend::CrosstermBackend;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 use ratatui::layout::Rect;
@@ -44,19 +45,6 @@ impl Write for Held {
 
     fn flush(&mut self) -> std::io::Result<()> {
         Ok(())
-    }
-}
-
-/// Every solve the app asked for, done on this thread, until it asks for none.
-fn settle(app: &mut App) {
-    loop {
-        let jobs = app.take_jobs();
-        if jobs.is_empty() {
-            return;
-        }
-        for job in jobs {
-            update(app, Action::Solved(Ok(worker::solve(&job))));
-        }
     }
 }
 

@@ -28,17 +28,7 @@ pub(super) fn app() -> App {
 }
 
 /// Solves every queued job on this thread and feeds the outcomes back, as the worker would.
-pub(super) fn settle(app: &mut App) {
-    loop {
-        let jobs = app.take_jobs();
-        if jobs.is_empty() {
-            return;
-        }
-        for job in jobs {
-            update(app, Action::Solved(Ok(worker::solve(&job))));
-        }
-    }
-}
+pub(super) use super::worker::settle;
 
 pub(super) fn key_with(app: &mut App, code: KeyCode, modifiers: KeyModifiers) {
     let event = Event::Key(KeyEvent::new(code, modifiers));

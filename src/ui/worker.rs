@@ -10,8 +10,11 @@ use crate::model::calibrate::scene_or_calibrated;
 use crate::model::force::AnyLaw;
 use crate::model::impact::{ImpactError, ImpactSolution, solve_law};
 
+use super::action::Action;
+use super::app::App;
 use super::jobs::Background;
 use super::solutions::{Job, Outcome, sampled};
+use super::update::update;
 use crate::chart::sample::Series;
 
 /// Solves one job on the calling thread, and samples its curves for the job's charts (so that
@@ -38,6 +41,20 @@ pub fn solve(job: &Job) -> Outcome {
         damping,
         elapsed,
         sampled,
+    }
+}
+
+/// Solves every job `app` has queued, on the calling thread, and reports each to it, until the
+/// reports queue none: what the solver threads do, for tests and benchmarks.
+pub fn settle(app: &mut App) {
+    loop {
+        let jobs = app.take_jobs();
+        if jobs.is_empty() {
+            return;
+        }
+        for job in jobs {
+            update(app, Action::Solved(Ok(solve(&job))));
+        }
     }
 }
 
