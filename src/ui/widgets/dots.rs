@@ -1,31 +1,31 @@
 //! A plot's cells painted dot by dot: each cell shows its dots' braille pattern (or, with one dot
-//! a cell, the marker's dot or block) in the colour painted last in it. It is what ratatui's
+//! a cell, the marker's dot or block) in the ink painted last in it. It is what ratatui's
 //! canvas draws for one layer of points, without the canvas's boxed grid, its layer and the
 //! buffer it is drawn into, which took a tenth of a chart's drawing with every law checked
 //! (docs/performance.md, key to frame).
 
-use ratatui::style::Color;
 use ratatui::symbols::braille::BRAILLE;
 
 use crate::ui::style::MarkerStyle;
 
-/// The cells of a plot, each with its dots (one bit a dot) and the colour painted last in it.
-pub struct Dots {
+/// The cells of a plot, each with its dots (one bit a dot) and the ink `P` painted last in it
+/// (the chart's ink and boldness; a colour in the tests against ratatui's canvas).
+pub struct Dots<P> {
     /// Cells across and down.
     cells: (usize, usize),
     /// Dots a cell across and down, as powers of two: braille's 2 × 4 is (1, 2).
     shift: (u32, u32),
     mark: Option<char>,
-    painted: Vec<Painted>,
+    painted: Vec<Painted<P>>,
 }
 
 /// One cell: the dots painted on it by anyone, those of the stroke that owns it (see
-/// [`Dots::claim`]), and the colour painted last.
-#[derive(Clone, Copy, Default)]
-struct Painted {
+/// [`Dots::claim`]), and the ink painted last.
+#[derive(Clone, Copy)]
+struct Painted<P> {
     dots: u8,
     owned: u8,
-    color: Option<Color>,
+    ink: Option<P>,
     /// The owner's score and index.
     owner: Option<(u64, usize)>,
 }
@@ -37,9 +37,9 @@ pub struct At {
     bit: u8,
 }
 
-impl Dots {
+impl<P: Copy> Dots<P> {
     /// A blank plot of `cells` (columns, rows) in `marker`'s dots.
-    pub fn new(cells: (u16, u16), marker: MarkerStyle) -> Dots {
+    pub fn new(cells: (u16, u16), marker: MarkerStyle) -> Dots<P> {
         let (shift, mark) = match marker {
             MarkerStyle::Braille => ((1, 2), None),
             MarkerStyle::Dot => ((0, 0), Some('•')),
@@ -50,7 +50,15 @@ impl Dots {
             cells,
             shift,
             mark,
-            painted: vec![Painted::default(); cells.0 * cells.1],
+            painted: vec![
+                Painted {
+                    dots: 0,
+                    owned: 0,
+                    ink: None,
+                    owner: None,
+                };
+                cells.0 * cells.1
+            ],
         }
     }
 
@@ -99,19 +107,19 @@ impl Dots {
         })
     }
 
-    /// Paints dot (`x`, `y`), from the top left, in `color`; a dot off the plot is left out.
-    pub fn paint(&mut self, x: usize, y: usize, color: Color) {
+    /// Paints dot (`x`, `y`), from the top left, in `ink`; a dot off the plot is left out.
+    pub fn paint(&mut self, x: usize, y: usize, ink: P) {
         if let Some(at) = self.at(x, y) {
             let cell = &mut self.painted[at.index];
             cell.dots |= at.bit;
-            cell.color = Some(color);
+            cell.ink = Some(ink);
         }
     }
 
-    /// Paints the dot `at` for stroke `stroke` in `color` where the stroke's `score` for its cell
+    /// Paints the dot `at` for stroke `stroke` in `ink` where the stroke's `score` for its cell
     /// is the highest so far (the first of equal ones): a cell shows only its owner's dots, on
-    /// those [`Dots::paint`] put there, in its colour.
-    pub fn claim(&mut self, at: &At, color: Color, (score, stroke): (u64, usize)) {
+    /// those [`Dots::paint`] put there, in its ink.
+    pub fn claim(&mut self, at: &At, ink: P, (score, stroke): (u64, usize)) {
         let cell = &mut self.painted[at.index];
         match cell.owner {
             Some((_, owner)) if owner == stroke => cell.owned |= at.bit,
@@ -119,19 +127,17 @@ impl Dots {
             _ => {
                 cell.owner = Some((score, stroke));
                 cell.owned = at.bit;
-                cell.color = Some(color);
+                cell.ink = Some(ink);
             }
         }
     }
 
-    /// The symbol and colour of cell `i` (row by row), if any dot of it is painted.
-    pub fn cell(&self, i: usize) -> Option<(char, Color)> {
+    /// The symbol and ink of cell `i` (row by row), if any dot of it is painted.
+    pub fn cell(&self, i: usize) -> Option<(char, P)> {
         let cell = self.painted.get(i)?;
         let pattern = cell.dots | cell.owned;
         let symbol = self.mark.unwrap_or(BRAILLE[usize::from(pattern)]);
-        cell.color
-            .filter(|_| pattern != 0)
-            .map(|color| (symbol, color))
+        cell.ink.filter(|_| pattern != 0).map(|ink| (symbol, ink))
     }
 }
 
@@ -140,6 +146,7 @@ mod tests {
     use super::*;
     use ratatui::buffer::Buffer;
     use ratatui::layout::Rect;
+    use ratatui::style::Color;
     use ratatui::widgets::Widget;
     use ratatui::widgets::canvas::{Canvas, Points};
 

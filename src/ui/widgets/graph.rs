@@ -7,7 +7,7 @@
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Modifier, Style};
+use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Block;
 
@@ -114,32 +114,6 @@ fn glyphs_along(theme: Theme, marker: MarkerStyle) -> bool {
 /// Cells between the glyphs set along a curve when colour cannot tell curves apart.
 const GLYPH_SPACING: f64 = 6.0;
 
-/// The inks a chart paints with, each with its boldness: the canvas paints ink `i` in
-/// `Color::Indexed(i)`, and the cells it sets take that ink's style from the theme.
-#[derive(Default)]
-struct Inks(Vec<(Ink, bool)>);
-
-impl Inks {
-    fn color(&mut self, ink: Ink, bold: bool) -> Color {
-        let i = self
-            .0
-            .iter()
-            .position(|&k| k == (ink, bold))
-            .unwrap_or_else(|| {
-                self.0.push((ink, bold));
-                self.0.len() - 1
-            });
-        Color::Indexed(u8::try_from(i).unwrap_or(u8::MAX))
-    }
-
-    fn of(&self, color: Color) -> Option<(Ink, bool)> {
-        match color {
-            Color::Indexed(i) => self.0.get(usize::from(i)).copied(),
-            _ => None,
-        }
-    }
-}
-
 /// The style of `ink`, bold or dim.
 fn styled(theme: Theme, ink: Ink, bold: bool, dim: bool) -> Style {
     let mut style = theme.ink(ink);
@@ -228,7 +202,6 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
         f64::from(plot.width) * f64::from(dx),
         f64::from(plot.height) * f64::from(dy),
     );
-    let mut inks = Inks::default();
     let mut rules = Vec::new();
     for rule in &chart.rules {
         let [a, b] = rule.ends(chart);
@@ -240,7 +213,7 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
                 (a.0 + (b.0 - a.0) * s, a.1 + (b.1 - a.1) * s)
             })
             .collect();
-        rules.push((points, inks.color(rule.ink, false)));
+        rules.push((points, (rule.ink, false)));
     }
     // Each curve's dots in its pattern, painted with each cell shared by curves left to one of
     // them.
@@ -265,17 +238,17 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
                 );
             }
             Stroke {
-                color: inks.color(series.ink, series.focused),
+                ink: (series.ink, series.focused),
                 key: key_of(&series.name),
                 dots: drawn,
             }
         })
         .collect();
     let mut painted = Dots::new((plot.width, plot.height), marker);
-    for (points, color) in &rules {
+    for (points, ink) in &rules {
         for &p in points {
             if let Some((x, y)) = painted.dot_of(chart.x.range, chart.y.range, p) {
-                painted.paint(x, y, *color);
+                painted.paint(x, y, *ink);
             }
         }
     }
@@ -297,9 +270,7 @@ fn plot(buf: &mut Buffer, chart: &Chart, plot: Rect, theme: Theme, marker: Marke
             buf[at]
                 .set_char(*glyph)
                 .set_style(styled(theme, *ink, *bold, false));
-        } else if let Some((symbol, color)) = painted.cell(i)
-            && let Some((ink, bold)) = inks.of(color)
-        {
+        } else if let Some((symbol, (ink, bold))) = painted.cell(i) {
             let style = styled(theme, ink, bold && !dim_dots, dim_dots);
             buf[at].set_char(symbol).set_style(style);
         }

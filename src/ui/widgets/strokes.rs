@@ -1,21 +1,20 @@
-//! Curves as patterned strokes of canvas dots, and which curve a cell shows where several pass
+//! Curves as patterned strokes of the plot's dots, and which curve a cell shows where several pass
 //! through it. A terminal cell has one colour: where two curves lie within a cell of each other
 //! (Hunt–Crossley and Lankarani–Nikravesh, elastic Hertz under dry friction in Fig. 4), the one
 //! painted last took every shared cell and the other vanished. Here each shared cell goes to one of
 //! the curves in it, the same one whatever other curves are drawn, and every curve gets its share
 //! of the cells it shares; a cell shows only its owner's dots, so the owner's pattern reads in it.
 
-use ratatui::style::Color;
-
-use crate::chart::Dash;
+use crate::chart::{Dash, Ink};
 
 use super::dots::Dots;
 
-/// One curve's dots on the canvas grid (x from the left, y from the top, in dots), in its colour.
+/// One curve's dots on the plot's grid (x from the left, y from the top, in dots), in its ink and
+/// boldness.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stroke {
-    pub color: Color,
-    /// Decides the cells this stroke shares (see [`share`]): the same curve keeps the same key
+    pub ink: (Ink, bool),
+    /// Decides the cells this stroke shares (see [`paint`]): the same curve keeps the same key
     /// in every frame, so a shared cell keeps its owner as long as the curves in it do.
     pub key: u64,
     pub dots: Vec<(u16, u16)>,
@@ -156,8 +155,8 @@ const BLOCK: (u16, u16) = (3, 2);
 /// Paints `strokes` on `dots`, each cell where several have dots left to one of them: the one
 /// whose key scores highest in the cell's [`BLOCK`] (rendezvous hashing: each of k strokes owns
 /// about 1/k of the blocks they share, and removing one stroke changes only the cells it owned).
-/// A cell shows only its owner's dots, in its colour.
-pub fn paint(strokes: &[Stroke], dots: &mut Dots) {
+/// A cell shows only its owner's dots, in its ink.
+pub fn paint(strokes: &[Stroke], dots: &mut Dots<(Ink, bool)>) {
     for (s, stroke) in strokes.iter().enumerate() {
         // A stroke's consecutive dots mostly lie in one cell, whose score is the same for each:
         // it is scored once for the run of them.
@@ -171,7 +170,7 @@ pub fn paint(strokes: &[Stroke], dots: &mut Dots) {
                 let block = (u64::from(row / BLOCK.1) << 32) | u64::from(column / BLOCK.0);
                 last = (at.index, mix(block ^ stroke.key.rotate_left(17)));
             }
-            dots.claim(&at, stroke.color, (last.1, s));
+            dots.claim(&at, stroke.ink, (last.1, s));
         }
     }
 }
@@ -186,6 +185,7 @@ fn mix(mut z: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::ForceModel;
     use crate::ui::style::MarkerStyle;
 
     fn line(dash: Dash) -> Vec<(u16, u16)> {
@@ -262,12 +262,12 @@ mod tests {
     #[test]
     fn shared_cells_are_shared_fairly_and_stay_put() {
         let line: Vec<(u16, u16)> = (0..400).map(|x| (x, 1)).collect();
-        let stroke = |name: &str, ink: u8| Stroke {
-            color: Color::Indexed(ink),
+        let stroke = |name: &str, ink: usize| Stroke {
+            ink: (Ink::Model(ForceModel::ALL[ink]), false),
             key: key_of(name),
             dots: line.clone(),
         };
-        let owners = |strokes: &[Stroke]| -> Vec<Option<(char, Color)>> {
+        let owners = |strokes: &[Stroke]| -> Vec<Option<(char, (Ink, bool))>> {
             let mut dots = Dots::new((200, 2), MarkerStyle::Braille);
             paint(strokes, &mut dots);
             (0..400).map(|i| dots.cell(i)).collect()
@@ -276,7 +276,7 @@ mod tests {
         for ink in 1..=3 {
             let cells = three
                 .iter()
-                .filter(|c| c.is_some_and(|(_, color)| color == Color::Indexed(ink)))
+                .filter(|c| c.is_some_and(|(_, look)| look == stroke("", ink).ink))
                 .count();
             assert!((45..=90).contains(&cells), "{cells} of 200");
         }
@@ -292,10 +292,10 @@ mod tests {
         );
         let two = owners(&[stroke("a", 1), stroke("b", 2)]);
         for (before, after) in three.iter().zip(&two) {
-            if let Some((_, color)) = before
-                && *color != Color::Indexed(3)
+            if let Some((_, look)) = before
+                && *look != stroke("", 3).ink
             {
-                assert_eq!(after.map(|(_, c)| c), Some(*color), "a cell kept its owner");
+                assert_eq!(after.map(|(_, l)| l), Some(*look), "a cell kept its owner");
             }
         }
     }
