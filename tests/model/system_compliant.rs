@@ -21,6 +21,8 @@ use hertz_tui::model::system::{
     bifurcation, find_orbit, simulate,
 };
 
+use super::systems_common::bouncing_ball_preset;
+
 const E: f64 = 0.5;
 const G: f64 = 9.81;
 
@@ -396,12 +398,7 @@ fn orbits_and_diagrams_dispatch_on_the_compliant_contact_and_meet_the_rigid_ones
 
 /// The `bouncing-ball` preset (steel sphere R = 10 mm on a steel table, 20 Hz) at amplitude `a`.
 fn preset_ball(amplitude: f64) -> SystemModel {
-    let registry = Registry::builtin().unwrap();
-    let scene = registry.scene("bouncing-ball").unwrap();
-    let mut spec = registry
-        .scene_system("bouncing-ball", &[])
-        .unwrap()
-        .unwrap();
+    let (scene, mut spec) = bouncing_ball_preset();
     if let SystemKind::BouncingBall { amplitude: a, .. } = &mut spec.kind {
         *a = amplitude;
     }

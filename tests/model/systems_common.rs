@@ -2,9 +2,23 @@
 
 use std::f64::consts::TAU;
 
+use hertz_tui::model::Scene;
+use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::{
     Damping, Forcing, GuessStart, OrbitGuess, RunOptions, SystemKind, SystemModel, SystemSpec,
 };
+
+/// The `bouncing-ball` preset's scene and system: a steel sphere R = 10 mm on a steel table
+/// shaken at 20 Hz.
+pub fn bouncing_ball_preset() -> (Scene, SystemSpec) {
+    let registry = Registry::builtin().unwrap();
+    let scene = registry.scene("bouncing-ball").unwrap();
+    let spec = registry
+        .scene_system("bouncing-ball", &[])
+        .unwrap()
+        .unwrap();
+    (scene, spec)
+}
 
 /// A bouncing ball with g = 1 and ω = 1 rad/s, so that Γ = A and speeds are in units of g/ω.
 pub fn ball(gamma: f64, e: f64) -> SystemModel {

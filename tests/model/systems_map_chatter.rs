@@ -4,25 +4,21 @@
 //! maps still differ the cause is named (the law's realised e).
 
 use hertz_tui::model::ForceModel;
-use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::map::{self, Cause, MapOptions, Motion, difference};
 use hertz_tui::model::system::{
     CompliantDamping, Contact, History, ImpactKind, RunOptions, SystemKind, SystemModel, simulate,
 };
+
+use super::systems_common::bouncing_ball_preset;
 
 const G: f64 = 9.80665;
 
 /// The `bouncing-ball` preset (steel sphere R = 10 mm on a steel table at 20 Hz, e = 0.5) at Γ,
 /// both bodies' Young's modulus multiplied by `stiffer`.
 fn preset_ball(gamma: f64, stiffer: f64) -> SystemModel {
-    let registry = Registry::builtin().unwrap();
-    let mut scene = registry.scene("bouncing-ball").unwrap();
+    let (mut scene, mut spec) = bouncing_ball_preset();
     scene.body1.material.youngs_modulus *= stiffer;
     scene.body2.material.youngs_modulus *= stiffer;
-    let mut spec = registry
-        .scene_system("bouncing-ball", &[])
-        .unwrap()
-        .unwrap();
     let omega = spec.omega();
     if let SystemKind::BouncingBall { amplitude, .. } = &mut spec.kind {
         *amplitude = gamma * G / (omega * omega);

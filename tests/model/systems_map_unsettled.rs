@@ -5,7 +5,6 @@
 //! verdict's "the transient never ended" is the same notion.
 
 use hertz_tui::model::ForceModel;
-use hertz_tui::model::presets::Registry;
 use hertz_tui::model::system::compliant::verdict::NothingRecorded;
 use hertz_tui::model::system::map::{self, Agreement, Cause, MapOptions, Motion};
 use hertz_tui::model::system::{
@@ -13,7 +12,7 @@ use hertz_tui::model::system::{
     simulate,
 };
 
-use super::systems_common::{ball, oscillator};
+use super::systems_common::{ball, bouncing_ball_preset, oscillator};
 
 /// A cell's motion and its (first) run, with the map's defaults but `max_periods`.
 fn cell(model: &SystemModel, contact: &Contact, max_periods: f64) -> (Motion, History) {
@@ -77,12 +76,7 @@ fn an_elastic_ball_climbing_ever_higher_is_unsettled() {
 
 /// The `bouncing-ball` preset's system.
 fn preset_ball() -> SystemModel {
-    let registry = Registry::builtin().unwrap();
-    let scene = registry.scene("bouncing-ball").unwrap();
-    let spec = registry
-        .scene_system("bouncing-ball", &[])
-        .unwrap()
-        .unwrap();
+    let (scene, spec) = bouncing_ball_preset();
     SystemModel::from_scene(&scene, &spec).unwrap()
 }
 
