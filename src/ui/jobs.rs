@@ -5,7 +5,10 @@
 //! same slot supersedes a queued one, and the running one may stop early: it polls whether
 //! [`Jobs::submit`] has recorded a newer generation for its slot since. A queue may also say when
 //! it falls idle (nothing queued, nothing running) after its reports, so that a listener can wait
-//! for a whole batch with one wake-up rather than one per report.
+//! for a whole batch with one wake-up rather than one per report. A listener must be ready for
+//! a batch's reports before it queues it: a thread woken by the queuing may take the queuing
+//! thread's core at once (on two cores it usually does), which then runs again only once the
+//! batch is done.
 
 use std::any::Any;
 use std::collections::HashMap;

@@ -9,8 +9,12 @@
 //! has started, which take well under a millisecond for every law of the table, so that the key
 //! and its results are one frame, not a frame of "computing" marks and another soon after; a
 //! slower solve is drawn as computing [`SOLVE_WAIT`] after the key and again when it reports.
-//! While it waits, the solvers' reports collect in an inbox and wake the loop once, when the
-//! last of them is in (not once a report). Each frame is wrapped in synchronized output
+//! The solvers' reports collect in an inbox, held from the moment their batch is queued, and wake
+//! the loop once, when the last of them is in (not once a report). The loop seldom sleeps for
+//! them at all: on two cores a solver woken by the queuing takes the loop's core at once, and
+//! the loop runs again when the batch is done, its reports all in; so neither polling for the
+//! batch nor running its quick solves on this thread made a key sooner (docs/performance.md,
+//! "Fewer wake-ups a key"). Each frame is wrapped in synchronized output
 //! (terminals that support it show it at once; others ignore the sequence) and reaches the
 //! terminal in one write. Bracketed paste is on, so that pasted text arrives as one paste and
 //! never as keys; mouse capture follows the app's `m` toggle.
@@ -220,6 +224,42 @@ fn collect(shared: &SharedInbox, holding: bool) -> Vec<Report<Outcome>> {
     std::mem::take(&mut inbox.reports)
 }
 
+/// `threads` solver threads whose reports go to `inbox`, each waking the loop through `events`
+/// unless the inbox holds them; the queue's falling idle wakes it once for what it held.
+fn spawn_solvers(
+    events: &Sender<Wake>,
+    inbox: &SharedInbox,
+    threads: usize,
+) -> std::io::Result<Jobs<Job>> {
+    let (posted, reports) = (Arc::clone(inbox), events.clone());
+    let (idle, waiting_reports) = (Mutex::new(events.clone()), Arc::clone(inbox));
+    Jobs::spawn_with_idle(
+        "hertz-solver",
+        threads,
+        move |report| !post(&posted, report) || reports.send(Wake::Solver).is_ok(),
+        // The last report of a batch is in: one wake for all of them.
+        move || {
+            if !lock_inbox(&waiting_reports).reports.is_empty() {
+                let _ = idle
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .send(Wake::Solver);
+            }
+        },
+    )
+}
+
+/// Queues `jobs` on the solvers with the inbox already holding their reports: a batch is often
+/// all solved before this thread runs again (a solver woken on its core takes the core at once),
+/// so holding only once the loop came to wait would let every report send a wake of its own.
+/// Whether the solvers still run.
+fn submit_held(solves: &Jobs<Job>, inbox: &SharedInbox, jobs: Vec<Job>) -> bool {
+    if !jobs.is_empty() {
+        lock_inbox(inbox).holding = true;
+    }
+    solves.submit_all(jobs)
+}
+
 /// Threads solving an edit's laws: an edit with every law checked is solved on two cores
 /// (a study's own parallel work has its queue and thread).
 const SOLVER_THREADS: usize = 2;
@@ -244,23 +284,8 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     let (events, wakes) = mpsc::channel();
     spawn_input(events.clone()).wrap_err("cannot start the input thread")?;
     let inbox = SharedInbox::default();
-    let (posted, reports) = (Arc::clone(&inbox), events.clone());
-    let (idle, waiting_reports) = (Mutex::new(events.clone()), Arc::clone(&inbox));
-    let solves: Jobs<Job> = Jobs::spawn_with_idle(
-        "hertz-solver",
-        SOLVER_THREADS,
-        move |report| !post(&posted, report) || reports.send(Wake::Solver).is_ok(),
-        // The last report of a batch is in: one wake for all of them.
-        move || {
-            if !lock_inbox(&waiting_reports).reports.is_empty() {
-                let _ = idle
-                    .lock()
-                    .unwrap_or_else(PoisonError::into_inner)
-                    .send(Wake::Solver);
-            }
-        },
-    )
-    .wrap_err("cannot start the solver thread")?;
+    let solves = spawn_solvers(&events, &inbox, SOLVER_THREADS)
+        .wrap_err("cannot start the solver thread")?;
     let study_reports = events.clone();
     let studies: Jobs<StudyJob> = Jobs::spawn("hertz-studies", 1, move |report| {
         study_reports.send(Wake::Study(report)).is_ok()
@@ -276,7 +301,7 @@ fn run(terminal: &mut DefaultTerminal, mut app: App) -> color_eyre::Result<()> {
     // Whether anything happened since the last frame.
     let mut changed = true;
     loop {
-        if !solves.submit_all(app.take_jobs()) {
+        if !submit_held(&solves, &inbox, app.take_jobs()) {
             return Err(eyre!("the solver thread stopped"));
         }
         for job in app.take_studies() {
@@ -394,6 +419,7 @@ fn handle_reports(app: &mut App, reports: Vec<Report<Outcome>>) -> color_eyre::R
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::ForceModel;
     use crate::model::presets::Registry;
     use crate::ui::style::MarkerStyle;
     use crate::ui::style::Theme;
@@ -514,6 +540,47 @@ mod tests {
             .collect();
         assert_eq!(held, ["report 2", "report 3"], "in order");
         assert!(post(&shared, report(4)), "no longer holding");
+    }
+
+    #[test]
+    fn a_batch_queued_held_wakes_the_loop_once_with_every_report_in() {
+        let (events, wakes) = mpsc::channel();
+        let inbox = SharedInbox::default();
+        let solves = spawn_solvers(&events, &inbox, SOLVER_THREADS).unwrap();
+        drop(events);
+        let job = |generation, model| Job {
+            generation,
+            model,
+            params: crate::ui::testing::fig5_params(0.3),
+            options: crate::model::impact::SolveOptions::default(),
+            calibrate: false,
+            fitted: None,
+            dots: crate::chart::sample::ChartDots::UNKNOWN_SCREEN,
+            previous: None,
+        };
+        let models = [
+            ForceModel::HuntCrossley,
+            ForceModel::Proposed,
+            ForceModel::with_id("hertz-viscous"),
+        ];
+        let batch = (1..).zip(models).map(|(g, m)| job(g, m)).collect();
+        assert!(submit_held(&solves, &inbox, batch));
+        // The one wake comes when the queue falls idle, with the three reports in.
+        assert!(matches!(wakes.recv().unwrap(), Wake::Solver));
+        assert_eq!(collect(&inbox, false).len(), 3);
+        drop(solves);
+        assert_eq!(wakes.iter().count(), 0, "no wake a report");
+        // Nothing queued: nothing held, a later report wakes the loop itself.
+        let solves = {
+            let (events, later) = mpsc::channel();
+            let solves = spawn_solvers(&events, &inbox, 1).unwrap();
+            assert!(submit_held(&solves, &inbox, Vec::new()));
+            assert!(!lock_inbox(&inbox).holding);
+            assert!(solves.submit(job(4, ForceModel::HuntCrossley)));
+            assert!(matches!(later.recv().unwrap(), Wake::Solver));
+            solves
+        };
+        drop(solves);
     }
 
     #[test]
