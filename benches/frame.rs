@@ -5,7 +5,9 @@
 //! checked, solves both of two states a nudge of v₀ apart, and draws them in turn, as a run of
 //! `l` and `h` keys would (each frame differs from the last wherever the numbers and curves do),
 //! as the explorer draws its frames (`hertz_tui::ui::frames`) into a byte buffer. It prints the CPU time a frame and the bytes a
-//! frame writes. `HERTZ_FRAMES` sets the frames (default 2000).
+//! frame writes. `HERTZ_FRAMES` sets the frames (default 2000); `HERTZ_FRAME_PAUSE_MS` pauses
+//! that long before each frame, as between a user's keys, so that the frame finds the caches as a
+//! key does (cold: the CPU a frame is then half as much again).
 //!
 //! Times follow the machine; the instructions a frame do not. `bash benches/frame_instructions.sh`
 //! counts them under callgrind: the run with `HERTZ_FRAMES=100` less the run with none, over 100.
@@ -70,13 +72,22 @@ fn run(frames: usize) -> Result<(), String> {
     let mut terminal = Frames::new(SIZE.0, SIZE.1).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     draw_synchronized(&mut terminal, &mut out, &states[1]).map_err(|e| e.to_string())?;
+    let pause = std::env::var("HERTZ_FRAME_PAUSE_MS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .map(std::time::Duration::from_millis);
     let (start, wall) = (cpu(), Instant::now());
     let mut bytes = 0;
     for i in 0..frames {
+        if let Some(pause) = pause {
+            std::thread::sleep(pause);
+        }
         out.clear();
         draw_synchronized(&mut terminal, &mut out, &states[i % 2]).map_err(|e| e.to_string())?;
         bytes += out.len();
     }
+    // The wall time less the pauses.
+    let paused = pause.unwrap_or_default() * u32::try_from(frames).unwrap_or(u32::MAX);
     if frames > 0 {
         let n = frames as f64;
         println!(
@@ -84,7 +95,7 @@ fn run(frames: usize) -> Result<(), String> {
             SIZE.0,
             SIZE.1,
             (cpu() - start) / n * 1e6,
-            wall.elapsed().as_secs_f64() / n * 1e6,
+            wall.elapsed().saturating_sub(paused).as_secs_f64() / n * 1e6,
             bytes / frames
         );
     }
