@@ -4,49 +4,31 @@
 //! `cargo bench --bench frame` opens the explorer at 160×48 on the default scene with every law
 //! checked, solves both of two states a nudge of v₀ apart, and draws them in turn, as a run of
 //! `l` and `h` keys would (each frame differs from the last wherever the numbers and curves do),
-//! through ratatui's terminal into a byte buffer. It prints the CPU time a frame and the bytes a
-//! frame writes. `HERTZ_FRAMES` sets the frames (default 2000).
+//! as the explorer draws its frames (`hertz_tui::ui::frames`) into a byte buffer. It prints the CPU time a frame and the bytes a
+//! frame writes. `HERTZ_FRAMES` sets the frames (default 2000); `HERTZ_FRAME_PAUSE_MS` pauses
+//! that long before each frame, as between a user's keys, so that the frame finds the caches as a
+//! key does (cold: the CPU a frame is then half as much again).
 //!
 //! Times follow the machine; the instructions a frame do not. `bash benches/frame_instructions.sh`
 //! counts them under callgrind: the run with `HERTZ_FRAMES=100` less the run with none, over 100.
 
-use std::cell::RefCell;
-use std::io::Write;
-use std::rc::Rc;
 use std::time::Instant;
 
 use hertz_tui::model::ForceModel;
 use hertz_tui::model::impact::SolveOptions;
 use hertz_tui::model::presets::{DEFAULT_SCENE, Registry};
 use hertz_tui::model::scene_file::SceneView;
+use hertz_tui::ui::MarkerStyle;
 use hertz_tui::ui::action::Action;
 use hertz_tui::ui::app::App;
+use hertz_tui::ui::frames::{Frames, draw_synchronized};
 use hertz_tui::ui::keymap::action_for_event;
 use hertz_tui::ui::style::Theme;
 use hertz_tui::ui::update::update;
 use hertz_tui::ui::worker::settle;
-use hertz_tui::ui::{MarkerStyle, render};
-use ratatui::backend::CrosstermBackend;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
-use ratatui::layout::Rect;
-use ratatui::{Terminal, TerminalOptions, Viewport};
 
 const SIZE: (u16, u16) = (160, 48);
-
-/// The bytes a frame writes, kept.
-#[derive(Clone, Default)]
-struct Held(Rc<RefCell<Vec<u8>>>);
-
-impl Write for Held {
-    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
-        self.0.borrow_mut().extend_from_slice(bytes);
-        Ok(bytes.len())
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        Ok(())
-    }
-}
 
 fn key(app: &mut App, code: KeyCode) {
     let event = Event::Key(KeyEvent::new(code, KeyModifiers::NONE));
@@ -87,26 +69,25 @@ fn cpu() -> f64 {
 
 fn run(frames: usize) -> Result<(), String> {
     let states = [explorer(0)?, explorer(1)?];
-    let held = Held::default();
-    let mut terminal = Terminal::with_options(
-        CrosstermBackend::new(held.clone()),
-        TerminalOptions {
-            viewport: Viewport::Fixed(Rect::new(0, 0, SIZE.0, SIZE.1)),
-        },
-    )
-    .map_err(|e| e.to_string())?;
-    terminal
-        .draw(|frame| render::draw(frame, &states[1]))
-        .map_err(|e| e.to_string())?;
+    let mut terminal = Frames::new(SIZE.0, SIZE.1).map_err(|e| e.to_string())?;
+    let mut out = Vec::new();
+    draw_synchronized(&mut terminal, &mut out, &states[1]).map_err(|e| e.to_string())?;
+    let pause = std::env::var("HERTZ_FRAME_PAUSE_MS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .map(std::time::Duration::from_millis);
     let (start, wall) = (cpu(), Instant::now());
     let mut bytes = 0;
     for i in 0..frames {
-        held.0.borrow_mut().clear();
-        terminal
-            .draw(|frame| render::draw(frame, &states[i % 2]))
-            .map_err(|e| e.to_string())?;
-        bytes += held.0.borrow().len();
+        if let Some(pause) = pause {
+            std::thread::sleep(pause);
+        }
+        out.clear();
+        draw_synchronized(&mut terminal, &mut out, &states[i % 2]).map_err(|e| e.to_string())?;
+        bytes += out.len();
     }
+    // The wall time less the pauses.
+    let paused = pause.unwrap_or_default() * u32::try_from(frames).unwrap_or(u32::MAX);
     if frames > 0 {
         let n = frames as f64;
         println!(
@@ -114,7 +95,7 @@ fn run(frames: usize) -> Result<(), String> {
             SIZE.0,
             SIZE.1,
             (cpu() - start) / n * 1e6,
-            wall.elapsed().as_secs_f64() / n * 1e6,
+            wall.elapsed().saturating_sub(paused).as_secs_f64() / n * 1e6,
             bytes / frames
         );
     }

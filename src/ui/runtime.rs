@@ -19,32 +19,27 @@
 //! terminal in one write. Bracketed paste is on, so that pasted text arrives as one paste and
 //! never as keys; mouse capture follows the app's `m` toggle.
 
-use std::cell::RefCell;
 use std::io::Write;
-use std::rc::Rc;
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex, PoisonError};
 use std::thread;
 use std::time::{Duration, Instant};
 
 use color_eyre::eyre::{WrapErr, eyre};
-use ratatui::backend::CrosstermBackend;
+use ratatui::DefaultTerminal;
 use ratatui::crossterm::cursor::Show;
 use ratatui::crossterm::event::{
     self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
 };
-use ratatui::crossterm::terminal::{BeginSynchronizedUpdate, EndSynchronizedUpdate};
-use ratatui::crossterm::{execute, queue};
-use ratatui::layout::Rect;
-use ratatui::{DefaultTerminal, Terminal, TerminalOptions, Viewport};
+use ratatui::crossterm::execute;
 
 use crate::model::study::runner::{StudyJob, StudyOutcome};
 
 use super::action::Action;
 use super::app::App;
+use super::frames::{Frames, draw_synchronized};
 use super::jobs::{Jobs, Report};
 use super::keymap::action_for_event;
-use super::render;
 use super::solutions::{Job, Outcome};
 use super::update::update;
 
@@ -108,89 +103,6 @@ pub fn release_terminal_modes() {
         DisableBracketedPaste,
         Show
     );
-}
-
-/// A frame's bytes, held until the frame is whole. ratatui writes a frame's cells as many small
-/// commands and flushes its backend after them; through the standard output (a line writer of
-/// 1 KiB) that was a write a kilobyte, and the synchronized update's begin, the cursor's hiding
-/// and the update's end a write each: about ten writes a frame at 160×48. Here flushing keeps
-/// the bytes, and [`FrameWriter::send`] writes them at once. Clones share the bytes: the
-/// terminal's backend writes through one, the loop sends through another.
-#[derive(Debug, Default, Clone)]
-pub struct FrameWriter {
-    bytes: Rc<RefCell<Vec<u8>>>,
-}
-
-impl Write for FrameWriter {
-    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        self.bytes.borrow_mut().extend_from_slice(buf);
-        Ok(buf.len())
-    }
-
-    /// Keeps the bytes: the frame is not whole yet.
-    fn flush(&mut self) -> std::io::Result<()> {
-        Ok(())
-    }
-}
-
-impl FrameWriter {
-    /// Writes the held bytes to `out` in one write and flushes it; holds nothing after.
-    pub fn send(&self, out: &mut impl Write) -> std::io::Result<()> {
-        let mut bytes = self.bytes.borrow_mut();
-        out.write_all(&bytes)?;
-        bytes.clear();
-        out.flush()
-    }
-}
-
-/// The terminal frames are drawn through: its writes held by a [`FrameWriter`], its size the
-/// app's screen (set from the terminal's resize events), so a frame neither asks the terminal
-/// for its size (crossterm opens `/dev/tty` and closes it again for that) nor writes in pieces.
-pub struct Frames {
-    terminal: Terminal<CrosstermBackend<FrameWriter>>,
-    held: FrameWriter,
-}
-
-impl Frames {
-    /// Frames of `width` × `height` cells until the app's screen says otherwise.
-    pub fn new(width: u16, height: u16) -> std::io::Result<Frames> {
-        let held = FrameWriter::default();
-        let terminal = Terminal::with_options(
-            CrosstermBackend::new(held.clone()),
-            TerminalOptions {
-                viewport: Viewport::Fixed(Rect::new(0, 0, width, height)),
-            },
-        )?;
-        Ok(Frames { terminal, held })
-    }
-
-    /// The area frames are drawn in.
-    pub fn area(&mut self) -> Rect {
-        self.terminal.get_frame().area()
-    }
-}
-
-/// Draws one frame inside a synchronized update, so the terminal shows it whole, at the app's
-/// screen size (resized first, and so cleared, where that changed), and writes it to `out` at
-/// once.
-pub fn draw_synchronized(
-    frames: &mut Frames,
-    out: &mut impl Write,
-    app: &App,
-) -> color_eyre::Result<()> {
-    queue!(frames.held, BeginSynchronizedUpdate)?;
-    let screen = Rect::new(0, 0, app.screen.0, app.screen.1);
-    if frames.area() != screen {
-        frames.terminal.resize(screen)?;
-    }
-    let drawn = frames
-        .terminal
-        .draw(|frame| render::draw(frame, app))
-        .map(|_| ());
-    queue!(frames.held, EndSynchronizedUpdate)?;
-    frames.held.send(out)?;
-    drawn?;
-    Ok(())
 }
 
 /// The solvers' reports not yet handled. While the loop waits for the solves of its keys
@@ -420,10 +332,6 @@ fn handle_reports(app: &mut App, reports: Vec<Report<Outcome>>) -> color_eyre::R
 mod tests {
     use super::*;
     use crate::model::ForceModel;
-    use crate::model::presets::Registry;
-    use crate::ui::style::MarkerStyle;
-    use crate::ui::style::Theme;
-    use crate::ui::testing::fig5_scene;
     use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
     fn key(c: char) -> Event {
@@ -451,77 +359,6 @@ mod tests {
             None,
             "overdue"
         );
-    }
-
-    /// Counts the writes it is given.
-    #[derive(Default)]
-    struct Writes {
-        count: usize,
-        bytes: Vec<u8>,
-    }
-
-    impl Write for Writes {
-        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-            self.count += 1;
-            self.bytes.extend_from_slice(buf);
-            Ok(buf.len())
-        }
-
-        fn flush(&mut self) -> std::io::Result<()> {
-            Ok(())
-        }
-    }
-
-    fn app_of(width: u16, height: u16) -> App {
-        let mut app = App::new(
-            fig5_scene(),
-            Registry::builtin().unwrap(),
-            MarkerStyle::Braille,
-            Theme::Plain,
-        );
-        update(&mut app, Action::Resize(width, height));
-        app
-    }
-
-    #[test]
-    fn a_frame_is_one_synchronized_update_in_one_write() {
-        let mut app = app_of(100, 30);
-        let mut terminal = Frames::new(100, 30).unwrap();
-        let mut out = Writes::default();
-        draw_synchronized(&mut terminal, &mut out, &app).unwrap();
-        assert_eq!(out.count, 1, "the whole frame in one write");
-        let text = String::from_utf8_lossy(&out.bytes).into_owned();
-        assert!(
-            text.starts_with("\x1b[?2026h"),
-            "begins the update (mode 2026)"
-        );
-        assert!(text.ends_with("\x1b[?2026l"), "ends it");
-        assert!(
-            text.contains("explorer"),
-            "the frame was drawn between them"
-        );
-
-        // Nothing changed: the next frame writes nothing but the update's marks and the cursor's
-        // hiding, still at once.
-        let mut again = Writes::default();
-        draw_synchronized(&mut terminal, &mut again, &app).unwrap();
-        assert_eq!(again.count, 1);
-        assert!(
-            again.bytes.len() < 64,
-            "{:?}",
-            String::from_utf8_lossy(&again.bytes)
-        );
-
-        // A resize (the app's screen, from the terminal's resize event) redraws the whole screen
-        // at the new size inside the update.
-        update(&mut app, Action::Resize(120, 40));
-        let mut resized = Writes::default();
-        draw_synchronized(&mut terminal, &mut resized, &app).unwrap();
-        assert_eq!(resized.count, 1);
-        assert_eq!(terminal.area(), Rect::new(0, 0, 120, 40));
-        let text = String::from_utf8_lossy(&resized.bytes).into_owned();
-        assert!(text.starts_with("\x1b[?2026h"));
-        assert!(text.contains("explorer"), "redrawn");
     }
 
     /// Reports wake the loop one by one unless it holds them for a batch; a collection takes
