@@ -2,7 +2,7 @@
 //! and one write, with the bytes stock ratatui and crossterm would write (tested).
 //!
 //! The changed cells are found by [`OnScreen`] rather than by ratatui's own diff, and written by
-//! [`escapes`] rather than by crossterm's backend (see each for why: together they were a quarter
+//! `escapes` rather than by crossterm's backend (see each for why: together they were a quarter
 //! of a frame). The terminal's backend therefore writes everything ratatui asks of it (the
 //! cursor, a clear on a resize) except the cells it would diff, which are written from inside the
 //! frame, where the rendered buffer is at hand, before the cursor is placed, as ratatui would.
