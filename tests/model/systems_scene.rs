@@ -8,6 +8,7 @@ use hertz_tui::model::system::{
 };
 
 use crate::scratch;
+use crate::systems_common::bouncing_ball_preset;
 
 const PRESETS: [&str; 3] = [
     "bouncing-ball",
@@ -74,15 +75,11 @@ fn presets_load_simulate_and_round_trip() {
 
 #[test]
 fn groups_are_the_dimensionless_numbers() {
-    let registry = Registry::builtin().unwrap();
-    let scene = registry.scene("bouncing-ball").unwrap();
-    let spec = registry
-        .scene_system("bouncing-ball", &[])
-        .unwrap()
-        .unwrap();
+    let (scene, spec) = bouncing_ball_preset();
     let g = spec.groups(scene.body1.mass());
     let omega = 2.0 * std::f64::consts::PI * 20.0;
     assert!((g.gamma.unwrap() - 0.001 * omega * omega / 9.80665).abs() < 1e-12);
+    let registry = Registry::builtin().unwrap();
     let spec = registry
         .scene_system("impact-oscillator", &[])
         .unwrap()
