@@ -120,9 +120,6 @@ impl Backend for AllButCells {
 /// for its size (crossterm opens `/dev/tty` and closes it again for that) nor writes in pieces.
 pub struct Frames {
     terminal: Terminal<AllButCells>,
-    /// Where the frame's changed cells are written: the same held bytes as the terminal's
-    /// backend's.
-    cells: FrameWriter,
     onscreen: OnScreen,
     held: FrameWriter,
 }
@@ -143,7 +140,6 @@ impl Frames {
         )?;
         Ok(Frames {
             terminal,
-            cells: held.clone(),
             onscreen: OnScreen::blank(area),
             held,
         })
@@ -167,16 +163,15 @@ pub fn draw_synchronized(
     let screen = Rect::new(0, 0, app.screen.0, app.screen.1);
     if frames.area() != screen {
         frames.terminal.resize(screen)?;
-        frames.onscreen = OnScreen::blank(screen);
     }
-    let (cells, onscreen) = (&mut frames.cells, &mut frames.onscreen);
+    let (held, onscreen) = (&mut frames.held, &mut frames.onscreen);
     frames.terminal.backend_mut().drawing = true;
     let drawn = frames
         .terminal
         .try_draw(|frame| {
             render::draw(frame, app);
             let changes = onscreen.changes(frame.buffer_mut());
-            escapes::write_changes(cells, changes)
+            escapes::write_changes(held, changes)
         })
         .map(|_| ());
     frames.terminal.backend_mut().drawing = false;

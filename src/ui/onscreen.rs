@@ -5,8 +5,8 @@
 //! of the explorer's frame (docs/performance.md, § Fewer instructions a frame). Most frames have
 //! no wide character at all: every cell is one column, drawn only where it differs from the
 //! last. For those, [`OnScreen::changes`] compares the cells and nothing else, measuring only
-//! the cells that changed; a frame that changes or had a cell of another width (a wide or a
-//! zero-width symbol, a skipped or always-updated cell) is diffed by ratatui itself. Either way
+//! the cells that changed; a frame with a cell of another kind, or the frame after it (a wide or
+//! a zero-width symbol, a skipped or always-updated cell), is diffed by ratatui itself. Either way
 //! the changes are ratatui's, cell for cell and in the same order (tested).
 
 use ratatui::buffer::{Buffer, Cell, CellDiffOption, CellWidth};
@@ -30,11 +30,6 @@ impl OnScreen {
             shown: Buffer::empty(area),
             single_columns: true,
         }
-    }
-
-    /// The area shown.
-    pub fn area(&self) -> Rect {
-        self.shown.area
     }
 
     /// The cells of `next` to write so that the terminal shows it, in ratatui's order; from then
@@ -84,7 +79,7 @@ impl OnScreen {
 fn changed_single_columns(shown: &Buffer, next: &Buffer) -> Option<Vec<usize>> {
     let mut changed = Vec::new();
     for (i, (old, new)) in shown.content.iter().zip(&next.content).enumerate() {
-        if !same_cell(old, new) {
+        if old != new {
             if !single_column(new) {
                 return None;
             }
@@ -100,23 +95,6 @@ fn single_column(cell: &Cell) -> bool {
     #[allow(deprecated)] // ratatui's diff still honours the old flag.
     let skipped = cell.skip;
     cell.diff_option == CellDiffOption::None && !skipped && cell.symbol().cell_width() == 1
-}
-
-/// Whether `a` and `b` are equal as ratatui compares cells (`Cell::eq`, where no symbol and a
-/// space are the same), with the symbols compared inline: most cells of a frame are compared and
-/// found equal, and a call to `memcmp` for one or three bytes was most of `Cell::eq`.
-pub fn same_cell(a: &Cell, b: &Cell) -> bool {
-    #[allow(deprecated)] // ratatui still compares the old flag.
-    let same_skip = a.skip == b.skip;
-    let (s, t) = (a.symbol().as_bytes(), b.symbol().as_bytes());
-    a.fg == b.fg
-        && a.bg == b.bg
-        && a.modifier == b.modifier
-        && a.underline_color == b.underline_color
-        && a.diff_option == b.diff_option
-        && same_skip
-        && s.len() == t.len()
-        && s.iter().zip(t).all(|(p, q)| p == q)
 }
 
 #[cfg(test)]
@@ -223,43 +201,6 @@ mod tests {
         assert_eq!(first.len(), 1);
         assert_eq!((first[0].0, first[0].1, first[0].2.symbol()), (3, 1, "x"));
         assert!(onscreen.changes(&next).is_empty());
-    }
-
-    /// `same_cell` is `Cell::eq` over cells that differ in each field alone and in several.
-    #[test]
-    fn cells_are_the_same_exactly_when_ratatui_says_so() {
-        let mut variants = vec![Cell::EMPTY, Cell::new(" "), Cell::new("a"), Cell::new("⣿")];
-        let mut wide = Cell::new("界");
-        wide.set_symbol("界");
-        variants.push(wide);
-        for base in variants.clone() {
-            let mut c = base.clone();
-            c.fg = Color::Red;
-            variants.push(c.clone());
-            c.bg = Color::Indexed(3);
-            variants.push(c.clone());
-            c.modifier = Modifier::DIM;
-            variants.push(c.clone());
-            let mut u = base.clone();
-            u.underline_color = Color::Rgb(1, 2, 3);
-            variants.push(u);
-            let mut d = base.clone();
-            d.set_diff_option(CellDiffOption::AlwaysUpdate);
-            variants.push(d);
-            let mut s = base.clone();
-            #[allow(deprecated)]
-            s.set_skip(true);
-            variants.push(s);
-        }
-        let mut equal = 0;
-        for a in &variants {
-            for b in &variants {
-                assert_eq!(same_cell(a, b), a == b, "{a:?} against {b:?}");
-                equal += usize::from(a == b);
-            }
-        }
-        // No symbol and a space are one: those pairs are equal beside each cell with itself.
-        assert!(equal > variants.len(), "{equal} equal pairs");
     }
 
     #[test]
